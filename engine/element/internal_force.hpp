@@ -1,0 +1,51 @@
+// Internal nodal forces of all tets, with the per-element stable time step of the current
+// configuration and, on request, the stored strain energy.
+#pragma once
+
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "engine/element/tet4.hpp"
+#include "engine/material/material.hpp"
+#include "engine/mesh/model_mesh.hpp"
+
+namespace ccm {
+
+// A contiguous range of elements with one material (one body).
+struct ElementBlock {
+  int first = 0;
+  int count = 0;
+  MaterialModel model = MaterialModel::neo_hookean;
+  Lame lame{};
+  double wave_speed = 0.0;  // dilatational c_d of the material
+};
+
+struct ElementSet {
+  std::vector<Tet> tets;
+  std::vector<TetReference> reference;
+  std::vector<ElementBlock> blocks;
+  int n_elements() const { return static_cast<int>(tets.size()); }
+};
+
+// Throws std::runtime_error naming the element when a reference tet has no positive volume.
+ElementSet make_element_set(const ModelMesh& mesh);
+
+struct InternalForceResult {
+  double stable_dt = std::numeric_limits<double>::infinity();  // min_e h_e / c_d,e (no safety)
+  double min_J = std::numeric_limits<double>::infinity();
+  int first_bad_element = -1;  // first element with J <= 0 or non-finite J, else -1
+  double bad_J = 0.0;          // its J
+};
+
+// f_int is ADDED into f as the force ON the nodes (f_a = -V0 P grad N_a); x is the current
+// configuration. Reads each tet once: F, P, forces and stable step. When block_energy is not
+// empty (one entry per block) the stored energy sum_e V0 W(F_e) of each block is written there;
+// otherwise it is not computed.
+InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const Vec3> x,
+                                        std::span<Vec3> f, std::span<double> block_energy = {});
+
+// Reference-configuration stable step min_e h_e / c_d,e, used before the first evaluation.
+double reference_stable_dt(const ElementSet& elements, std::span<const Vec3> X);
+
+}  // namespace ccm

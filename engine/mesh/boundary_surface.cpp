@@ -1,0 +1,59 @@
+#include "engine/mesh/boundary_surface.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace ccm {
+namespace {
+
+// Local faces of a positively oriented tet (0,1,2,3), each ordered so its normal points
+// away from the opposite vertex.
+constexpr int kFaces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+struct FaceKey {
+  std::array<int, 3> sorted;
+  bool operator==(const FaceKey&) const = default;
+};
+
+struct FaceKeyHash {
+  size_t operator()(const FaceKey& k) const {
+    size_t h = static_cast<size_t>(k.sorted[0]);
+    h = h * 1000003u ^ static_cast<size_t>(k.sorted[1]);
+    h = h * 1000003u ^ static_cast<size_t>(k.sorted[2]);
+    return h;
+  }
+};
+
+FaceKey key_of(const Triangle& t) {
+  FaceKey k{t};
+  std::sort(k.sorted.begin(), k.sorted.end());
+  return k;
+}
+
+}  // namespace
+
+std::vector<Triangle> extract_boundary(std::span<const Tet> tets) {
+  std::unordered_map<FaceKey, int, FaceKeyHash> count;
+  count.reserve(tets.size() * 4);
+  for (const Tet& tet : tets)
+    for (const auto& f : kFaces) ++count[key_of({tet[f[0]], tet[f[1]], tet[f[2]]})];
+
+  std::vector<Triangle> boundary;
+  for (const Tet& tet : tets) {
+    for (const auto& f : kFaces) {
+      const Triangle t{tet[f[0]], tet[f[1]], tet[f[2]]};
+      if (count[key_of(t)] == 1) boundary.push_back(t);
+    }
+  }
+  return boundary;
+}
+
+Vec3 triangle_normal(const Triangle& t, std::span<const Vec3> x) {
+  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).normalized();
+}
+
+double triangle_area(const Triangle& t, std::span<const Vec3> x) {
+  return 0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
+}
+
+}  // namespace ccm

@@ -1,0 +1,20 @@
+// Boundary surface of a tetrahedral element set: the faces that belong to exactly one tet,
+// oriented so that their normal points out of the body.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "engine/mesh/tet_mesh.hpp"
+
+namespace ccm {
+
+// Each returned triangle (a, b, c) has (x_b - x_a) x (x_c - x_a) pointing outward, given that
+// every tet has positive signed volume. Deterministic order: by the owning tet, then local face.
+std::vector<Triangle> extract_boundary(std::span<const Tet> tets);
+
+// Outward unit normal and area of a triangle at positions x.
+Vec3 triangle_normal(const Triangle& t, std::span<const Vec3> x);
+double triangle_area(const Triangle& t, std::span<const Vec3> x);
+
+}  // namespace ccm

@@ -1,0 +1,485 @@
+#include "engine/mesh/gmsh_mesher.hpp"
+
+#include <fmt/format.h>
+#include <gmsh.h>
+#include <stdlib.h>  // mkdtemp
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <clocale>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+#include <numbers>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kGmshTet4 = 4;       // Gmsh element type: 4-node tetrahedron
+constexpr int kGmshTriangle3 = 2;  // Gmsh element type: 3-node triangle
+constexpr double kMaxEstimatedTets = 5e6;
+// Delaunay with a uniform size h fills a volume V with about 4.6 V/h^3 tets (measured on boxes,
+// cylinders and spheres); 6 leaves some margin.
+constexpr double kTetsPerCubedSize = 6.0;
+
+// ---------------------------------------------------------------------------------------------
+// Gmsh session and error translation
+
+std::mutex gmsh_mutex;  // Gmsh is one global state per process and not thread-safe
+
+// One Gmsh session: takes the lock, initializes Gmsh without argv or configuration files, and
+// finalizes it again. gmsh::initialize sets LC_NUMERIC to "C" for good; the caller's is restored.
+class GmshSession {
+ public:
+  GmshSession() : lock_(gmsh_mutex), numeric_locale_(current_numeric_locale()) {
+    gmsh::initialize(0, nullptr, false);
+    try {
+      gmsh::option::setNumber("General.Terminal", 0);  // errors still arrive as exceptions
+      gmsh::option::setNumber("General.Verbosity", 1);
+      gmsh::option::setNumber("General.NumThreads", 1);
+    } catch (...) {
+      finalize();
+      throw;
+    }
+  }
+  ~GmshSession() { finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+ private:
+  static std::string current_numeric_locale() {
+    const char* name = std::setlocale(LC_NUMERIC, nullptr);
+    return name ? name : "C";
+  }
+  void finalize() noexcept {
+    try {
+      gmsh::finalize();
+    } catch (...) {  // nothing useful to do: the next initialize starts afresh
+    }
+    std::setlocale(LC_NUMERIC, numeric_locale_.c_str());
+  }
+
+  std::lock_guard<std::mutex> lock_;
+  std::string numeric_locale_;
+};
+
+void replace_all(std::string& s, const std::string& from, const std::string& to) {
+  if (from.empty()) return;
+  for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+    s.replace(at, from.size(), to);
+}
+
+// Runs body() in a Gmsh session. Gmsh 4.8 throws its errors as std::string; they, and any other
+// exception, become a MeshError prefixed with `context`. Occurrences of `alias` in Gmsh's messages
+// are replaced by `context` (read_msh_file hands Gmsh a link to the file, not its real path).
+template <class Body>
+auto with_gmsh(const std::string& context, Body&& body, const std::string& alias = {}) {
+  try {
+    GmshSession session;
+    return body();
+  } catch (const MeshError&) {
+    throw;
+  } catch (std::string& e) {
+    replace_all(e, alias, context);
+    throw MeshError(fmt::format("{}: Gmsh: {}", context, e));
+  } catch (const std::exception& e) {
+    throw MeshError(fmt::format("{}: {}", context, e.what()));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Conversion of Gmsh's mesh into a compact TetMesh
+
+// Sorted, unique Gmsh tags; a tag's compact index is its position.
+class TagIndex {
+ public:
+  explicit TagIndex(std::vector<size_t> tags) : tags_(std::move(tags)) {
+    std::sort(tags_.begin(), tags_.end());
+    tags_.erase(std::unique(tags_.begin(), tags_.end()), tags_.end());
+  }
+  int find(size_t tag) const {  // -1 if absent
+    const auto it = std::lower_bound(tags_.begin(), tags_.end(), tag);
+    return it != tags_.end() && *it == tag ? static_cast<int>(it - tags_.begin()) : -1;
+  }
+  const std::vector<size_t>& tags() const { return tags_; }
+
+ private:
+  std::vector<size_t> tags_;
+};
+
+std::vector<size_t> sorted_order(const std::vector<size_t>& keys) {
+  std::vector<size_t> order(keys.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return keys[a] < keys[b]; });
+  return order;
+}
+
+// Coordinates of the given node tags, in that order.
+std::vector<Vec3> node_coordinates(const std::vector<size_t>& wanted, const std::string& context) {
+  std::vector<size_t> tags;
+  std::vector<double> xyz, unused_param;
+  gmsh::model::mesh::getNodes(tags, xyz, unused_param, -1, -1, false, false);
+  const std::vector<size_t> order = sorted_order(tags);
+  std::vector<Vec3> nodes;
+  nodes.reserve(wanted.size());
+  auto it = order.begin();
+  for (size_t tag : wanted) {  // both ascending: one merge pass
+    it = std::lower_bound(it, order.end(), tag, [&](size_t i, size_t t) { return tags[i] < t; });
+    if (it == order.end() || tags[*it] != tag)
+      throw MeshError(
+          fmt::format("{}: a tet uses node {}, which has no coordinates", context, tag));
+    nodes.emplace_back(xyz[3 * *it], xyz[3 * *it + 1], xyz[3 * *it + 2]);
+  }
+  return nodes;
+}
+
+double six_volume(const Tet& t, const std::vector<Vec3>& x) {
+  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).dot(x[t[3]] - x[t[0]]);
+}
+
+// Swaps two nodes of a negative tet; refuses a flat one (relative to its longest edge from t[0]).
+void orient_tet(Tet& t, const std::vector<Vec3>& x, size_t gmsh_tag, const std::string& context) {
+  const double v6 = six_volume(t, x);
+  const double edge = std::max(
+      {(x[t[1]] - x[t[0]]).norm(), (x[t[2]] - x[t[0]]).norm(), (x[t[3]] - x[t[0]]).norm()});
+  if (!(std::abs(v6) > 1e-12 * edge * edge * edge))
+    throw MeshError(fmt::format("{}: tetrahedron {} has zero volume", context, gmsh_tag));
+  if (v6 < 0) std::swap(t[2], t[3]);
+}
+
+struct Extracted {
+  TetMesh mesh;
+  TagIndex node_tags;  // compact node i has Gmsh tag node_tags.tags()[i]
+};
+
+// All linear tets of the current model, ordered by Gmsh element tag, on a compact node numbering
+// (ascending Gmsh node tag) that holds only the nodes tets use.
+Extracted extract_tets(const std::string& context) {
+  std::vector<size_t> elem_tags, elem_nodes;
+  gmsh::model::mesh::getElementsByType(kGmshTet4, elem_tags, elem_nodes);
+  if (elem_tags.empty())
+    throw MeshError(fmt::format("{}: no linear tetrahedra (element type 4) found", context));
+
+  Extracted out{{}, TagIndex(elem_nodes)};
+  out.mesh.nodes = node_coordinates(out.node_tags.tags(), context);
+  out.mesh.tets.reserve(elem_tags.size());
+  for (size_t e : sorted_order(elem_tags)) {
+    Tet t;
+    for (size_t k = 0; k < 4; ++k) t[k] = out.node_tags.find(elem_nodes[4 * e + k]);
+    orient_tet(t, out.mesh.nodes, elem_tags[e], context);
+    out.mesh.tets.push_back(t);
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Named surfaces (physical groups of dimension 2) of a mesh file
+
+struct GmshTriangle {
+  size_t tag;
+  std::array<size_t, 3> nodes;
+};
+
+// The triangles of every named 2D physical group, by name (groups sharing a name are merged),
+// each list ordered by element tag and free of duplicates.
+std::map<std::string, std::vector<GmshTriangle>> named_gmsh_triangles() {
+  std::map<std::string, std::vector<GmshTriangle>> by_name;
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 2);
+  for (const auto& [dim, group] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, group, name);
+    if (name.empty()) continue;
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, group, entities);
+    auto& list = by_name[name];
+    for (int entity : entities) {
+      std::vector<size_t> tags, nodes;
+      gmsh::model::mesh::getElementsByType(kGmshTriangle3, tags, nodes, entity);
+      for (size_t i = 0; i < tags.size(); ++i)
+        list.push_back({tags[i], {nodes[3 * i], nodes[3 * i + 1], nodes[3 * i + 2]}});
+    }
+  }
+  for (auto& [name, list] : by_name) {
+    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.tag < b.tag; });
+    list.erase(std::unique(list.begin(), list.end(),
+                           [](const auto& a, const auto& b) { return a.tag == b.tag; }),
+               list.end());
+  }
+  return by_name;
+}
+
+// Tet faces (sorted node triple) with the node opposite, sorted for binary search. Only faces
+// whose nodes all satisfy `keep` are listed, which keeps the table small.
+struct FaceTable {
+  std::vector<std::pair<std::array<int, 3>, int>> faces;
+
+  FaceTable(const std::vector<Tet>& tets, const std::vector<char>& keep) {
+    for (const Tet& t : tets) {
+      for (int opposite = 0; opposite < 4; ++opposite) {
+        std::array<int, 3> f;
+        for (int k = 0, j = 0; k < 4; ++k)
+          if (k != opposite) f[j++] = t[k];
+        if (!keep[f[0]] || !keep[f[1]] || !keep[f[2]]) continue;
+        std::sort(f.begin(), f.end());
+        faces.push_back({f, t[opposite]});
+      }
+    }
+    std::stable_sort(faces.begin(), faces.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+  // The opposite node of the first tet (lowest index) with this face, or -1.
+  int opposite_node(std::array<int, 3> f) const {
+    std::sort(f.begin(), f.end());
+    const auto it =
+        std::lower_bound(faces.begin(), faces.end(), f,
+                         [](const auto& entry, const auto& key) { return entry.first < key; });
+    return it != faces.end() && it->first == f ? it->second : -1;
+  }
+};
+
+// The triangle on the compact numbering, oriented with its normal away from the tet it bounds.
+Triangle outward_triangle(const GmshTriangle& g, const Extracted& ex, const FaceTable& table,
+                          const std::string& where) {
+  Triangle t;
+  for (size_t k = 0; k < 3; ++k) t[k] = ex.node_tags.find(g.nodes[k]);
+  const int opposite = t[0] < 0 || t[1] < 0 || t[2] < 0 ? -1 : table.opposite_node(t);
+  if (opposite < 0)
+    throw MeshError(fmt::format("{}: triangle {} is not a face of any tetrahedron", where, g.tag));
+  const auto& x = ex.mesh.nodes;
+  const Vec3 normal = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
+  if (normal.dot(x[opposite] - x[t[0]]) > 0) std::swap(t[1], t[2]);
+  return t;
+}
+
+std::map<std::string, std::vector<Triangle>> named_surfaces(const Extracted& ex,
+                                                            const std::string& context) {
+  const auto gmsh_surfaces = named_gmsh_triangles();
+  std::vector<char> on_surface(ex.mesh.nodes.size(), 0);
+  for (const auto& [name, list] : gmsh_surfaces)
+    for (const GmshTriangle& g : list)
+      for (size_t tag : g.nodes)
+        if (const int i = ex.node_tags.find(tag); i >= 0) on_surface[i] = 1;
+  const FaceTable table(ex.mesh.tets, on_surface);
+
+  std::map<std::string, std::vector<Triangle>> out;
+  for (const auto& [name, list] : gmsh_surfaces) {
+    const std::string where = fmt::format("{}: surface '{}'", context, name);
+    auto& triangles = out[name];
+    for (const GmshTriangle& g : list) triangles.push_back(outward_triangle(g, ex, table, where));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Primitives
+
+const char* kind_name(PrimitiveKind kind) {
+  switch (kind) {
+    case PrimitiveKind::sphere:
+      return "sphere";
+    case PrimitiveKind::box:
+      return "box";
+    case PrimitiveKind::cylinder:
+      return "cylinder";
+    case PrimitiveKind::pipe:
+      return "pipe";
+  }
+  throw MeshError(fmt::format("mesh_primitive: unknown PrimitiveKind {}", static_cast<int>(kind)));
+}
+
+void require_positive(const char* kind, const char* field, double value) {
+  if (!(std::isfinite(value) && value > 0))
+    throw MeshError(fmt::format("mesh_primitive({}): {} must be positive and finite, got {}", kind,
+                                field, value));
+}
+
+constexpr const char* kSizeNames[3] = {"size.x", "size.y", "size.z"};
+
+// Validates the fields the kind uses and returns the analytic volume.
+double validated_volume(const PrimitiveSpec& s) {
+  const char* kind = kind_name(s.kind);
+  const double pi = std::numbers::pi;
+  switch (s.kind) {
+    case PrimitiveKind::sphere:
+      require_positive(kind, "radius", s.radius);
+      return 4.0 / 3.0 * pi * s.radius * s.radius * s.radius;
+    case PrimitiveKind::box:
+      for (int i = 0; i < 3; ++i) require_positive(kind, kSizeNames[i], s.size[i]);
+      return s.size.prod();
+    case PrimitiveKind::cylinder:
+      require_positive(kind, "radius", s.radius);
+      require_positive(kind, "length", s.length);
+      return pi * s.radius * s.radius * s.length;
+    case PrimitiveKind::pipe:
+      require_positive(kind, "radius", s.radius);
+      require_positive(kind, "inner_radius", s.inner_radius);
+      require_positive(kind, "length", s.length);
+      if (!(s.inner_radius < s.radius))
+        throw MeshError(
+            fmt::format("mesh_primitive(pipe): inner_radius ({}) must be smaller than "
+                        "radius ({})",
+                        s.inner_radius, s.radius));
+      return pi * (s.radius * s.radius - s.inner_radius * s.inner_radius) * s.length;
+  }
+  return 0;  // unreachable: kind_name threw
+}
+
+void validate_spec(const PrimitiveSpec& s) {
+  const double volume = validated_volume(s);
+  const char* kind = kind_name(s.kind);
+  require_positive(kind, "mesh_size", s.mesh_size);
+  const double estimate = kTetsPerCubedSize * volume / std::pow(s.mesh_size, 3);
+  if (estimate > kMaxEstimatedTets)
+    throw MeshError(
+        fmt::format("mesh_primitive({}): mesh_size {} is too small for this shape: "
+                    "about {:.3g} tets estimated, the limit is {:.0g}",
+                    kind, s.mesh_size, estimate, kMaxEstimatedTets));
+}
+
+void validate_placement(const Placement& p) {
+  const double axis = p.rotation_axis.norm();
+  if (!p.translation.allFinite())
+    throw MeshError("mesh_primitive: placement.translation must be finite");
+  if (!std::isfinite(p.rotation_deg))
+    throw MeshError("mesh_primitive: placement.rotation_deg must be finite");
+  if (!(std::isfinite(axis) && axis > 0))
+    throw MeshError("mesh_primitive: placement.rotation_axis must be non-zero and finite");
+}
+
+// A pipe is a cylinder minus a coaxial one. The tool overshoots both end caps so the boolean never
+// has to deal with coincident faces.
+void add_pipe(const PrimitiveSpec& s, double z0) {
+  namespace occ = gmsh::model::occ;
+  const int outer = occ::addCylinder(0, 0, z0, 0, 0, s.length, s.radius);
+  const int inner = occ::addCylinder(0, 0, z0 - s.length, 0, 0, 3 * s.length, s.inner_radius);
+  gmsh::vectorpair result;
+  std::vector<gmsh::vectorpair> unused_map;
+  occ::cut({{3, outer}}, {{3, inner}}, result, unused_map);
+  if (result.size() != 1 || result[0].first != 3)
+    throw MeshError("mesh_primitive(pipe): the boolean cut did not give exactly one volume");
+}
+
+void add_geometry(const PrimitiveSpec& s) {
+  namespace occ = gmsh::model::occ;
+  const double z0 = s.centered ? -s.length / 2 : 0.0;
+  switch (s.kind) {
+    case PrimitiveKind::sphere:
+      occ::addSphere(0, 0, 0, s.radius);
+      break;
+    case PrimitiveKind::box: {
+      const Vec3 corner = s.centered ? Vec3(-s.size / 2) : Vec3::Zero();
+      occ::addBox(corner.x(), corner.y(), corner.z(), s.size.x(), s.size.y(), s.size.z());
+      break;
+    }
+    case PrimitiveKind::cylinder:
+      occ::addCylinder(0, 0, z0, 0, 0, s.length, s.radius);
+      break;
+    case PrimitiveKind::pipe:
+      add_pipe(s, z0);
+      break;
+  }
+  occ::synchronize();  // the model (and the mesher) only see OCC entities after this
+}
+
+void set_mesh_options(double mesh_size) {
+  gmsh::option::setNumber("Mesh.MeshSizeMin", mesh_size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay: deterministic (HXT is not)
+  gmsh::option::setNumber("Mesh.Optimize", 1);
+}
+
+void apply_placement(std::vector<Vec3>& nodes, const Placement& p) {
+  const double angle = p.rotation_deg * std::numbers::pi / 180.0;
+  const Mat3 rotation = Eigen::AngleAxisd(angle, p.rotation_axis.normalized()).toRotationMatrix();
+  for (Vec3& x : nodes) x = rotation * x + p.translation;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Mesh files
+
+// The file must exist, be readable and start with "$MeshFormat": Gmsh parses any other content as
+// a .geo script, which can run shell commands (SystemCall).
+void check_msh_file(const fs::path& path, const std::string& where) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw MeshError(fmt::format("{}: no such file", where));
+  if (!fs::is_regular_file(path, ec)) throw MeshError(fmt::format("{}: not a file", where));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MeshError(fmt::format("{}: cannot be opened for reading", where));
+  const std::string magic = "$MeshFormat";
+  std::string head(magic.size(), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  if (head != magic)
+    throw MeshError(fmt::format("{}: not a Gmsh MSH file (it must start with $MeshFormat)", where));
+}
+
+// A private directory holding a symbolic link "mesh.msh" to the file. Gmsh also executes
+// "<file>.opt" as a script when one exists next to the file it reads; no such file can exist here.
+class PrivateLink {
+ public:
+  PrivateLink(const fs::path& target, const std::string& where) {
+    std::string pattern = (fs::temp_directory_path() / "ccm-msh-XXXXXX").string();
+    if (!mkdtemp(pattern.data()))
+      throw MeshError(fmt::format("{}: cannot create a temporary directory", where));
+    dir_ = pattern;
+    link_ = dir_ / "mesh.msh";
+    std::error_code ec;
+    fs::create_symlink(fs::absolute(target), link_, ec);
+    if (ec) {
+      fs::remove_all(dir_, ec);
+      throw MeshError(
+          fmt::format("{}: cannot link into {}: {}", where, dir_.string(), ec.message()));
+    }
+  }
+  ~PrivateLink() {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);  // removes the link, never the target
+  }
+  PrivateLink(const PrivateLink&) = delete;
+  PrivateLink& operator=(const PrivateLink&) = delete;
+  const fs::path& path() const { return link_; }
+
+ private:
+  fs::path dir_, link_;
+};
+
+}  // namespace
+
+TetMesh mesh_primitive(const PrimitiveSpec& spec, const Placement& placement) {
+  validate_spec(spec);
+  validate_placement(placement);
+  const std::string context = fmt::format("mesh_primitive({})", kind_name(spec.kind));
+  TetMesh mesh = with_gmsh(context, [&] {
+    add_geometry(spec);
+    set_mesh_options(spec.mesh_size);
+    gmsh::model::mesh::generate(3);
+    return std::move(extract_tets(context).mesh);
+  });
+  apply_placement(mesh.nodes, placement);
+  return mesh;
+}
+
+TetMesh read_msh_file(const std::filesystem::path& path) {
+  const std::string where = path.string();
+  check_msh_file(path, where);
+  const PrivateLink link(path, where);
+  return with_gmsh(
+      where,
+      [&] {
+        gmsh::open(link.path().string());
+        Extracted ex = extract_tets(where);
+        ex.mesh.named_surfaces = named_surfaces(ex, where);
+        return std::move(ex.mesh);
+      },
+      link.path().string());
+}
+
+}  // namespace ccm

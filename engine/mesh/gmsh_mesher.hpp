@@ -1,0 +1,54 @@
+// Linear-tetrahedron meshes from Gmsh: meshed primitives (OpenCASCADE kernel) and .msh files.
+//
+// Every call initializes Gmsh, does its work and finalizes it again, under a process-wide mutex
+// (Gmsh is a global singleton and not thread-safe). Gmsh never sees argv or the user's
+// configuration files, and prints nothing: all problems surface as MeshError.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "engine/core/types.hpp"
+#include "engine/mesh/tet_mesh.hpp"
+
+namespace ccm {
+
+struct MeshError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Rigid placement of a primitive: rotate about the origin first, then translate.
+struct Placement {
+  Vec3 translation = Vec3::Zero();
+  Vec3 rotation_axis = Vec3::UnitZ();  // need not be normalized; must be non-zero
+  double rotation_deg = 0.0;
+};
+
+enum class PrimitiveKind { sphere, box, cylinder, pipe };
+
+struct PrimitiveSpec {
+  PrimitiveKind kind;
+  double radius = 0;         // sphere, cylinder; pipe: outer radius
+  double inner_radius = 0;   // pipe only
+  double length = 0;         // cylinder/pipe: along local +z, base at local origin
+  Vec3 size = Vec3::Zero();  // box: extents, corner at local origin (box spans [0,size])
+  bool centered = false;     // box/cylinder/pipe: centre the shape on the local origin instead
+                             // (a sphere is always centred on the origin)
+  double mesh_size = 0;      // characteristic length (Mesh.MeshSizeMin/Max)
+};
+
+// Meshes the primitive with 3D Delaunay (deterministic: the same spec gives the same mesh) and
+// places it. Nodes are numbered 0..n-1 in Gmsh tag order and all belong to some tet; tets have
+// positive volume, ordered by Gmsh tag. named_surfaces stays empty. Throws MeshError when a field
+// is out of range (the message names the field), when mesh_size would give more than about
+// 5e6 tets, or when Gmsh fails.
+TetMesh mesh_primitive(const PrimitiveSpec& spec, const Placement& placement);
+
+// Reads the linear tets (element type 4) of a Gmsh MSH file (format 2 or 4, ASCII or binary),
+// with the same numbering and orientation guarantees as mesh_primitive. Every named physical group
+// of dimension 2 becomes a named surface of triangles oriented out of the tet each one bounds.
+// Throws MeshError, naming the path, if the file is missing, unreadable, not an MSH file, holds
+// no linear tets, or has a named triangle that is not a face of any tet.
+TetMesh read_msh_file(const std::filesystem::path& path);
+
+}  // namespace ccm

@@ -1,0 +1,82 @@
+#include "engine/observe/history.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace ccm {
+
+HistoryRecorder::HistoryRecorder(const ModelMesh& mesh, OutputRequest request)
+    : mesh_(mesh), request_(std::move(request)) {
+  columns_.push_back("time");
+  for (const Body& b : mesh_.bodies) {
+    if (request_.kinetic_energy) columns_.push_back(b.name + ".kinetic_energy");
+    if (request_.internal_energy) columns_.push_back(b.name + ".internal_energy");
+    if (request_.displacement) {
+      columns_.push_back(b.name + ".u_mean");
+      columns_.push_back(b.name + ".u_max");
+    }
+  }
+  for (const TrackedNode& t : request_.tracked)
+    for (const char* q : {"ux", "uy", "uz", "vx", "vy", "vz"}) columns_.push_back(t.name + "." + q);
+}
+
+double kinetic_energy(const State& s, int first, int count) {
+  double ke = 0.0;
+  for (int n = first; n < first + count; ++n) {
+    const auto i = static_cast<size_t>(n);
+    ke += s.m_lumped[i] * s.v[i].squaredNorm();
+  }
+  return 0.5 * ke;
+}
+
+void HistoryRecorder::sample_body(const State& s, const Body& b, double internal_energy,
+                                  std::vector<double>& row) const {
+  if (request_.kinetic_energy) row.push_back(kinetic_energy(s, b.first_node, b.n_nodes));
+  if (request_.internal_energy) row.push_back(internal_energy);
+  if (request_.displacement) {
+    double sum = 0.0, max = 0.0;
+    for (int n = b.first_node; n < b.first_node + b.n_nodes; ++n) {
+      const auto i = static_cast<size_t>(n);
+      const double u = (s.x[i] - s.X[i]).norm();
+      sum += u;
+      max = std::max(max, u);
+    }
+    row.push_back(sum / b.n_nodes);
+    row.push_back(max);
+  }
+}
+
+void HistoryRecorder::sample(const State& s, std::span<const double> body_internal_energy) {
+  std::vector<double> row{s.t};
+  row.reserve(columns_.size());
+  for (size_t b = 0; b < mesh_.bodies.size(); ++b)
+    sample_body(s, mesh_.bodies[b], request_.internal_energy ? body_internal_energy[b] : 0.0, row);
+  for (const TrackedNode& t : request_.tracked) {
+    const auto i = static_cast<size_t>(t.node);
+    const Vec3 u = s.x[i] - s.X[i];
+    row.insert(row.end(), {u.x(), u.y(), u.z(), s.v[i].x(), s.v[i].y(), s.v[i].z()});
+  }
+  rows_.push_back(std::move(row));
+}
+
+void write_history_csv(const std::filesystem::path& file, const HistoryRecorder& history) {
+  const std::filesystem::path tmp = file.string() + ".partial";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error(fmt::format("{}: cannot open for writing", tmp.string()));
+    const auto& cols = history.columns();
+    for (size_t c = 0; c < cols.size(); ++c) out << (c ? "," : "") << cols[c];
+    out << '\n';
+    for (const auto& row : history.rows()) {
+      for (size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << fmt::format("{:.17g}", row[c]);
+      out << '\n';
+    }
+    if (!out) throw std::runtime_error(fmt::format("{}: write failed", tmp.string()));
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+}  // namespace ccm

@@ -1,0 +1,54 @@
+// Sampled time histories of what a scene asked for, and nothing else.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/mesh/model_mesh.hpp"
+#include "engine/solver/state.hpp"
+
+namespace ccm {
+
+struct TrackedNode {
+  std::string name;
+  int node = -1;
+};
+
+struct OutputRequest {
+  bool kinetic_energy = false;   // per body: 1/2 sum m |v|^2 [J]
+  bool internal_energy = false;  // per body: sum V0 W [J]
+  bool displacement = false;     // per body: mean and max |u| over its nodes [m]
+  std::vector<TrackedNode> tracked;  // u and v of single nodes [m, m/s]
+};
+
+class HistoryRecorder {
+ public:
+  HistoryRecorder(const ModelMesh& mesh, OutputRequest request);
+
+  bool needs_internal_energy() const { return request_.internal_energy; }
+  const std::vector<std::string>& columns() const { return columns_; }
+  const std::vector<std::vector<double>>& rows() const { return rows_; }
+
+  // body_internal_energy: one entry per body, read only when internal energy was requested.
+  void sample(const State& s, std::span<const double> body_internal_energy);
+
+ private:
+  void sample_body(const State& s, const Body& b, double internal_energy,
+                   std::vector<double>& row) const;
+
+  const ModelMesh& mesh_;
+  OutputRequest request_;
+  std::vector<std::string> columns_;
+  std::vector<std::vector<double>> rows_;
+};
+
+// Kinetic energy 1/2 sum m |v|^2 of nodes [first, first + count).
+double kinetic_energy(const State& s, int first, int count);
+
+// Writes the history as CSV (header line of column names, then one line per sample, full
+// precision). Written to a temporary file and renamed, so a reader never sees half a file.
+void write_history_csv(const std::filesystem::path& file, const HistoryRecorder& history);
+
+}  // namespace ccm

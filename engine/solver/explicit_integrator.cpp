@@ -1,0 +1,261 @@
+#include "engine/solver/explicit_integrator.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "engine/solver/lumped_mass.hpp"
+
+namespace ccm {
+
+std::string_view to_string(Verdict v) { return v == Verdict::completed ? "completed" : "unstable"; }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Work of the prescribed surface loads, by the trapezoidal rule over each step.
+class LoadWork {
+ public:
+  explicit LoadWork(const BoundaryConditions& bcs) : bcs_(bcs) {}
+  void before_step(const State& s) {
+    x_n_.clear();
+    for (const SurfaceLoad& l : bcs_.loads)
+      for (int n : l.nodes) x_n_.push_back(s.x[static_cast<size_t>(n)]);
+  }
+  void after_step(const State& s, double t_n, double t_np1) {
+    size_t k = 0;
+    for (const SurfaceLoad& l : bcs_.loads) {
+      const Vec3 F_mid = 0.5 * (l.magnitude(t_n) + l.magnitude(t_np1)) * l.direction;
+      for (size_t i = 0; i < l.nodes.size(); ++i, ++k)
+        work_ += l.area_share[i] * F_mid.dot(s.x[static_cast<size_t>(l.nodes[i])] - x_n_[k]);
+    }
+  }
+  double work() const { return work_; }
+
+ private:
+  const BoundaryConditions& bcs_;
+  std::vector<Vec3> x_n_;
+  double work_ = 0.0;
+};
+
+class CentralDifference {
+ public:
+  CentralDifference(const Model& model, const RunOptions& options)
+      : model_(model), opt_(options), load_work_(model.bcs),
+        body_energy_(model.mesh.bodies.size(), 0.0) {}
+
+  RunSummary run();
+
+ private:
+  void initialise();
+  double next_dt() const;
+  void predict(double dt);
+  void evaluate(bool with_energy);
+  void apply_fixed_nodes();
+  void correct(double dt);
+  double gravity_work() const;
+  double total_internal_energy() const;
+  bool output_due() const;
+  void sample();
+  std::optional<Instability> check(bool energy_check);
+  void report_progress(double dt, Clock::time_point start, double& last_report);
+
+  const Model& model_;
+  const RunOptions& opt_;
+  State s_;
+  LoadWork load_work_;
+  EnergyBalance energy_;
+  std::vector<double> body_energy_;
+  InternalForceResult last_eval_;
+  long next_output_index_ = 1;
+  double last_dt_ = 0.0;
+  RunSummary summary_;
+};
+
+void CentralDifference::initialise() {
+  const ModelMesh& mesh = model_.mesh;
+  s_.X = mesh.X;
+  s_.x = mesh.X;
+  s_.v = model_.initial_velocity;
+  s_.a.assign(mesh.X.size(), Vec3::Zero());
+  s_.f.assign(mesh.X.size(), Vec3::Zero());
+  s_.m_lumped = lumped_mass(mesh, model_.elements);
+  s_.inv_m.resize(s_.m_lumped.size());
+  for (size_t i = 0; i < s_.m_lumped.size(); ++i) s_.inv_m[i] = 1.0 / s_.m_lumped[i];
+  for (int n : model_.bcs.fixed_nodes) s_.v[static_cast<size_t>(n)].setZero();
+  s_.t = 0.0;
+  evaluate(true);
+  apply_fixed_nodes();
+  summary_.dt_initial = opt_.time.dt_safety * last_eval_.stable_dt;
+  last_dt_ = summary_.dt_initial;
+  energy_.start(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy());
+  summary_.n_nodes = mesh.n_nodes();
+  summary_.n_elements = mesh.n_elements();
+}
+
+double CentralDifference::next_dt() const {
+  double dt = std::min(opt_.time.dt_safety * last_eval_.stable_dt, opt_.time.max_dt);
+  if (opt_.contact) dt = std::min(dt, opt_.contact->stable_dt_limit(s_));
+  double stop = opt_.time.end_time;
+  if (opt_.time.output_interval > 0.0)
+    stop = std::min(stop, static_cast<double>(next_output_index_) * opt_.time.output_interval);
+  // Land exactly on the next output time or the end, rather than step a hair short of it.
+  if (s_.t + dt * (1.0 + 1e-9) >= stop) dt = stop - s_.t;
+  return dt;
+}
+
+// x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28)
+void CentralDifference::predict(double dt) {
+  const double half_dt = 0.5 * dt;
+  for (size_t i = 0; i < s_.x.size(); ++i) {
+    s_.v[i] += half_dt * s_.a[i];
+    s_.x[i] += dt * s_.v[i];
+  }
+}
+
+// a_{n+1} = M^-1 (f_ext + f_int) + g   (eq. 2.29)
+void CentralDifference::evaluate(bool with_energy) {
+  std::fill(s_.f.begin(), s_.f.end(), Vec3::Zero());
+  for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
+  last_eval_ = add_internal_forces(model_.elements, s_.x, s_.f,
+                                   with_energy ? std::span<double>(body_energy_) : std::span<double>());
+  const Vec3 g = model_.bcs.gravity;
+  for (size_t i = 0; i < s_.a.size(); ++i) s_.a[i] = s_.inv_m[i] * s_.f[i] + g;
+}
+
+void CentralDifference::apply_fixed_nodes() {
+  for (int n : model_.bcs.fixed_nodes) {
+    const auto i = static_cast<size_t>(n);
+    s_.x[i] = s_.X[i];
+    s_.v[i].setZero();
+    s_.a[i].setZero();
+  }
+}
+
+// v_{n+1} = v* + dt/2 a_{n+1}   (eq. 2.31)
+void CentralDifference::correct(double dt) {
+  const double half_dt = 0.5 * dt;
+  for (size_t i = 0; i < s_.v.size(); ++i) s_.v[i] += half_dt * s_.a[i];
+}
+
+// Work of gravity = sum m g . u (exact: gravity is a constant field).
+double CentralDifference::gravity_work() const {
+  if (!model_.bcs.has_gravity()) return 0.0;
+  double w = 0.0;
+  for (size_t i = 0; i < s_.x.size(); ++i)
+    w += s_.m_lumped[i] * model_.bcs.gravity.dot(s_.x[i] - s_.X[i]);
+  return w;
+}
+
+double CentralDifference::total_internal_energy() const {
+  double e = 0.0;
+  for (double b : body_energy_) e += b;
+  return e;
+}
+
+bool CentralDifference::output_due() const {
+  if (opt_.time.output_interval <= 0.0) return false;
+  const double t_out = static_cast<double>(next_output_index_) * opt_.time.output_interval;
+  return s_.t >= t_out * (1.0 - 1e-12);
+}
+
+void CentralDifference::sample() {
+  if (opt_.history) opt_.history->sample(s_, body_energy_);
+  if (opt_.on_sample) opt_.on_sample(s_);
+}
+
+std::optional<Instability> CentralDifference::check(bool energy_check) {
+  if (auto bad = check_elements(last_eval_, s_.t)) return bad;
+  if (!energy_check) return std::nullopt;
+  if (auto bad = check_finite(s_)) return bad;
+  const double w_ext = load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->work() : 0.0);
+  const double err =
+      energy_.update(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), w_ext);
+  summary_.energy_balance_error = energy_.max_relative_error();
+  return check_energy(err, opt_.monitor.energy_tolerance, s_.t);
+}
+
+void CentralDifference::report_progress(double dt, Clock::time_point start, double& last_report) {
+  if (!opt_.progress) return;
+  const double wall = seconds_since(start);
+  if (wall - last_report < opt_.progress_seconds) return;
+  last_report = wall;
+  opt_.progress({s_.t, opt_.time.end_time, summary_.steps, dt, wall});
+}
+
+RunSummary CentralDifference::run() {
+  const auto start = Clock::now();
+  initialise();
+  const auto loop_start = Clock::now();
+  if (auto bad = check(true)) {
+    summary_.verdict = Verdict::unstable;
+    summary_.instability = *bad;
+  }
+  sample();
+  double last_report = 0.0;
+  const double t_end = opt_.time.end_time;
+  while (summary_.verdict == Verdict::completed && s_.t < t_end * (1.0 - 1e-12)) {
+    if (opt_.time.max_steps > 0 && summary_.steps >= opt_.time.max_steps) {
+      summary_.verdict = Verdict::unstable;
+      summary_.instability = {s_.t, "step limit reached before the end time", -1, -1};
+      break;
+    }
+    const double dt = next_dt();
+    const bool output_step = (s_.t + dt >= t_end * (1.0 - 1e-12));
+    const double t_n = s_.t;
+    if (auto bad = check_time_step(opt_.time.dt_safety * last_eval_.stable_dt,
+                                   summary_.dt_initial, opt_.monitor.dt_collapse_ratio, s_.t)) {
+      summary_.verdict = Verdict::unstable;
+      summary_.instability = *bad;
+      break;
+    }
+    load_work_.before_step(s_);
+    predict(dt);  // 1
+    s_.t = t_n + dt;
+    const bool sample_now = output_step || output_due();
+    // The leapfrog energy measure is consistent only where dt did not jump, so the balance is
+    // checked on regular steps, never on the steps shortened to land on an output time.
+    const bool regular_step = std::abs(dt - last_dt_) <= 0.01 * last_dt_;
+    const bool energy_check =
+        regular_step && (summary_.steps + 1) % opt_.monitor.check_interval == 0;
+    evaluate(energy_check || sample_now);             // 2
+    if (opt_.contact) opt_.contact->correct(s_, dt);  // 3
+    apply_fixed_nodes();                              // 4
+    correct(dt);                                      // 5
+    last_dt_ = dt;
+    load_work_.after_step(s_, t_n, s_.t);
+    ++summary_.steps;
+    summary_.dt_min = std::min(summary_.dt_min, dt);
+    summary_.dt_max = std::max(summary_.dt_max, dt);
+    if (auto bad = check(energy_check)) {
+      summary_.verdict = Verdict::unstable;
+      summary_.instability = *bad;
+      break;
+    }
+    if (sample_now) {
+      sample();
+      if (output_due()) ++next_output_index_;
+    }
+    report_progress(dt, start, last_report);
+  }
+  summary_.end_time = s_.t;
+  summary_.wall_seconds = seconds_since(start);
+  if (summary_.steps > 0 && summary_.n_elements > 0)
+    summary_.ns_per_element_step = 1e9 * seconds_since(loop_start) /
+                                   (static_cast<double>(summary_.steps) * summary_.n_elements);
+  return summary_;
+}
+
+}  // namespace
+
+RunSummary run_explicit(const Model& model, const RunOptions& options) {
+  return CentralDifference(model, options).run();
+}
+
+}  // namespace ccm

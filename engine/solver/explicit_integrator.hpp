@@ -1,0 +1,71 @@
+// Explicit central difference (Newmark beta = 0, gamma = 1/2) in the Predict-Evaluate-Correct
+// order of thesis 2.5.2 (eq. 2.27-2.31; EQUATIONS.md):
+//   1. predict  x_{n+1} = x_n + dt v_n + dt^2/2 a_n,   v* = v_n + dt/2 a_n
+//   2. evaluate a_{n+1} = M^-1 (f_ext(t_{n+1}) + f_int(x_{n+1}))  (+ gravity)
+//   3. contact  the contact model corrects x_{n+1} and v*
+//   4. boundary conditions (fixed nodes)
+//   5. correct  v_{n+1} = v* + dt/2 a_{n+1}
+// The step is dt = min(safety * min_e h_e / c_d,e on the current configuration, max_dt,
+// contact limit), clipped so that output samples fall on exact multiples of the interval.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <string>
+
+#include "engine/contact/contact_model.hpp"
+#include "engine/monitor/stability_monitor.hpp"
+#include "engine/observe/history.hpp"
+#include "engine/solver/model.hpp"
+
+namespace ccm {
+
+struct TimeControl {
+  double end_time = 0.0;
+  double dt_safety = 0.9;
+  double max_dt = std::numeric_limits<double>::infinity();
+  double output_interval = 0.0;  // 0: only the initial and final states
+  long max_steps = 0;            // 0: no limit
+};
+
+enum class Verdict { completed, unstable };
+std::string_view to_string(Verdict v);
+
+struct RunSummary {
+  Verdict verdict = Verdict::completed;
+  Instability instability;  // meaningful when unstable
+  long steps = 0;
+  double end_time = 0.0;  // time reached
+  double dt_min = std::numeric_limits<double>::infinity();
+  double dt_max = 0.0;
+  double dt_initial = 0.0;
+  double wall_seconds = 0.0;
+  double ns_per_element_step = 0.0;
+  double energy_balance_error = 0.0;  // largest relative error seen at the checks
+  int n_nodes = 0;
+  int n_elements = 0;
+};
+
+struct Progress {
+  double t;
+  double end_time;
+  long steps;
+  double dt;
+  double wall_seconds;
+};
+using ProgressFn = std::function<void(const Progress&)>;
+using SampleFn = std::function<void(const State&)>;
+
+struct RunOptions {
+  TimeControl time;
+  MonitorSettings monitor;
+  ContactModel* contact = nullptr;     // none: no contact work at all
+  HistoryRecorder* history = nullptr;  // none: nothing sampled
+  SampleFn on_sample;                  // optional: sees the state at every output sample
+  ProgressFn progress;                 // called about every progress_seconds of wall time
+  double progress_seconds = 0.5;
+};
+
+RunSummary run_explicit(const Model& model, const RunOptions& options);
+
+}  // namespace ccm

@@ -1,0 +1,24 @@
+// Everything a run needs, built once before it starts: mesh, element data, boundary
+// conditions and initial velocities. A plain aggregate; the integrator does the work.
+#pragma once
+
+#include <vector>
+
+#include "engine/bc/boundary_conditions.hpp"
+#include "engine/element/internal_force.hpp"
+#include "engine/mesh/model_mesh.hpp"
+
+namespace ccm {
+
+struct Model {
+  ModelMesh mesh;
+  ElementSet elements;
+  BoundaryConditions bcs;
+  std::vector<Vec3> initial_velocity;  // per node
+};
+
+// Builds the element set and sets the initial velocities to zero. Throws std::runtime_error
+// when an element has no positive reference volume.
+Model make_model(ModelMesh mesh);
+
+}  // namespace ccm

@@ -1,0 +1,272 @@
+#include "study/cli/run_command.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "engine/observe/history.hpp"
+#include "engine/solver/explicit_integrator.hpp"
+#include "study/provenance/version.hpp"
+#include "study/scene/scene_builder.hpp"
+#include "study/scene/scene_file.hpp"
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+using SystemClock = std::chrono::system_clock;
+
+// Bad command-line input that is not about the scene file.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Small helpers: hashing, time stamps, TOML values, atomic files
+
+std::string fnv1a64(std::string_view data) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const char c : data) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ULL;
+  }
+  return fmt::format("{:016x}", h);
+}
+
+// RFC 3339 UTC with milliseconds, which is also a TOML offset date-time.
+std::string utc_timestamp(SystemClock::time_point t) {
+  const std::time_t secs = SystemClock::to_time_t(t);
+  std::tm tm{};
+  gmtime_r(&secs, &tm);
+  const auto ms =
+      std::chrono::duration_cast<std::chrono::milliseconds>(t.time_since_epoch()).count() % 1000;
+  return fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}.{:03}Z", tm.tm_year + 1900, tm.tm_mon + 1,
+                     tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, ms);
+}
+
+std::string toml_string(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\')
+      out += fmt::format("\\{}", c);
+    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    else
+      out += c;
+  }
+  return out + "\"";
+}
+
+// Shortest round-trip form, always a TOML float (never read back as an integer).
+std::string toml_float(double v) {
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // "n": inf, nan
+  return s;
+}
+
+void write_atomic(const fs::path& file, std::string_view content) {
+  const fs::path tmp = file.string() + ".partial";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << content;
+    out.close();
+    if (!out) throw std::runtime_error(fmt::format("{}: write failed", tmp.string()));
+  }
+  fs::rename(tmp, file);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Preparation: everything that bad input can make fail, before anything is written
+
+struct Prepared {
+  std::string text;
+  Scene scene;
+  Model model;
+  OutputRequest output;
+};
+
+void check_out_dir(const fs::path& out) {
+  std::error_code ec;
+  if (out.empty()) throw UsageError("--out: the output directory must not be empty");
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+    throw UsageError(fmt::format("--out {}: exists and is not a directory", out.string()));
+}
+
+void prepare(const RunArgs& args, Prepared& p) {
+  p.text = read_scene_text(args.scene);
+  p.scene = parse_scene(p.text, args.scene);
+  for (const std::string& w : p.scene.warnings) fmt::print(stderr, "ccm: warning: {}\n", w);
+  check_out_dir(args.out);
+  p.model = build_model(p.scene);
+  p.output = build_output_request(p.scene, p.model.mesh);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Progress on a terminal: one line, rewritten in place
+
+class ProgressLine {
+ public:
+  void operator()(const Progress& p) {
+    const double fraction = p.end_time > 0.0 ? p.t / p.end_time : 1.0;
+    const double eta = fraction > 0.0 ? p.wall_seconds * (1.0 - fraction) / fraction : 0.0;
+    fmt::print(stderr,
+               "\r{:6.1f}%  t {:.4e} s  step {}  dt {:.3e} s  wall {:.1f} s  ETA {:.1f} s\x1b[K",
+               100.0 * fraction, p.t, p.steps, p.dt, p.wall_seconds, eta);
+    std::fflush(stderr);
+    used_ = true;
+  }
+  void finish() const {
+    if (used_) fmt::print(stderr, "\r\x1b[K");
+  }
+
+ private:
+  bool used_ = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Reporting
+
+struct RunRecord {
+  const RunArgs& args;
+  const Prepared& prepared;
+  const RunSummary& summary;
+  std::string started;
+  std::string finished;
+  int exit_code = 0;
+};
+
+std::string instability_text(const Instability& i) {
+  std::string s = fmt::format("at t = {:.6g} s: {}", i.time, i.reason);
+  if (i.element >= 0) s += fmt::format(" (element {})", i.element);
+  if (i.node >= 0) s += fmt::format(" (node {})", i.node);
+  return s;
+}
+
+void print_summary_table(const RunRecord& r) {
+  const RunSummary& s = r.summary;
+  const ModelMesh& mesh = r.prepared.model.mesh;
+  fmt::print("ccm run {}{}\n", r.args.scene.string(),
+             r.prepared.scene.title.empty() ? "" : "  (" + r.prepared.scene.title + ")");
+  fmt::print("  {:<15}{}\n", "bodies", mesh.bodies.size());
+  for (const Body& b : mesh.bodies)
+    fmt::print("  {:<15}  {}: {} nodes, {} elements\n", "", b.name, b.n_nodes, b.n_elements);
+  fmt::print("  {:<15}{}\n", "nodes", s.n_nodes);
+  fmt::print("  {:<15}{}\n", "elements", s.n_elements);
+  fmt::print("  {:<15}{:.6g} s of {:.6g} s\n", "sim time", s.end_time, r.prepared.scene.time.end);
+  fmt::print("  {:<15}{}\n", "steps", s.steps);
+  fmt::print("  {:<15}initial {:.4g} s, min {:.4g} s, max {:.4g} s\n", "dt", s.dt_initial, s.dt_min,
+             s.dt_max);
+  fmt::print("  {:<15}{:.3f} s\n", "wall time", s.wall_seconds);
+  fmt::print("  {:<15}{:.1f} ns\n", "per elem-step", s.ns_per_element_step);
+  fmt::print("  {:<15}{:.4f} % (largest energy-balance error)\n", "energy error",
+             100.0 * s.energy_balance_error);
+  fmt::print("  {:<15}{}\n", "verdict", to_string(s.verdict));
+  if (s.verdict == Verdict::unstable)
+    fmt::print("  {:<15}{}\n", "instability", instability_text(s.instability));
+  fmt::print("  {:<15}{}\n", "results", r.args.out.string());
+}
+
+std::string summary_toml(const RunRecord& r) {
+  const RunSummary& s = r.summary;
+  const Scene& scene = r.prepared.scene;
+  const ModelMesh& mesh = r.prepared.model.mesh;
+  std::string t = "# ccm run summary\n";
+  t += fmt::format("ccm_version = {}\n", toml_string(version_string()));
+  t += fmt::format("scene = {}\n",
+                   toml_string(fs::absolute(scene.source).lexically_normal().string()));
+  t += fmt::format("scene_fnv1a64 = {}\n", toml_string(fnv1a64(r.prepared.text)));
+  t += fmt::format("title = {}\n", toml_string(scene.title));
+  t += fmt::format("started = {}\nfinished = {}\n", r.started, r.finished);
+  t +=
+      fmt::format("verdict = {}\nexit_code = {}\n", toml_string(to_string(s.verdict)), r.exit_code);
+  t += fmt::format("\n[model]\nbodies = {}\nnodes = {}\nelements = {}\n", mesh.bodies.size(),
+                   s.n_nodes, s.n_elements);
+  t += "\n[run]\n";
+  t += fmt::format("end_time = {}\ntime_reached = {}\nsteps = {}\n", toml_float(scene.time.end),
+                   toml_float(s.end_time), s.steps);
+  t += fmt::format("dt_initial = {}\ndt_min = {}\ndt_max = {}\n", toml_float(s.dt_initial),
+                   toml_float(s.dt_min), toml_float(s.dt_max));
+  t += fmt::format("wall_seconds = {}\nns_per_element_step = {}\n", toml_float(s.wall_seconds),
+                   toml_float(s.ns_per_element_step));
+  t += fmt::format("energy_balance_error = {}  # largest relative error (0.01 = 1 %)\n",
+                   toml_float(s.energy_balance_error));
+  if (s.verdict == Verdict::unstable) {
+    const Instability& i = s.instability;
+    t += fmt::format("\n[instability]\ntime = {}\nreason = {}\nelement = {}\nnode = {}\n",
+                     toml_float(i.time), toml_string(i.reason), i.element, i.node);
+  }
+  for (const Body& b : mesh.bodies)
+    t += fmt::format("\n[[bodies]]\nname = {}\nnodes = {}\nelements = {}\n", toml_string(b.name),
+                     b.n_nodes, b.n_elements);
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The command
+
+RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history) {
+  RunOptions options;
+  options.time = time_control(p.scene.time);
+  options.monitor = p.scene.monitor;
+  options.history = &history;
+  ProgressLine progress;
+  if (!args.quiet && isatty(STDERR_FILENO))
+    options.progress = [&progress](const Progress& pr) { progress(pr); };
+  const RunSummary summary = run_explicit(p.model, options);
+  progress.finish();
+  return summary;
+}
+
+int run(const RunArgs& args) {
+  const std::string started = utc_timestamp(SystemClock::now());
+  Prepared p;
+  prepare(args, p);
+  fs::create_directories(args.out);
+  write_atomic(args.out / "scene.toml", p.text);
+  HistoryRecorder history(p.model.mesh, p.output);
+  const RunSummary summary = run_scene(args, p, history);
+  const int code =
+      summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
+  write_history_csv(args.out / "history.csv", history);
+  const RunRecord record{args, p, summary, started, utc_timestamp(SystemClock::now()), code};
+  write_atomic(args.out / "summary.toml", summary_toml(record));
+  if (!args.quiet) print_summary_table(record);
+  return code;
+}
+
+void report(std::string_view kind, std::string_view message) {
+  std::fflush(stdout);
+  fmt::print(stderr, "ccm: {}: {}\n", kind, message);
+}
+
+}  // namespace
+
+int run_command(const RunArgs& args) {
+  try {
+    return run(args);
+  } catch (const SceneError& e) {
+    report("error", e.what());
+    return exit_code::bad_input;
+  } catch (const UsageError& e) {
+    report("error", e.what());
+    return exit_code::bad_input;
+  } catch (const std::exception& e) {
+    report("internal error", e.what());
+  } catch (const std::string& e) {  // Gmsh throws its messages as strings
+    report("internal error", e);
+  } catch (...) {
+    report("internal error", "unknown exception");
+  }
+  return exit_code::internal_error;
+}
+
+}  // namespace ccm

@@ -1,0 +1,27 @@
+// `ccm run SCENE --out DIR`: parse, validate and mesh everything, and only then create DIR, run
+// and write history.csv, summary.toml and a copy of the scene into it.
+#pragma once
+
+#include <filesystem>
+
+namespace ccm {
+
+// Process exit codes of the ccm command line.
+namespace exit_code {
+constexpr int completed = 0;
+constexpr int internal_error = 1;
+constexpr int bad_input = 2;
+constexpr int unstable = 3;
+}  // namespace exit_code
+
+struct RunArgs {
+  std::filesystem::path scene;
+  std::filesystem::path out;
+  bool quiet = false;  // no progress line and no summary table
+};
+
+// Runs the scene and returns the exit code. Messages go to stderr as "ccm: error: ...";
+// the summary table goes to stdout.
+int run_command(const RunArgs& args);
+
+}  // namespace ccm

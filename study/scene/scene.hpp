@@ -1,0 +1,145 @@
+// A scene as read from a scene file (docs/scene-file.md): plain typed aggregates, validated by
+// the parser, turned into a Model by the scene builder. Every part remembers where it came from
+// so that later errors can still name the file, the line and the key.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/material/material.hpp"
+#include "engine/mesh/gmsh_mesher.hpp"
+#include "engine/monitor/stability_monitor.hpp"
+
+namespace ccm {
+
+// Bad input in a scene: the message reads "<file>:<line>: <key path>: <problem>".
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// "<file>:<line>: <key path>: <problem>"; the line is left out when 0, the key path when empty.
+inline SceneError scene_error(const std::filesystem::path& file, int line,
+                              std::string_view key_path, std::string_view problem) {
+  std::string msg = file.string();
+  if (line > 0) msg += fmt::format(":{}", line);
+  if (!key_path.empty()) msg += fmt::format(": {}", key_path);
+  return SceneError(fmt::format("{}: {}", msg, problem));
+}
+
+// Where a table of the scene file is.
+struct SourceRef {
+  std::string path;                                   // key path of the table, e.g. "fixed[0]"
+  int line = 0;                                       // line of the table
+  std::map<std::string, int, std::less<>> key_lines;  // line of each key set in the table
+
+  int line_of(std::string_view key) const {
+    const auto it = key_lines.find(key);
+    return it == key_lines.end() ? line : it->second;
+  }
+  std::string key_path(std::string_view key) const {
+    if (key.empty()) return path;
+    return path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
+  }
+};
+
+struct SceneTime {
+  double end = 0.0;              // [s]
+  double output_interval = 0.0;  // [s]; the parser sets end/100 when not given
+  double dt_safety = 0.9;        // (0, 2]
+  std::optional<double> max_dt;  // [s]
+  std::optional<long> max_steps;
+};
+
+enum class Shape { sphere, box, cylinder, pipe, mesh };
+
+struct GeometrySpec {
+  Shape shape = Shape::box;
+  PrimitiveSpec primitive{PrimitiveKind::box};  // sphere, box, cylinder, pipe
+  std::filesystem::path file;                   // mesh: resolved against the scene's folder
+};
+
+struct BodySpec {
+  std::string name;
+  MaterialParams material;
+  GeometrySpec geometry;
+  Placement placement;
+  Vec3 initial_velocity = Vec3::Zero();  // [m/s]
+  SourceRef where;                       // the [[bodies]] table
+  SourceRef geometry_where;              // its geometry table
+};
+
+struct BoxSpec {
+  Vec3 min = Vec3::Zero();
+  Vec3 max = Vec3::Zero();
+};
+
+struct PlaneSpec {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitX();  // non-zero, need not be unit
+  double tolerance = 1e-6;      // [m]
+};
+
+struct NodeSetRef {
+  std::string name;  // "<body>/<set>", or "<set>" when the spec names the body
+};
+struct SurfaceRef {
+  std::string name;  // "<body>/<surface>", or "<surface>" when the spec names the body
+};
+
+using NodeSelection = std::variant<NodeSetRef, BoxSpec, PlaneSpec>;
+using SurfaceSelection = std::variant<SurfaceRef, PlaneSpec>;
+
+struct FixedSpec {
+  std::optional<std::string> body;  // restricts the selection to one body
+  NodeSelection selection;
+  SourceRef where;
+};
+
+struct SurfaceLoadSpec {
+  std::string name;
+  std::optional<std::string> body;
+  SurfaceSelection surface;
+  Vec3 direction = Vec3::UnitX();                // non-zero
+  std::vector<std::pair<double, double>> force;  // (t [s], total force [N])
+  SourceRef where;
+};
+
+struct TrackSpec {
+  std::string name;
+  std::string body;
+  Vec3 point = Vec3::Zero();  // [m]; the body's nearest node is tracked
+  SourceRef where;
+};
+
+struct OutputSpec {
+  bool kinetic_energy = true;
+  bool internal_energy = true;
+  bool displacement = true;
+  std::vector<TrackSpec> track;
+};
+
+struct Scene {
+  std::filesystem::path source;  // the scene file, as given
+  std::string title;
+  SceneTime time;
+  MonitorSettings monitor;
+  Vec3 gravity = Vec3::Zero();  // [m/s^2]
+  std::vector<BodySpec> bodies;
+  std::vector<FixedSpec> fixed;
+  std::vector<SurfaceLoadSpec> surface_loads;
+  OutputSpec output;
+  std::vector<std::string> warnings;  // legal but suspicious settings, each "<file>:<line>: ..."
+};
+
+}  // namespace ccm
