@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/element/element_pack.hpp"
 #include "engine/element/tet4.hpp"
 #include "engine/material/material.hpp"
 #include "engine/mesh/model_mesh.hpp"
@@ -19,6 +20,7 @@ struct ElementBlock {
   MaterialModel model = MaterialModel::neo_hookean;
   Lame lame{};
   double wave_speed = 0.0;  // dilatational c_d of the material
+  std::vector<ElementPack> packs;  // the block's elements as the kernel reads them
 };
 
 struct ElementSet {

@@ -167,7 +167,7 @@ void print_summary_table(const RunRecord& r) {
              s.dt_max);
   fmt::print("  {:<15}{:.3f} s\n", "wall time", s.wall_seconds);
   fmt::print("  {:<15}{:.1f} ns\n", "per elem-step", s.ns_per_element_step);
-  fmt::print("  {:<15}{:.4f} % (largest energy-balance error)\n", "energy error",
+  fmt::print("  {:<15}{:.3g} % (largest energy-balance error)\n", "energy error",
              100.0 * s.energy_balance_error);
   fmt::print("  {:<15}{}\n", "verdict", to_string(s.verdict));
   if (s.verdict == Verdict::unstable)

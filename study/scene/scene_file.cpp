@@ -423,10 +423,11 @@ Placement parse_placement(const Table& t) {
   return p;
 }
 
-BodySpec parse_body(const Table& t) {
+BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
   t.allow_only({"name", "initial_velocity", "material", "geometry", "placement"});
   BodySpec b;
   b.name = checked_name(t, "name");
+  require_unique(t, "name", b.name, names);
   b.initial_velocity = t.get_or<Vec3>("initial_velocity", Vec3::Zero());
   b.material = parse_material(t.need_table("material"));
   const Table geometry = t.need_table("geometry");
@@ -441,10 +442,7 @@ void parse_bodies(const Table& root, Scene& scene) {
   const std::vector<Table> tables = root.tables("bodies");
   if (tables.empty()) root.fail("bodies", "at least one [[bodies]] table is required");
   std::map<std::string, std::string> names;
-  for (const Table& t : tables) {
-    scene.bodies.push_back(parse_body(t));
-    require_unique(t, "name", scene.bodies.back().name, names);
-  }
+  for (const Table& t : tables) scene.bodies.push_back(parse_body(t, names));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -532,10 +530,11 @@ void parse_surface_loads(const Table& root, Scene& scene) {
 // ---------------------------------------------------------------------------------------------
 // [output]
 
-TrackSpec parse_track(const Table& t) {
+TrackSpec parse_track(const Table& t, std::map<std::string, std::string>& names) {
   t.allow_only({"name", "body", "point"});
   TrackSpec s;
   s.name = checked_name(t, "name");
+  require_unique(t, "name", s.name, names);
   s.body = t.need<std::string>("body");
   s.point = t.need<Vec3>("point");
   s.where = t.ref();
@@ -551,10 +550,7 @@ void parse_output(const Table& root, Scene& scene) {
   o.internal_energy = t->get_or("internal_energy", o.internal_energy);
   o.displacement = t->get_or("displacement", o.displacement);
   std::map<std::string, std::string> names;
-  for (const Table& track : t->tables("track")) {
-    o.track.push_back(parse_track(track));
-    require_unique(track, "name", o.track.back().name, names);
-  }
+  for (const Table& track : t->tables("track")) o.track.push_back(parse_track(track, names));
 }
 
 // ---------------------------------------------------------------------------------------------

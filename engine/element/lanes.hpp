@@ -1,0 +1,26 @@
+// A vector of kLanes doubles (GCC vector extension: one AVX2 register) and the log the
+// Neo-Hookean kernel needs on it.
+#pragma once
+
+#include <cmath>
+
+#include "engine/element/element_pack.hpp"
+
+namespace ccm {
+
+using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
+
+// glibc's libmvec vector log (AVX2 variant, < 4 ulp). math.h declares it only under
+// -ffast-math, which would also drop the NaN semantics the stability monitor relies on, so it
+// is declared here under its ABI name. Results repeat exactly on the same machine.
+#if defined(__x86_64__) && defined(__AVX2__) && defined(__GLIBC__)
+extern "C" Lanes _ZGVdN4v_log(Lanes) noexcept;
+inline Lanes vector_log(Lanes v) { return _ZGVdN4v_log(v); }
+#else
+inline Lanes vector_log(Lanes v) {
+  for (int l = 0; l < kLanes; ++l) v[l] = std::log(v[l]);
+  return v;
+}
+#endif
+
+}  // namespace ccm
