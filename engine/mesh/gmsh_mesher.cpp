@@ -10,6 +10,7 @@
 #include <clocale>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <numbers>
 #include <numeric>
@@ -32,13 +33,17 @@ constexpr double kTetsPerCubedSize = 6.0;
 // ---------------------------------------------------------------------------------------------
 // Gmsh session and error translation
 
-std::mutex gmsh_mutex;  // Gmsh is one global state per process and not thread-safe
+// Gmsh is one global state per process and not thread-safe.
+std::mutex& gmsh_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
 
 // One Gmsh session: takes the lock, initializes Gmsh without argv or configuration files, and
 // finalizes it again. gmsh::initialize sets LC_NUMERIC to "C" for good; the caller's is restored.
 class GmshSession {
  public:
-  GmshSession() : lock_(gmsh_mutex), numeric_locale_(current_numeric_locale()) {
+  GmshSession() : lock_(gmsh_mutex()), numeric_locale_(current_numeric_locale()) {
     gmsh::initialize(0, nullptr, false);
     try {
       gmsh::option::setNumber("General.Terminal", 0);  // errors still arrive as exceptions
@@ -324,18 +329,36 @@ double validated_volume(const PrimitiveSpec& s) {
       require_positive(kind, "length", s.length);
       if (!(s.inner_radius < s.radius))
         throw MeshError(
-            fmt::format("mesh_primitive(pipe): inner_radius ({}) must be smaller than "
-                        "radius ({})",
+            fmt::format("mesh_primitive(pipe): inner_radius ({}) must be less than radius ({})",
                         s.inner_radius, s.radius));
       return pi * (s.radius * s.radius - s.inner_radius * s.inner_radius) * s.length;
   }
   return 0;  // unreachable: kind_name threw
 }
 
+// The smallest radius of curvature of the shape's faces (none for a box). Gmsh cannot mesh a curved
+// face with elements wider than its radius: it gives junk, fails or, on a long thin cylinder,
+// loops for ever in the 2D mesher (Gmsh 4.8: radius 0.01, length 3, mesh_size 1).
+std::pair<const char*, double> smallest_radius(const PrimitiveSpec& s) {
+  switch (s.kind) {
+    case PrimitiveKind::sphere:
+    case PrimitiveKind::cylinder:
+      return {"radius", s.radius};
+    case PrimitiveKind::pipe:
+      return {"inner_radius", s.inner_radius};
+    case PrimitiveKind::box:
+      break;
+  }
+  return {nullptr, 0.0};
+}
+
 void validate_spec(const PrimitiveSpec& s) {
   const double volume = validated_volume(s);
   const char* kind = kind_name(s.kind);
   require_positive(kind, "mesh_size", s.mesh_size);
+  if (const auto [field, radius] = smallest_radius(s); field && s.mesh_size > radius)
+    throw MeshError(fmt::format("mesh_primitive({}): mesh_size ({}) must not exceed {} ({})", kind,
+                                s.mesh_size, field, radius));
   const double estimate = kTetsPerCubedSize * volume / std::pow(s.mesh_size, 3);
   if (estimate > kMaxEstimatedTets)
     throw MeshError(
@@ -426,17 +449,18 @@ void check_msh_file(const fs::path& path, const std::string& where) {
 class PrivateLink {
  public:
   PrivateLink(const fs::path& target, const std::string& where) {
-    std::string pattern = (fs::temp_directory_path() / "ccm-msh-XXXXXX").string();
-    if (!mkdtemp(pattern.data()))
+    std::error_code ec;
+    std::string pattern = (fs::temp_directory_path(ec) / "ccm-msh-XXXXXX").string();
+    if (ec || !mkdtemp(pattern.data()))
       throw MeshError(fmt::format("{}: cannot create a temporary directory", where));
     dir_ = pattern;
     link_ = dir_ / "mesh.msh";
-    std::error_code ec;
-    fs::create_symlink(fs::absolute(target), link_, ec);
+    const fs::path absolute = fs::absolute(target, ec);
+    if (!ec) fs::create_symlink(absolute, link_, ec);
     if (ec) {
+      const std::string why = ec.message();
       fs::remove_all(dir_, ec);
-      throw MeshError(
-          fmt::format("{}: cannot link into {}: {}", where, dir_.string(), ec.message()));
+      throw MeshError(fmt::format("{}: cannot link into {}: {}", where, dir_.string(), why));
     }
   }
   ~PrivateLink() {

@@ -1,8 +1,9 @@
 // Linear-tetrahedron meshes from Gmsh: meshed primitives (OpenCASCADE kernel) and .msh files.
 //
 // Every call initializes Gmsh, does its work and finalizes it again, under a process-wide mutex
-// (Gmsh is a global singleton and not thread-safe). Gmsh never sees argv or the user's
-// configuration files, and prints nothing: all problems surface as MeshError.
+// (Gmsh is a global singleton and not thread-safe: nothing else may use Gmsh meanwhile). Gmsh
+// never sees argv or the user's configuration files, and prints nothing: all problems surface as
+// MeshError.
 #pragma once
 
 #include <filesystem>
@@ -40,15 +41,18 @@ struct PrimitiveSpec {
 // Meshes the primitive with 3D Delaunay (deterministic: the same spec gives the same mesh) and
 // places it. Nodes are numbered 0..n-1 in Gmsh tag order and all belong to some tet; tets have
 // positive volume, ordered by Gmsh tag. named_surfaces stays empty. Throws MeshError when a field
-// is out of range (the message names the field), when mesh_size would give more than about
-// 5e6 tets, or when Gmsh fails.
+// is out of range (the message names the field), when mesh_size exceeds the radius of a curved
+// face (radius; inner_radius for a pipe) or would give more than about 5e6 tets, or when Gmsh
+// fails.
 TetMesh mesh_primitive(const PrimitiveSpec& spec, const Placement& placement);
 
 // Reads the linear tets (element type 4) of a Gmsh MSH file (format 2 or 4, ASCII or binary),
 // with the same numbering and orientation guarantees as mesh_primitive. Every named physical group
 // of dimension 2 becomes a named surface of triangles oriented out of the tet each one bounds.
-// Throws MeshError, naming the path, if the file is missing, unreadable, not an MSH file, holds
-// no linear tets, or has a named triangle that is not a face of any tet.
+// Throws MeshError, naming the path, if the file is missing, unreadable, does not start with
+// "$MeshFormat", holds no linear tets, or has a named triangle that is not a face of any tet.
+// Never executes scripts: not the file (Gmsh would parse a non-MSH file as a .geo script) nor a
+// "<path>.opt" beside it (which Gmsh would otherwise run).
 TetMesh read_msh_file(const std::filesystem::path& path);
 
 }  // namespace ccm

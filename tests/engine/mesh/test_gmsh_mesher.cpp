@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -26,6 +27,7 @@ using ccm::Vec3;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double tet_volume(const TetMesh& m, const ccm::Tet& t) {
   const auto& x = m.nodes;
@@ -37,7 +39,7 @@ double checked_volume(const TetMesh& m) {
   REQUIRE(m.n_elements() > 0);
   std::vector<char> used(m.nodes.size(), 0);
   double volume = 0;
-  double smallest = INFINITY;
+  double smallest = kInf;
   for (const auto& t : m.tets) {
     for (int n : t) {
       REQUIRE(n >= 0);
@@ -111,6 +113,17 @@ struct TempDir {
   }
 };
 
+// Direct use of Gmsh, outside ccm's own (locked) sessions: fine in a single-threaded test.
+struct GmshScope {
+  GmshScope() {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+  }
+  ~GmshScope() { gmsh::finalize(); }
+  GmshScope(const GmshScope&) = delete;
+  GmshScope& operator=(const GmshScope&) = delete;
+};
+
 Vec3 normal_of(const TetMesh& m, const ccm::Triangle& t) {
   const auto& x = m.nodes;
   return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]) / 2.0;  // area-weighted
@@ -138,7 +151,7 @@ TEST_CASE("mesh_primitive: volumes match the analytic ones", "[mesh][gmsh]") {
     // Here the faceting errors of the two walls largely cancel; check the walls themselves too.
     const TetMesh m = ccm::mesh_primitive(pipe(1.0, 0.6, 0.5, 0.15), {});
     CHECK(checked_volume(m) == Approx(kPi * (1.0 - 0.36) * 0.5).epsilon(0.03));
-    double r_min = INFINITY, r_max = 0;
+    double r_min = kInf, r_max = 0;
     for (const Vec3& x : m.nodes) {
       r_min = std::min(r_min, std::hypot(x.x(), x.y()));
       r_max = std::max(r_max, std::hypot(x.x(), x.y()));
@@ -195,11 +208,17 @@ TEST_CASE("mesh_primitive: deterministic", "[mesh][gmsh]") {
 TEST_CASE("mesh_primitive: invalid specs name the field", "[mesh][gmsh]") {
   CHECK_THROWS_WITH(ccm::mesh_primitive(sphere(-1.0, 0.1), {}), Contains("radius"));
   CHECK_THROWS_WITH(ccm::mesh_primitive(sphere(1.0, 0.0), {}), Contains("mesh_size"));
-  CHECK_THROWS_WITH(ccm::mesh_primitive(sphere(1.0, NAN), {}), Contains("mesh_size"));
+  CHECK_THROWS_WITH(ccm::mesh_primitive(sphere(1.0, std::numeric_limits<double>::quiet_NaN()), {}),
+                    Contains("mesh_size"));
   CHECK_THROWS_WITH(ccm::mesh_primitive(box({1.0, 0.0, 1.0}, 0.1), {}), Contains("size.y"));
   CHECK_THROWS_WITH(ccm::mesh_primitive(cylinder(1.0, -2.0, 0.1), {}), Contains("length"));
   CHECK_THROWS_WITH(ccm::mesh_primitive(pipe(1.0, 1.0, 1.0, 0.1), {}), Contains("inner_radius"));
   CHECK_THROWS_WITH(ccm::mesh_primitive(pipe(1.0, 0.0, 1.0, 0.1), {}), Contains("inner_radius"));
+  // Elements wider than a curved face's radius: junk, errors or a Gmsh hang.
+  CHECK_THROWS_WITH(ccm::mesh_primitive(sphere(1.0, 1.5), {}),
+                    Contains("mesh_size") && Contains("radius"));
+  CHECK_THROWS_WITH(ccm::mesh_primitive(cylinder(0.01, 3.0, 1.0), {}), Contains("mesh_size"));
+  CHECK_THROWS_WITH(ccm::mesh_primitive(pipe(1.0, 0.2, 1.0, 0.3), {}), Contains("inner_radius"));
   // 1 m^3 at 1 mm would be billions of tets: refused before Gmsh starts.
   CHECK_THROWS_WITH(ccm::mesh_primitive(box({1.0, 1.0, 1.0}, 1e-3), {}), Contains("mesh_size"));
   Placement p;
@@ -255,27 +274,27 @@ TEST_CASE("read_msh_file: compact numbering, orientation, named surfaces", "[mes
 TEST_CASE("read_msh_file: round trip through gmsh::write", "[mesh][gmsh]") {
   const TempDir dir;
   const fs::path file = dir.path / "cube.msh";
-  gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
-  const int cube = gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
-  gmsh::model::occ::synchronize();
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.3);
-  gmsh::model::addPhysicalGroup(3, {cube}, 1);  // with groups, only grouped elements are saved
-  gmsh::vectorpair faces;
-  gmsh::model::getBoundary({{3, cube}}, faces, false, false);
-  for (const auto& [dim, face] : faces) {
-    double x, y, z;
-    gmsh::model::occ::getCenterOfMass(dim, face, x, y, z);
-    if (std::abs(z) < 1e-9)
-      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {face}), "bottom");
-    if (std::abs(z - 1) < 1e-9)
-      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {face}), "top");
-  }
-  gmsh::model::mesh::generate(3);
   std::vector<std::size_t> tet_tags, tet_nodes;
-  gmsh::model::mesh::getElementsByType(4, tet_tags, tet_nodes);
-  gmsh::write(file.string());
-  gmsh::finalize();
+  {
+    const GmshScope gmsh_scope;
+    const int cube = gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
+    gmsh::model::occ::synchronize();
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.3);
+    gmsh::model::addPhysicalGroup(3, {cube}, 1);  // with groups, only grouped elements are saved
+    gmsh::vectorpair faces;
+    gmsh::model::getBoundary({{3, cube}}, faces, false, false);
+    for (const auto& [dim, face] : faces) {
+      double x, y, z;
+      gmsh::model::occ::getCenterOfMass(dim, face, x, y, z);
+      if (std::abs(z) < 1e-9)
+        gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {face}), "bottom");
+      if (std::abs(z - 1) < 1e-9)
+        gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {face}), "top");
+    }
+    gmsh::model::mesh::generate(3);
+    gmsh::model::mesh::getElementsByType(4, tet_tags, tet_nodes);
+    gmsh::write(file.string());
+  }
 
   const TetMesh m = ccm::read_msh_file(file);
   CHECK(m.tets.size() == tet_tags.size());

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The README's test command: installs dependencies, builds ccm twice (optimised, and with
+# AddressSanitizer + UndefinedBehaviorSanitizer) and runs the unit test suite in both.
+# Validation tests (label `validation`) are slower and run with scripts/validate.sh.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh
+jobs=$(nproc)
+
+echo "== optimised build (build/)"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$jobs"
+ctest --test-dir build -L unit --output-on-failure -j "$jobs"
+
+echo "== sanitizer build (build-asan/: AddressSanitizer + UBSan)"
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCCM_SANITIZE=ON \
+  -DCCM_BUILD_BENCH=OFF >/dev/null
+cmake --build build-asan -j "$jobs"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  LSAN_OPTIONS=suppressions="$(pwd)/tests/lsan.supp" \
+  ctest --test-dir build-asan -L unit --output-on-failure -j "$jobs"
