@@ -1,6 +1,10 @@
-// The hook through which a contact model acts on an explicit step (thesis 2.5.2): after the
-// internal forces are evaluated and before the velocity is corrected. A scene without contact
-// passes no model at all and pays nothing.
+// The hook through which a contact model acts on an explicit step (thesis 2.5.2). A scene
+// without contact passes no model at all and pays nothing: no search, no surface data.
+//
+// Order within a step (engine/solver/explicit_integrator.hpp):
+//   begin_step (x_n, v_n known)  ->  predict  ->  add_forces (into f, before a = M^-1 f)
+//   ->  accelerations  ->  correct (x_{n+1}, v*)  ->  boundary conditions  ->  v correction
+//   ->  end_step.
 #pragma once
 
 #include <limits>
@@ -14,14 +18,21 @@ class ContactModel {
  public:
   virtual ~ContactModel() = default;
   virtual std::string_view name() const = 0;
-  // Corrects positions x and the predicted velocities v (and may add to a) of the step of
-  // size dt that has just been predicted and evaluated.
-  virtual void correct(State& state, double dt) = 0;
+
+  // Called with the state at t_n before the predictor of a step of size dt.
+  virtual void begin_step(const State& /*state*/, double /*dt*/) {}
+  // Penalty-type models add their forces on the nodes into state.f (at x_{n+1}).
+  virtual void add_forces(State& /*state*/) {}
+  // Constraint-type models correct x_{n+1} and the predicted velocities v* (thesis 2.5.2).
+  virtual void correct(State& /*state*/, double /*dt*/) {}
+  // Called after the velocity correction; v holds v_{n+1}.
+  virtual void end_step(const State& /*state*/, double /*dt*/) {}
+
   // The largest step the contact model allows from this state.
   virtual double stable_dt_limit(const State& /*state*/) const {
     return std::numeric_limits<double>::infinity();
   }
-  // Work the contact model has done on the bodies so far, for the energy balance.
+  // Work done on the deformable bodies by the contact so far [J], for the energy balance.
   virtual double work() const { return 0.0; }
 };
 

@@ -15,7 +15,7 @@ enum class WithEnergy { no, yes };
 // Per-lane results of one pack, reduced and scattered after the vector code.
 struct PackResult {
   double f[4][3][kLanes];  // f[a][i]: component i of the force on local node a
-  double h2[kLanes];    // squared characteristic length of the current tet
+  double h2[kLanes];    // squared characteristic length, scaled to the reference wave speed
   double J[kLanes];
   double W[kLanes];  // V0 * strain energy density (only WithEnergy::yes)
 };
@@ -69,7 +69,7 @@ void pack_kernel(const ElementPack& p, const double* x, const Lame& lame, PackRe
     const Lanes s = n[0][k] + n[1][k] + n[2][k];
     sum_n2 += n[0][k] * n[0][k] + n[1][k] * n[1][k] + n[2][k] * n[2][k] + s * s;
   }
-  store(out.h2, det * det / sum_n2);  // h_e^2 = det(Ds)^2 / sum_f |n_f|^2   (tet4.hpp)
+  const Lanes h2 = det * det / sum_n2;  // h_e^2 = det(Ds)^2 / sum_f |n_f|^2   (tet4.hpp)
 
   Lanes Dm[9];
   for (int k = 0; k < 9; ++k) Dm[k] = load(p.Dm_inv[k]);
@@ -102,6 +102,13 @@ void pack_kernel(const ElementPack& p, const double* x, const Lame& lame, PackRe
       }
     if constexpr (Energy == WithEnergy::yes)  // W = lambda/2 ln^2 J - mu ln J + mu/2 (tr C - 3)
       W = 0.5 * lambda * log_J * log_J - mu * log_J + 0.5 * mu * (trC - 3.0);
+    // Stiffening under compression: the wave speed uses the tangent modulus of the current
+    // state, M = lambda (1 + 2 |ln J|) + mu (2 + max(tr C - 3, 0)) (docs/time-step.md), so
+    // h_e^2 is scaled by (lambda + 2 mu) / M before it is divided by c_d^2 of the block.
+    const Lanes abs_log_J = log_J < 0.0 ? -log_J : log_J;
+    const Lanes stretch = trC > 3.0 ? trC - 3.0 : broadcast(0.0);
+    const Lanes M = lambda * (1.0 + 2.0 * abs_log_J) + mu * (2.0 + stretch);
+    store(out.h2, h2 * (lambda + 2.0 * mu) / M);
   } else {
     // sigma = lambda tr(eps) I + 2 mu eps, eps = sym(F - I)   (eq. 2.1; linear_elastic.hpp)
     const Lanes tr = F[0][0] + F[1][1] + F[2][2] - 3.0;
@@ -113,6 +120,7 @@ void pack_kernel(const ElementPack& p, const double* x, const Lame& lame, PackRe
         eps_sq += eps * eps;
       }
     if constexpr (Energy == WithEnergy::yes) W = 0.5 * lambda * tr * tr + mu * eps_sq;
+    store(out.h2, h2);  // small strain: the reference moduli
   }
   const Lanes V0 = load(p.V0);
   if constexpr (Energy == WithEnergy::yes) store(out.W, V0 * W);

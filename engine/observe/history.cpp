@@ -23,6 +23,12 @@ HistoryRecorder::HistoryRecorder(const ModelMesh& mesh, OutputRequest request)
     for (const char* q : {"ux", "uy", "uz", "vx", "vy", "vz"}) columns_.push_back(t.name + "." + q);
 }
 
+void HistoryRecorder::add_source(const HistorySource& source) {
+  if (!rows_.empty()) throw std::logic_error("HistoryRecorder::add_source after the first sample");
+  sources_.push_back(&source);
+  for (std::string& c : source.history_columns()) columns_.push_back(std::move(c));
+}
+
 double kinetic_energy(const State& s, int first, int count) {
   double ke = 0.0;
   for (int n = first; n < first + count; ++n) {
@@ -59,6 +65,7 @@ void HistoryRecorder::sample(const State& s, std::span<const double> body_intern
     const Vec3 u = s.x[i] - s.X[i];
     row.insert(row.end(), {u.x(), u.y(), u.z(), s.v[i].x(), s.v[i].y(), s.v[i].z()});
   }
+  for (const HistorySource* source : sources_) source->append_history(s, row);
   rows_.push_back(std::move(row));
 }
 

@@ -23,9 +23,22 @@ struct OutputRequest {
   std::vector<TrackedNode> tracked;  // u and v of single nodes [m, m/s]
 };
 
+// Anything else that contributes columns to the history (e.g. a contact model's force and
+// pressure, a rigid impactor's state). Sampled after the engine's own columns, in the order
+// the sources were added.
+class HistorySource {
+ public:
+  virtual ~HistorySource() = default;
+  virtual std::vector<std::string> history_columns() const = 0;
+  virtual void append_history(const State& s, std::vector<double>& row) const = 0;
+};
+
 class HistoryRecorder {
  public:
   HistoryRecorder(const ModelMesh& mesh, OutputRequest request);
+
+  // Adds the source's columns; must be called before the first sample. Not owned.
+  void add_source(const HistorySource& source);
 
   bool needs_internal_energy() const { return request_.internal_energy; }
   const std::vector<std::string>& columns() const { return columns_; }
@@ -40,6 +53,7 @@ class HistoryRecorder {
 
   const ModelMesh& mesh_;
   OutputRequest request_;
+  std::vector<const HistorySource*> sources_;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
 };

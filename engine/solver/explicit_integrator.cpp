@@ -125,6 +125,7 @@ void CentralDifference::evaluate(bool with_energy) {
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
   last_eval_ = add_internal_forces(model_.elements, s_.x, s_.f,
                                    with_energy ? std::span<double>(body_energy_) : std::span<double>());
+  if (opt_.contact) opt_.contact->add_forces(s_);
   const Vec3 g = model_.bcs.gravity;
   for (size_t i = 0; i < s_.a.size(); ++i) s_.a[i] = s_.inv_m[i] * s_.f[i] + g;
 }
@@ -216,6 +217,7 @@ RunSummary CentralDifference::run() {
       break;
     }
     load_work_.before_step(s_);
+    if (opt_.contact) opt_.contact->begin_step(s_, dt);
     predict(dt);  // 1
     s_.t = t_n + dt;
     const bool sample_now = output_step || output_due();
@@ -228,6 +230,7 @@ RunSummary CentralDifference::run() {
     if (opt_.contact) opt_.contact->correct(s_, dt);  // 3
     apply_fixed_nodes();                              // 4
     correct(dt);                                      // 5
+    if (opt_.contact) opt_.contact->end_step(s_, dt);
     last_dt_ = dt;
     load_work_.after_step(s_, t_n, s_.t);
     ++summary_.steps;

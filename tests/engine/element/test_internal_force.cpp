@@ -76,3 +76,25 @@ TEST_CASE("Kernel reports an inverted element instead of producing non-finite fo
   CHECK(r.bad_J <= 0.0);
   for (const Vec3& fi : f) CHECK(fi.allFinite());
 }
+
+TEST_CASE("The stable step follows the current shape and the stiffening under compression",
+          "[kernel]") {
+  ModelMesh mesh;
+  const MaterialParams mat{MaterialModel::neo_hookean, 1e6, 0.49, 1000.0};
+  add_body(mesh, "a", mat, structured_box(Vec3(0.1, 0.1, 0.1), 1, 1, 1));
+  const ElementSet es = make_element_set(mesh);
+  const double dt_ref = reference_stable_dt(es, mesh.X);
+  const Lame l = lame_from(mat);
+  for (double s : {1.0, 0.9, 0.8, 1.2}) {  // uniform scaling x = s X
+    std::vector<Vec3> x(mesh.X.size());
+    for (size_t i = 0; i < x.size(); ++i) x[i] = s * mesh.X[i];
+    std::vector<Vec3> f(x.size(), Vec3::Zero());
+    const double dt = add_internal_forces(es, x, f).stable_dt;
+    // h scales with s; the modulus is M = lambda (1 + 2 |ln J|) + mu (2 + max(tr C - 3, 0)).
+    const double J = s * s * s, trC = 3 * s * s;
+    const double M = l.lambda * (1 + 2 * std::abs(std::log(J))) + l.mu * (2 + std::max(trC - 3, 0.0));
+    const double expected = s * dt_ref * std::sqrt((l.lambda + 2 * l.mu) / M);
+    INFO("s = " << s << ": dt = " << dt << ", expected " << expected);
+    CHECK(test::relative_error(dt, expected) < 1e-12);
+  }
+}
