@@ -84,8 +84,9 @@ int main(int argc, char** argv) {
   run.time.output_interval = 0.0;
   const RunSummary s = run_explicit(model, run);
 
-  std::printf("internal-force kernel (F, P, f_int, stable dt): %.1f ns per element-step\n", kernel_ns);
-  std::printf("whole explicit step (%ld steps, verdict %s):      %.1f ns per element-step\n", s.steps,
-              std::string(to_string(s.verdict)).c_str(), s.ns_per_element_step);
+  std::printf("internal-force kernel (F, P, f_int, stable dt): %.1f ns per element-step\n",
+              kernel_ns);
+  std::printf("whole explicit step (%ld steps, verdict %s):      %.1f ns per element-step\n",
+              s.steps, std::string(to_string(s.verdict)).c_str(), s.ns_per_element_step);
   return s.verdict == Verdict::completed ? 0 : 1;
 }

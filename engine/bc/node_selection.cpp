@@ -49,7 +49,8 @@ std::vector<Triangle> boundary_on_plane(const ModelMesh& mesh, int body, const V
   const Vec3 n = normal.normalized();
   for (const Triangle& t : mesh.bodies[static_cast<size_t>(body)].boundary) {
     bool on = true;
-    for (int v : t) on = on && plane_distance(mesh.X[static_cast<size_t>(v)], point, n) <= tolerance;
+    for (int v : t)
+      on = on && plane_distance(mesh.X[static_cast<size_t>(v)], point, n) <= tolerance;
     if (on) out.push_back(t);
   }
   return out;

@@ -1,10 +1,10 @@
 #include "engine/core/time_table.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace ccm {
 

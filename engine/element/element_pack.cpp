@@ -3,8 +3,8 @@
 namespace ccm {
 
 std::vector<ElementPack> make_element_packs(const std::vector<Tet>& tets,
-                                            const std::vector<TetReference>& reference,
-                                            int first, int count) {
+                                            const std::vector<TetReference>& reference, int first,
+                                            int count) {
   std::vector<ElementPack> packs(static_cast<size_t>((count + kLanes - 1) / kLanes));
   for (int i = 0; i < static_cast<int>(packs.size()) * kLanes; ++i) {
     ElementPack& p = packs[static_cast<size_t>(i / kLanes)];

@@ -24,7 +24,7 @@ struct alignas(64) ElementPack {
 // Packs elements [first, first + count); the last pack is padded by repeating the last element
 // with zero volume weight.
 std::vector<ElementPack> make_element_packs(const std::vector<Tet>& tets,
-                                            const std::vector<TetReference>& reference,
-                                            int first, int count);
+                                            const std::vector<TetReference>& reference, int first,
+                                            int count);
 
 }  // namespace ccm

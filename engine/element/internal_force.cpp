@@ -1,11 +1,12 @@
 #include "engine/element/internal_force.hpp"
-#include "engine/element/lanes.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
 
-#include <fmt/format.h>
+#include "engine/element/lanes.hpp"
 
 namespace ccm {
 namespace {
@@ -15,7 +16,7 @@ enum class WithEnergy { no, yes };
 // Per-lane results of one pack, reduced and scattered after the vector code.
 struct PackResult {
   double f[4][3][kLanes];  // f[a][i]: component i of the force on local node a
-  double h2[kLanes];    // squared characteristic length, scaled to the reference wave speed
+  double h2[kLanes];       // squared characteristic length, scaled to the reference wave speed
   double J[kLanes];
   double W[kLanes];  // V0 * strain energy density (only WithEnergy::yes)
 };
@@ -75,7 +76,8 @@ void pack_kernel(const ElementPack& p, const double* x, const Lame& lame, PackRe
   for (int k = 0; k < 9; ++k) Dm[k] = load(p.Dm_inv[k]);
   Lanes F[3][3];  // F(i, c) = sum_k Ds(i, k) Dm^-1(k, c)
   for (int i = 0; i < 3; ++i)
-    for (int c = 0; c < 3; ++c) F[i][c] = e[0][i] * Dm[c] + e[1][i] * Dm[3 + c] + e[2][i] * Dm[6 + c];
+    for (int c = 0; c < 3; ++c)
+      F[i][c] = e[0][i] * Dm[c] + e[1][i] * Dm[3 + c] + e[2][i] * Dm[6 + c];
   const Lanes J = det * load(p.inv_6V0);  // J = det F = V / V0
   store(out.J, J);
 
@@ -130,7 +132,8 @@ void pack_kernel(const ElementPack& p, const double* x, const Lame& lame, PackRe
   for (int i = 0; i < 3; ++i) {
     Lanes f0 = broadcast(0.0);
     for (int a = 0; a < 3; ++a) {
-      const Lanes h = -V0 * (P[i][0] * Dm[3 * a] + P[i][1] * Dm[3 * a + 1] + P[i][2] * Dm[3 * a + 2]);
+      const Lanes h =
+          -V0 * (P[i][0] * Dm[3 * a] + P[i][1] * Dm[3 * a + 1] + P[i][2] * Dm[3 * a + 2]);
       store(out.f[a + 1][i], h);
       f0 -= h;
     }
@@ -202,10 +205,10 @@ ElementSet make_element_set(const ModelMesh& mesh) {
     es.reference.push_back(*ref);
   }
   for (const Body& body : mesh.bodies) {
-    es.blocks.push_back({body.first_element, body.n_elements, body.material.model,
-                         lame_from(body.material), dilatational_wave_speed(body.material),
-                         make_element_packs(es.tets, es.reference, body.first_element,
-                                            body.n_elements)});
+    es.blocks.push_back(
+        {body.first_element, body.n_elements, body.material.model, lame_from(body.material),
+         dilatational_wave_speed(body.material),
+         make_element_packs(es.tets, es.reference, body.first_element, body.n_elements)});
   }
   return es;
 }

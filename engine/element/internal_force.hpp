@@ -19,7 +19,7 @@ struct ElementBlock {
   int count = 0;
   MaterialModel model = MaterialModel::neo_hookean;
   Lame lame{};
-  double wave_speed = 0.0;  // dilatational c_d of the material
+  double wave_speed = 0.0;         // dilatational c_d of the material
   std::vector<ElementPack> packs;  // the block's elements as the kernel reads them
 };
 

@@ -1,8 +1,8 @@
 #include "engine/material/material.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace ccm {
 

@@ -19,7 +19,8 @@ struct MaterialParams {
   double rho = 0.0;  // reference density [kg/m^3]
 };
 
-// Empty when valid, else the first problem as "<field> ...": E > 0, -1 < nu < 0.5, rho > 0, all finite.
+// Empty when valid, else the first problem as "<field> ...": E > 0, -1 < nu < 0.5, rho > 0, all
+// finite.
 std::string validate(const MaterialParams& m);
 
 struct Lame {

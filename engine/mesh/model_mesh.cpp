@@ -36,8 +36,9 @@ void add_body(ModelMesh& mesh, const std::string& name, const MaterialParams& ma
   const int node_offset = mesh.n_nodes();
   const int body_id = static_cast<int>(mesh.bodies.size());
 
-  Body body{name, material, node_offset, geometry.n_nodes(), mesh.n_elements(),
-            geometry.n_elements(), {}};
+  Body body{
+      name, material, node_offset, geometry.n_nodes(), mesh.n_elements(), geometry.n_elements(),
+      {}};
   mesh.X.insert(mesh.X.end(), geometry.nodes.begin(), geometry.nodes.end());
   for (Tet t : geometry.tets) {
     for (int& n : t) n += node_offset;

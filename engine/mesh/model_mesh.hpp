@@ -27,8 +27,8 @@ struct NamedSurface {
 };
 
 struct ModelMesh {
-  std::vector<Vec3> X;           // reference positions
-  std::vector<Tet> tets;         // global node ids
+  std::vector<Vec3> X;            // reference positions
+  std::vector<Tet> tets;          // global node ids
   std::vector<int> element_body;  // body index per element
   std::vector<Body> bodies;
   std::map<std::string, std::vector<int>> node_sets;  // "<body>" and "<body>/<surface>"

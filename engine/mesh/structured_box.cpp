@@ -5,7 +5,8 @@
 namespace ccm {
 
 TetMesh structured_box(const Vec3& size, int nx, int ny, int nz) {
-  if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("structured_box: cell counts must be >= 1");
+  if (nx < 1 || ny < 1 || nz < 1)
+    throw std::invalid_argument("structured_box: cell counts must be >= 1");
   TetMesh mesh;
   auto id = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
   for (int k = 0; k <= nz; ++k)
@@ -20,8 +21,11 @@ TetMesh structured_box(const Vec3& size, int nx, int ny, int nz) {
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
-        auto corner = [&](int c) { return id(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)); };
-        for (const auto& p : kPaths) mesh.tets.push_back({corner(p[0]), corner(p[1]), corner(p[2]), corner(p[3])});
+        auto corner = [&](int c) {
+          return id(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+        };
+        for (const auto& p : kPaths)
+          mesh.tets.push_back({corner(p[0]), corner(p[1]), corner(p[2]), corner(p[3])});
       }
   return mesh;
 }

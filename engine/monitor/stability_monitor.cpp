@@ -1,15 +1,15 @@
 #include "engine/monitor/stability_monitor.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
-#include <fmt/format.h>
-
 namespace ccm {
 
-void EnergyBalance::start(double kinetic, double internal) {
+void EnergyBalance::start(double kinetic, double internal, double floor) {
   initial_ = kinetic + internal;
-  scale_ = std::abs(initial_);
+  scale_ = std::max(std::abs(initial_), floor);
 }
 
 double EnergyBalance::update(double kinetic, double internal, double external_work) {
@@ -41,8 +41,8 @@ std::optional<Instability> check_finite(const State& s) {
   for (int n = 0; n < s.n_nodes(); ++n) {
     const auto i = static_cast<size_t>(n);
     if (!s.x[i].allFinite() || !s.v[i].allFinite() || !s.a[i].allFinite())
-      return Instability{s.t, fmt::format("non-finite position, velocity or acceleration at node {}", n),
-                         -1, n};
+      return Instability{
+          s.t, fmt::format("non-finite position, velocity or acceleration at node {}", n), -1, n};
   }
   return std::nullopt;
 }
@@ -57,10 +57,9 @@ std::optional<Instability> check_energy(double relative_error, double tolerance,
 
 std::optional<Instability> check_time_step(double dt, double dt_initial, double ratio, double t) {
   if (std::isfinite(dt) && dt >= ratio * dt_initial) return std::nullopt;
-  return Instability{t,
-                     fmt::format("stable time step collapsed to {:.3g} s (initial {:.3g} s)", dt,
-                                 dt_initial),
-                     -1, -1};
+  return Instability{
+      t, fmt::format("stable time step collapsed to {:.3g} s (initial {:.3g} s)", dt, dt_initial),
+      -1, -1};
 }
 
 }  // namespace ccm

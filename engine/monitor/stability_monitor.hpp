@@ -11,8 +11,8 @@
 namespace ccm {
 
 struct MonitorSettings {
-  double energy_tolerance = 0.05;  // |energy balance error| / energy scale that ends a run
-  int check_interval = 50;         // steps between energy and finiteness checks
+  double energy_tolerance = 0.05;   // |energy balance error| / energy scale that ends a run
+  int check_interval = 50;          // steps between energy and finiteness checks
   double dt_collapse_ratio = 1e-4;  // dt below this fraction of the initial dt ends a run
 };
 
@@ -27,7 +27,9 @@ struct Instability {
 // energy seen in the run so that a body at rest that is then loaded is judged fairly.
 class EnergyBalance {
  public:
-  void start(double kinetic, double internal);
+  // floor: the smallest energy scale the error is measured against [J], so that round-off on a
+  // body at rest is not read as an instability (the integrator passes 1e-12 M c_d,max^2).
+  void start(double kinetic, double internal, double floor);
   // Returns the relative error after this update.
   double update(double kinetic, double internal, double external_work);
   double max_relative_error() const { return max_error_; }

@@ -1,10 +1,10 @@
 #include "engine/observe/history.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace ccm {
 
@@ -78,7 +78,8 @@ void write_history_csv(const std::filesystem::path& file, const HistoryRecorder&
     for (size_t c = 0; c < cols.size(); ++c) out << (c ? "," : "") << cols[c];
     out << '\n';
     for (const auto& row : history.rows()) {
-      for (size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << fmt::format("{:.17g}", row[c]);
+      for (size_t c = 0; c < row.size(); ++c)
+        out << (c ? "," : "") << fmt::format("{:.17g}", row[c]);
       out << '\n';
     }
     if (!out) throw std::runtime_error(fmt::format("{}: write failed", tmp.string()));

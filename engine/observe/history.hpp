@@ -17,9 +17,9 @@ struct TrackedNode {
 };
 
 struct OutputRequest {
-  bool kinetic_energy = false;   // per body: 1/2 sum m |v|^2 [J]
-  bool internal_energy = false;  // per body: sum V0 W [J]
-  bool displacement = false;     // per body: mean and max |u| over its nodes [m]
+  bool kinetic_energy = false;       // per body: 1/2 sum m |v|^2 [J]
+  bool internal_energy = false;      // per body: sum V0 W [J]
+  bool displacement = false;         // per body: mean and max |u| over its nodes [m]
   std::vector<TrackedNode> tracked;  // u and v of single nodes [m, m/s]
 };
 

@@ -47,7 +47,9 @@ class LoadWork {
 class CentralDifference {
  public:
   CentralDifference(const Model& model, const RunOptions& options)
-      : model_(model), opt_(options), load_work_(model.bcs),
+      : model_(model),
+        opt_(options),
+        load_work_(model.bcs),
         body_energy_(model.mesh.bodies.size(), 0.0) {}
 
   RunSummary run();
@@ -60,6 +62,7 @@ class CentralDifference {
   void apply_fixed_nodes();
   void correct(double dt);
   double gravity_work() const;
+  double energy_floor() const;
   double total_internal_energy() const;
   bool output_due() const;
   void sample();
@@ -94,7 +97,7 @@ void CentralDifference::initialise() {
   apply_fixed_nodes();
   summary_.dt_initial = opt_.time.dt_safety * last_eval_.stable_dt;
   last_dt_ = summary_.dt_initial;
-  energy_.start(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy());
+  energy_.start(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), energy_floor());
   summary_.n_nodes = mesh.n_nodes();
   summary_.n_elements = mesh.n_elements();
 }
@@ -123,8 +126,9 @@ void CentralDifference::predict(double dt) {
 void CentralDifference::evaluate(bool with_energy) {
   std::fill(s_.f.begin(), s_.f.end(), Vec3::Zero());
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
-  last_eval_ = add_internal_forces(model_.elements, s_.x, s_.f,
-                                   with_energy ? std::span<double>(body_energy_) : std::span<double>());
+  last_eval_ =
+      add_internal_forces(model_.elements, s_.x, s_.f,
+                          with_energy ? std::span<double>(body_energy_) : std::span<double>());
   if (opt_.contact) opt_.contact->add_forces(s_);
   const Vec3 g = model_.bcs.gravity;
   for (size_t i = 0; i < s_.a.size(); ++i) s_.a[i] = s_.inv_m[i] * s_.f[i] + g;
@@ -154,6 +158,15 @@ double CentralDifference::gravity_work() const {
   return w;
 }
 
+// 1e-12 of the energy the model would carry with every node moving at the fastest wave speed:
+// far below any physical energy of a run, far above the round-off of a body at rest.
+double CentralDifference::energy_floor() const {
+  double c_max = 0.0, mass = 0.0;
+  for (const ElementBlock& b : model_.elements.blocks) c_max = std::max(c_max, b.wave_speed);
+  for (double m : s_.m_lumped) mass += m;
+  return 1e-12 * mass * c_max * c_max;
+}
+
 double CentralDifference::total_internal_energy() const {
   double e = 0.0;
   for (double b : body_energy_) e += b;
@@ -175,7 +188,8 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   if (auto bad = check_elements(last_eval_, s_.t)) return bad;
   if (!energy_check) return std::nullopt;
   if (auto bad = check_finite(s_)) return bad;
-  const double w_ext = load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->work() : 0.0);
+  const double w_ext =
+      load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->work() : 0.0);
   const double err =
       energy_.update(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
@@ -210,8 +224,8 @@ RunSummary CentralDifference::run() {
     const double dt = next_dt();
     const bool output_step = (s_.t + dt >= t_end * (1.0 - 1e-12));
     const double t_n = s_.t;
-    if (auto bad = check_time_step(opt_.time.dt_safety * last_eval_.stable_dt,
-                                   summary_.dt_initial, opt_.monitor.dt_collapse_ratio, s_.t)) {
+    if (auto bad = check_time_step(opt_.time.dt_safety * last_eval_.stable_dt, summary_.dt_initial,
+                                   opt_.monitor.dt_collapse_ratio, s_.t)) {
       summary_.verdict = Verdict::unstable;
       summary_.instability = *bad;
       break;

@@ -92,6 +92,7 @@ struct Prepared {
   Scene scene;
   Model model;
   OutputRequest output;
+  ContactSetup contact;
 };
 
 void check_out_dir(const fs::path& out) {
@@ -108,6 +109,7 @@ void prepare(const RunArgs& args, Prepared& p) {
   check_out_dir(args.out);
   p.model = build_model(p.scene);
   p.output = build_output_request(p.scene, p.model.mesh);
+  p.contact = build_contact(p.scene, p.model);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -161,6 +163,10 @@ void print_summary_table(const RunRecord& r) {
     fmt::print("  {:<15}  {}: {} nodes, {} elements\n", "", b.name, b.n_nodes, b.n_elements);
   fmt::print("  {:<15}{}\n", "nodes", s.n_nodes);
   fmt::print("  {:<15}{}\n", "elements", s.n_elements);
+  const ContactSetup& contact = r.prepared.contact;
+  fmt::print("  {:<15}{}\n", "contact", contact.model ? contact.description : "none");
+  if (contact.model)
+    fmt::print("  {:<15}{:.6g} J (work of the contact on the bodies)\n", "", contact.model->work());
   fmt::print("  {:<15}{:.6g} s of {:.6g} s\n", "sim time", s.end_time, r.prepared.scene.time.end);
   fmt::print("  {:<15}{}\n", "steps", s.steps);
   fmt::print("  {:<15}initial {:.4g} s, min {:.4g} s, max {:.4g} s\n", "dt", s.dt_initial, s.dt_min,
@@ -204,6 +210,11 @@ std::string summary_toml(const RunRecord& r) {
     t += fmt::format("\n[instability]\ntime = {}\nreason = {}\nelement = {}\nnode = {}\n",
                      toml_float(i.time), toml_string(i.reason), i.element, i.node);
   }
+  const ContactSetup& contact = r.prepared.contact;
+  t += fmt::format("\n[contact]\nmodel = {}\n", toml_string(contact.model_name));
+  if (contact.model)
+    t += fmt::format("description = {}\nwork = {}  # J, of the contact on the bodies\n",
+                     toml_string(contact.description), toml_float(contact.model->work()));
   for (const Body& b : mesh.bodies)
     t += fmt::format("\n[[bodies]]\nname = {}\nnodes = {}\nelements = {}\n", toml_string(b.name),
                      b.n_nodes, b.n_elements);
@@ -218,6 +229,8 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   options.time = time_control(p.scene.time);
   options.monitor = p.scene.monitor;
   options.history = &history;
+  options.contact = p.contact.model.get();
+  if (p.contact.history) history.add_source(*p.contact.history);
   ProgressLine progress;
   if (!args.quiet && isatty(STDERR_FILENO))
     options.progress = [&progress](const Progress& pr) { progress(pr); };

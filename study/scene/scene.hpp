@@ -129,6 +129,29 @@ struct OutputSpec {
   std::vector<TrackSpec> track;
 };
 
+// [contact] (docs/scene-file.md). "dcr" is reserved: parsed as "not yet available".
+enum class ContactKind { none, rigid_penalty };
+
+struct RigidSphereSpec {
+  std::string name = "sphere";   // history column prefix
+  double radius = 0.0;           // [m]
+  double mass = 0.0;             // [kg] (given, or density * 4/3 pi R^3)
+  Vec3 center = Vec3::Zero();    // [m]
+  Vec3 velocity = Vec3::Zero();  // [m/s]
+};
+
+struct ContactSpec {
+  ContactKind kind = ContactKind::none;
+  // rigid_penalty:
+  std::string body;                    // the deformable body
+  std::optional<std::string> surface;  // default "<body>/boundary"
+  double penalty = 1e6;                // K_P [N/m] per quadrature point (thesis 2.8)
+  std::optional<Vec3> force_axis;      // default: the sphere's initial velocity direction
+  RigidSphereSpec sphere;
+  SourceRef where;         // the [contact] table
+  SourceRef sphere_where;  // [contact.sphere]
+};
+
 struct Scene {
   std::filesystem::path source;  // the scene file, as given
   std::string title;
@@ -139,6 +162,7 @@ struct Scene {
   std::vector<FixedSpec> fixed;
   std::vector<SurfaceLoadSpec> surface_loads;
   OutputSpec output;
+  ContactSpec contact;
   std::vector<std::string> warnings;  // legal but suspicious settings, each "<file>:<line>: ..."
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/bc/node_selection.hpp"
+#include "engine/contact/rigid_sphere_penalty.hpp"
 #include "engine/core/time_table.hpp"
 
 namespace ccm {
@@ -178,6 +179,45 @@ OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh) {
     r.tracked.push_back({t.name, nearest_node(mesh, body, t.point)});
   }
   return r;
+}
+
+ContactSetup build_contact(const Scene& scene, const Model& model) {
+  const ContactSpec& c = scene.contact;
+  ContactSetup setup;
+  if (c.kind == ContactKind::none) return setup;
+  const ModelMesh& mesh = model.mesh;
+  const int body = body_index(scene, mesh, c.where, "body", c.body);
+  const std::string_view key = c.surface ? "surface" : "body";
+  const std::string name = qualified(c.body, c.surface.value_or("boundary"));
+  const auto it = mesh.surfaces.find(name);
+  if (it == mesh.surfaces.end())
+    fail(scene, c.where, key,
+         fmt::format("no surface named '{}' (surfaces: {})", name, known_names(mesh.surfaces)));
+  if (it->second.body != body)
+    fail(scene, c.where, key, fmt::format("surface '{}' is not on body '{}'", name, c.body));
+  if (it->second.triangles.empty()) fail(scene, c.where, key, "the surface has no triangle");
+
+  RigidSpherePenaltyParams p;
+  p.name = c.sphere.name;
+  p.sphere = {c.sphere.radius, c.sphere.mass, c.sphere.center, c.sphere.velocity};
+  p.penalty = c.penalty;
+  p.gravity = scene.gravity;
+  p.force_axis = c.force_axis;
+  p.structural_safety = scene.time.dt_safety;
+  std::unique_ptr<RigidSpherePenalty> penalty;
+  try {
+    penalty = std::make_unique<RigidSpherePenalty>(it->second.triangles, p);
+  } catch (const std::invalid_argument& e) {
+    fail(scene, c.where, "", e.what());
+  }
+  setup.model_name = "rigid_penalty";
+  setup.description = fmt::format(
+      "rigid_penalty: sphere '{}' (R {:.4g} m, {:.4g} kg) on '{}' ({} triangles), K_P {:.4g} N/m "
+      "per point",
+      p.name, p.sphere.radius, p.sphere.mass, name, it->second.triangles.size(), p.penalty);
+  setup.history = penalty.get();
+  setup.model = std::move(penalty);
+  return setup;
 }
 
 TimeControl time_control(const SceneTime& time) {

@@ -2,6 +2,10 @@
 // velocities, gravity), the output request and the time and monitor settings.
 #pragma once
 
+#include <memory>
+#include <string>
+
+#include "engine/contact/contact_model.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
 #include "engine/solver/model.hpp"
@@ -20,5 +24,17 @@ Model build_model(const Scene& scene);
 OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh);
 
 TimeControl time_control(const SceneTime& time);
+
+// The contact model a scene's [contact] table asks for; no model for "none" (or no table).
+struct ContactSetup {
+  std::unique_ptr<ContactModel> model;     // null: no contact
+  const HistorySource* history = nullptr;  // the model's history columns, if it has any
+  std::string model_name = "none";         // "none", "rigid_penalty"
+  std::string description;                 // one line for the run summary
+};
+
+// Throws SceneError naming the scene file, line and key for an unknown body, a surface that does
+// not exist or is not on that body, or an empty surface.
+ContactSetup build_contact(const Scene& scene, const Model& model);
 
 }  // namespace ccm

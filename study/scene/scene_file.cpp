@@ -9,6 +9,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <numbers>
 #include <span>
 #include <sstream>
 
@@ -554,14 +555,74 @@ void parse_output(const Table& root, Scene& scene) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The top level: one row per table or key. A new section (e.g. [contact]) is one more row.
+// [contact]
+
+// The history columns of the sphere are "<name>.<quantity>", like a body's or a tracked
+// point's: its name must not be one of theirs.
+void check_column_prefix(const Table& t, std::string_view key, const std::string& name,
+                         const Scene& scene) {
+  for (const BodySpec& b : scene.bodies)
+    if (b.name == name)
+      t.fail(key, fmt::format("'{}' is also the name of a body (their history columns would clash)",
+                              name));
+  for (const TrackSpec& tr : scene.output.track)
+    if (tr.name == name)
+      t.fail(key,
+             fmt::format(
+                 "'{}' is also the name of a tracked point (their history columns would clash)",
+                 name));
+}
+
+RigidSphereSpec parse_sphere(const Table& t, const Scene& scene) {
+  t.allow_only({"name", "radius", "mass", "density", "center", "velocity"});
+  RigidSphereSpec s;
+  if (t.has("name")) s.name = checked_name(t, "name");
+  check_column_prefix(t, t.has("name") ? "name" : "", s.name, scene);
+  s.radius = positive(t, "radius", t.need<double>("radius"));
+  if (one_of(t, {"mass", "density"}) == "mass") {
+    s.mass = positive(t, "mass", t.need<double>("mass"));
+  } else {
+    const double rho = positive(t, "density", t.need<double>("density"));
+    s.mass = rho * 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius;
+  }
+  s.center = t.need<Vec3>("center");
+  s.velocity = t.get_or<Vec3>("velocity", Vec3::Zero());
+  return s;
+}
+
+void parse_contact(const Table& root, Scene& scene) {
+  const auto t = root.table("contact");
+  if (!t) return;
+  const std::string model = t->need<std::string>("model");
+  if (model == "none") {
+    t->allow_only({"model"});
+    return;
+  }
+  if (model == "dcr") t->fail("model", "'dcr' is not yet available (use \"rigid_penalty\")");
+  if (model != "rigid_penalty")
+    t->fail("model", fmt::format("must be one of none, rigid_penalty, dcr (got '{}')", model));
+  t->allow_only({"model", "body", "surface", "penalty", "force_axis", "sphere"});
+  ContactSpec& c = scene.contact;
+  c.kind = ContactKind::rigid_penalty;
+  c.body = t->need<std::string>("body");
+  if (t->has("surface")) c.surface = t->need<std::string>("surface");
+  c.penalty = positive(*t, "penalty", t->get_or("penalty", c.penalty));
+  if (t->has("force_axis")) c.force_axis = non_zero(*t, "force_axis", t->need<Vec3>("force_axis"));
+  const Table sphere = t->need_table("sphere");
+  c.sphere = parse_sphere(sphere, scene);
+  c.where = t->ref();
+  c.sphere_where = sphere.ref();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The top level: one row per table or key. A new section is one more row.
 
 struct Section {
   std::string_view key;
   void (*parse)(const Table& root, Scene& scene);
 };
 
-const std::array<Section, 8> kSections = {{
+const std::array<Section, 9> kSections = {{
     {"title", parse_title},
     {"time", parse_time},
     {"monitor", parse_monitor},
@@ -570,6 +631,7 @@ const std::array<Section, 8> kSections = {{
     {"fixed", parse_fixed},
     {"surface_loads", parse_surface_loads},
     {"output", parse_output},
+    {"contact", parse_contact},  // after bodies and output: its names must not clash with theirs
 }};
 
 void check_top_level_keys(const toml::table& root, const Table& t) {

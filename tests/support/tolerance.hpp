@@ -1,10 +1,9 @@
 // One tolerance vocabulary for every test: relative error with an explicit floor.
 #pragma once
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/Core>
 
 namespace ccm::test {
 

@@ -1,7 +1,6 @@
 // The vectorized element kernel: its nodal forces are minus the gradient of the stored energy
 // it reports, for both material models, on a deformed multi-pack mesh (padding lanes included).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "engine/element/internal_force.hpp"
@@ -62,8 +61,7 @@ TEST_CASE("Kernel forces are minus the energy gradient (linear elastic)", "[kern
   check_forces_are_energy_gradient(MaterialModel::linear_elastic);
 }
 
-TEST_CASE("Kernel reports an inverted element instead of producing non-finite forces",
-          "[kernel]") {
+TEST_CASE("Kernel reports an inverted element instead of producing non-finite forces", "[kernel]") {
   ModelMesh mesh;
   add_body(mesh, "a", {MaterialModel::neo_hookean, 1e6, 0.3, 1000.0},
            structured_box(Vec3(0.1, 0.1, 0.1), 1, 1, 1));
@@ -92,7 +90,8 @@ TEST_CASE("The stable step follows the current shape and the stiffening under co
     const double dt = add_internal_forces(es, x, f).stable_dt;
     // h scales with s; the modulus is M = lambda (1 + 2 |ln J|) + mu (2 + max(tr C - 3, 0)).
     const double J = s * s * s, trC = 3 * s * s;
-    const double M = l.lambda * (1 + 2 * std::abs(std::log(J))) + l.mu * (2 + std::max(trC - 3, 0.0));
+    const double M =
+        l.lambda * (1 + 2 * std::abs(std::log(J))) + l.mu * (2 + std::max(trC - 3, 0.0));
     const double expected = s * dt_ref * std::sqrt((l.lambda + 2 * l.mu) / M);
     INFO("s = " << s << ": dt = " << dt << ", expected " << expected);
     CHECK(test::relative_error(dt, expected) < 1e-12);

@@ -1,9 +1,8 @@
 // Evidence 2: patch test on an unstructured Gmsh tet mesh. A linear displacement field gives the
 // same deformation gradient (hence stress) in every element and zero net internal force at every
 // interior node.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 
 #include "engine/element/internal_force.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"

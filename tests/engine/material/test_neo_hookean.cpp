@@ -1,7 +1,6 @@
 // Evidence 1: the Neo-Hookean stress is the derivative of its energy, vanishes at rest and
 // reduces to linear elasticity for small strain.
 #include <catch2/catch.hpp>
-
 #include <random>
 
 #include "engine/material/linear_elastic.hpp"
@@ -26,8 +25,9 @@ Mat3 finite_difference_P(const Mat3& F, const Lame& l, double h) {
       Mat3 Fp = F, Fm = F;
       Fp(i, j) += h;
       Fm(i, j) -= h;
-      P(i, j) = (neo_hookean::strain_energy_density(Fp, l) -
-                 neo_hookean::strain_energy_density(Fm, l)) / (2.0 * h);
+      P(i, j) =
+          (neo_hookean::strain_energy_density(Fp, l) - neo_hookean::strain_energy_density(Fm, l)) /
+          (2.0 * h);
     }
   return P;
 }
@@ -36,8 +36,7 @@ const Lame kLame = lame_from({MaterialModel::neo_hookean, 1.0e6, 0.3, 1000.0});
 
 }  // namespace
 
-TEST_CASE("Neo-Hookean P equals the finite difference of W at random F with J > 0",
-          "[material]") {
+TEST_CASE("Neo-Hookean P equals the finite difference of W at random F with J > 0", "[material]") {
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> perturb(-0.3, 0.3);
   int tested = 0;

@@ -1,7 +1,6 @@
 // Evidence 4: a free body with no external force conserves linear and angular momentum to
 // round-off over 10^4 steps, and a vibrating elastic body's total energy does not drift.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <numbers>
 
@@ -11,12 +10,14 @@
 using namespace ccm;
 
 TEST_CASE("Free body: linear and angular momentum conserved over 1e4 steps", "[conservation]") {
-  Model model = test::box_model(Vec3(0.1, 0.06, 0.04), 4, 3, 2, test::neo_hookean(1e5, 0.4, 1000.0));
+  Model model =
+      test::box_model(Vec3(0.1, 0.06, 0.04), 4, 3, 2, test::neo_hookean(1e5, 0.4, 1000.0));
   const Vec3 v0(0.3, -0.1, 0.2), omega(1.0, 2.0, -3.0);
   for (size_t i = 0; i < model.initial_velocity.size(); ++i) {
     const Vec3& X = model.mesh.X[i];
     // Translation + rotation + a deformation that keeps the body vibrating and spinning.
-    model.initial_velocity[i] = v0 + omega.cross(X) + Vec3(0.5 * X.y(), 0.0, -0.8 * X.x() * X.y() * 50);
+    model.initial_velocity[i] =
+        v0 + omega.cross(X) + Vec3(0.5 * X.y(), 0.0, -0.8 * X.x() * X.y() * 50);
   }
   Vec3 p0, L0, p1, L1;
   bool first = true;

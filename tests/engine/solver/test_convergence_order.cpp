@@ -1,7 +1,6 @@
 // Evidence 3: measured convergence order of the central-difference integrator on a one-tet
 // oscillator (three nodes fixed, one free) is 2: halving dt divides the error by 4.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "tests/support/models.hpp"

@@ -3,7 +3,6 @@
 // 1.3 % of the true central-difference limit 2 / omega_max (the bulk mode: omega^2 =
 // 4 (lambda + 2 mu / 3) sum|grad N|^2 / rho), so 1.1x must go unstable and 0.9x must not.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "tests/support/models.hpp"
@@ -70,10 +69,12 @@ TEST_CASE("A run at 1.1x the stable step ends unstable with a reason; 0.9x compl
 }
 
 TEST_CASE("On a mesh the estimate is conservative: 0.9x conserves energy", "[stability]") {
-  Model model = test::box_model(Vec3(0.2, 0.02, 0.02), 20, 2, 2, test::neo_hookean(1e6, 0.3, 1000.0));
+  Model model =
+      test::box_model(Vec3(0.2, 0.02, 0.02), 20, 2, 2, test::neo_hookean(1e6, 0.3, 1000.0));
   for (size_t i = 0; i < model.initial_velocity.size(); ++i) {
     const double k = static_cast<double>(i);
-    model.initial_velocity[i] = 1e-3 * Vec3(std::sin(7.0 * k), std::cos(11.0 * k), std::sin(3.0 * k));
+    model.initial_velocity[i] =
+        1e-3 * Vec3(std::sin(7.0 * k), std::cos(11.0 * k), std::sin(3.0 * k));
   }
   RunOptions opt;
   opt.time.end_time = 0.02;

@@ -2,7 +2,6 @@
 // bar and dilatational speeds coincide, c = sqrt(E / rho), and there is no lateral dispersion
 // to argue about.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "engine/bc/node_selection.hpp"
@@ -18,8 +17,9 @@ TEST_CASE("A force step at one end of a bar arrives at the far end at L / c", "[
   const double force = 1e-3 * E * w * w;  // stress 1e-3 E: strain 1e-3, linear regime
   const double rise = 2e-4;               // ~ 1/150 of L / c
   const auto end = boundary_on_plane(model.mesh, 0, Vec3::Zero(), Vec3::UnitX(), 1e-9);
-  model.bcs.loads.push_back(make_surface_load("push", model.mesh, end, Vec3::UnitX(),
-                                              TimeTable({{0.0, 0.0}, {rise, force}, {1.0, force}})));
+  model.bcs.loads.push_back(
+      make_surface_load("push", model.mesh, end, Vec3::UnitX(),
+                        TimeTable({{0.0, 0.0}, {rise, force}, {1.0, force}})));
   const int tip = nearest_node(model.mesh, 0, Vec3(L, w / 2, w / 2));
   HistoryRecorder history(model.mesh, {false, false, false, {{"tip", tip}}});
   RunOptions opt;

@@ -1,0 +1,305 @@
+#include "engine/contact/rigid_sphere_penalty.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+
+#include "engine/mesh/model_mesh.hpp"
+
+namespace ccm {
+namespace {
+
+// The symmetric 3-point triangle rule of degree 2 (Strang & Fix): point k has the barycentric
+// coordinate kNear at the triangle's node k and kFar at the other two. kNear is computed as
+// 1 - 2 kFar so that the three shape functions at a point sum to 1 as closely as floating point
+// allows (the force handed to the nodes is then the force taken from the sphere).
+constexpr double kFar = 1.0 / 6.0;
+constexpr double kNear = 1.0 - 2.0 * kFar;
+
+// Barycentric weights (N_0, N_1, N_2) of quadrature point k.
+constexpr std::array<double, 3> shape_at(int k) {
+  std::array<double, 3> N{kFar, kFar, kFar};
+  N[static_cast<size_t>(k)] = kNear;
+  return N;
+}
+
+// Margin of the stable-step search (see stable_dt_limit): points closer to the sphere's surface
+// than this fraction of R always count as touching.
+constexpr double kReachMargin = 0.1;
+
+}  // namespace
+
+RigidSpherePenalty::RigidSpherePenalty(std::vector<Triangle> surface,
+                                       RigidSpherePenaltyParams params)
+    : params_(std::move(params)) {
+  const RigidSphere& s = params_.sphere;
+  if (surface.empty()) throw std::invalid_argument("rigid sphere penalty: the surface is empty");
+  if (!(s.radius > 0.0) || !std::isfinite(s.radius))
+    throw std::invalid_argument("rigid sphere penalty: the radius must be > 0");
+  if (!(s.mass > 0.0) || !std::isfinite(s.mass))
+    throw std::invalid_argument("rigid sphere penalty: the mass must be > 0");
+  if (!(params_.penalty > 0.0) || !std::isfinite(params_.penalty))
+    throw std::invalid_argument("rigid sphere penalty: the penalty K_P must be > 0");
+  if (!(params_.structural_safety > 0.0))
+    throw std::invalid_argument("rigid sphere penalty: the structural safety must be > 0");
+
+  if (params_.force_axis) {
+    if (!(params_.force_axis->norm() > 0.0))
+      throw std::invalid_argument("rigid sphere penalty: the force axis must be non-zero");
+    axis_ = params_.force_axis->normalized();
+  } else if (s.velocity.norm() > 0.0) {
+    axis_ = s.velocity.normalized();
+  } else if (params_.gravity.norm() > 0.0) {
+    axis_ = params_.gravity.normalized();
+  }
+
+  // dt^2 (omega_struct^2 + omega_pen^2) <= 4 needs (s^2 + share^2) <= 1 when the structural
+  // step is s * 2 / omega_struct (docs/contact-time-step.md).
+  const double safety = params_.structural_safety < 1.0 ? params_.structural_safety : 0.9;
+  share_ = std::sqrt(1.0 - safety * safety);
+
+  nodes_ = nodes_of(surface);
+  if (nodes_.front() < 0) throw std::invalid_argument("rigid sphere penalty: negative node id");
+  const auto local = [&](int global) {
+    return static_cast<int>(std::lower_bound(nodes_.begin(), nodes_.end(), global) -
+                            nodes_.begin());
+  };
+  valence_.assign(nodes_.size(), 0.0);
+  tris_.reserve(surface.size());
+  for (const Triangle& t : surface) {
+    const std::array<int, 3> l{local(t[0]), local(t[1]), local(t[2])};
+    // Each triangle adds sum_q N_a(q) = kNear + 2 kFar = 1 to each of its nodes.
+    for (int a : l) valence_[static_cast<size_t>(a)] += 1.0;
+    tris_.push_back(l);
+  }
+  const size_t n = nodes_.size();
+  f_np1_.assign(n, Vec3::Zero());
+  f_n_.assign(n, Vec3::Zero());
+  is_touched_np1_.assign(n, 0);
+  is_touched_n_.assign(n, 0);
+  d2_.assign(3 * tris_.size(), 0.0);
+  x_n_.assign(n, Vec3::Zero());
+
+  x_s_ = s.center;
+  v_s_ = s.velocity;
+  a_s_ = params_.gravity;
+  x_s_n_ = x_s_;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The step: predictor, forces, corrector
+
+void RigidSpherePenalty::begin_step(const State& state, double dt) {
+  // The forces of the last evaluation are those at x_n now.
+  std::swap(f_n_, f_np1_);
+  std::swap(touched_n_, touched_np1_);
+  std::swap(is_touched_n_, is_touched_np1_);
+  F_s_n_ = F_s_;
+  for (size_t l = 0; l < nodes_.size(); ++l) x_n_[l] = state.x[static_cast<size_t>(nodes_[l])];
+
+  // x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28)
+  d2_of_ = nullptr;  // the sphere moves: the distances of add_forces are stale
+  x_s_n_ = x_s_;
+  v_s_ += 0.5 * dt * a_s_;
+  x_s_ += dt * v_s_;
+}
+
+void RigidSpherePenalty::add_forces(State& state) {
+  for (int l : touched_np1_) {
+    f_np1_[static_cast<size_t>(l)].setZero();
+    is_touched_np1_[static_cast<size_t>(l)] = 0;
+  }
+  touched_np1_.clear();
+  F_s_.setZero();
+  penalty_energy_ = 0.0;
+  penetration_max_ = 0.0;
+  n_active_ = 0;
+
+  const double R = params_.sphere.radius;
+  const double R2 = R * R;
+  const double K = params_.penalty;
+  for (size_t tri = 0; tri < tris_.size(); ++tri) {
+    const std::array<int, 3>& t = tris_[tri];
+    const std::array<Vec3, 3> x{state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[0])])],
+                                state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[1])])],
+                                state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[2])])]};
+    for (int k = 0; k < 3; ++k) {
+      const std::array<double, 3> N = shape_at(k);
+      const Vec3 r = N[0] * x[0] + N[1] * x[1] + N[2] * x[2] - x_s_;
+      const double d2 = r.squaredNorm();
+      d2_[3 * tri + static_cast<size_t>(k)] = d2;
+      if (!(d2 < R2)) continue;  // also skips non-finite positions
+      const double d = std::sqrt(d2);
+      Vec3 n;
+      if (d > 1e-12 * R) {
+        n = r / d;
+      } else {  // the point at the centre: push it into the body, against its outward normal
+        n = -(x[1] - x[0]).cross(x[2] - x[0]).normalized();
+      }
+      const double delta = R - d;
+      const Vec3 f_q = (K * delta) * n;  // on the body   (eq. 2.5-2.6)
+      for (size_t a = 0; a < 3; ++a) {
+        const auto l = static_cast<size_t>(t[a]);
+        if (!is_touched_np1_[l]) {
+          is_touched_np1_[l] = 1;
+          touched_np1_.push_back(t[a]);
+        }
+        f_np1_[l] += N[a] * f_q;
+      }
+      F_s_ -= f_q;  // on the sphere: equal and opposite
+      penalty_energy_ += 0.5 * K * delta * delta;
+      penetration_max_ = std::max(penetration_max_, delta);
+      ++n_active_;
+    }
+  }
+  for (int l : touched_np1_)
+    state.f[static_cast<size_t>(nodes_[static_cast<size_t>(l)])] += f_np1_[static_cast<size_t>(l)];
+  a_s_ = F_s_ / params_.sphere.mass + params_.gravity;
+  d2_of_ = &state;
+  d2_t_ = state.t;
+}
+
+void RigidSpherePenalty::end_step(const State& state, double dt) {
+  // v_{n+1} = v* + dt/2 a_{n+1}   (eq. 2.31)
+  v_s_ += 0.5 * dt * a_s_;
+
+  // Trapezoidal work over the nodes touched at t_n or t_{n+1}; f_n is zero off touched_n_ and
+  // f_{n+1} off touched_np1_.
+  double w = 0.0;
+  const auto add = [&](int l) {
+    const auto i = static_cast<size_t>(l);
+    const Vec3 dx = state.x[static_cast<size_t>(nodes_[i])] - x_n_[i];
+    w += 0.5 * (f_n_[i] + f_np1_[i]).dot(dx);
+  };
+  for (int l : touched_n_) add(l);
+  for (int l : touched_np1_)
+    if (!is_touched_n_[static_cast<size_t>(l)]) add(l);
+  work_body_ += w;
+  work_sphere_ += 0.5 * (F_s_n_ + F_s_).dot(x_s_ - x_s_n_);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Stable step (docs/contact-time-step.md)
+
+double RigidSpherePenalty::node_term(const State& state, int tri) const {
+  double k_over_m = 0.0;
+  for (int l : tris_[static_cast<size_t>(tri)]) {
+    const auto i = static_cast<size_t>(l);
+    k_over_m = std::max(k_over_m, valence_[i] * state.inv_m[static_cast<size_t>(nodes_[i])]);
+  }
+  return params_.penalty * k_over_m;
+}
+
+double RigidSpherePenalty::limit_from(double node_term, int n_points) const {
+  const double omega2 =
+      node_term + params_.penalty * static_cast<double>(n_points) / params_.sphere.mass;
+  if (!(omega2 > 0.0)) return std::numeric_limits<double>::infinity();
+  return share_ * 2.0 / std::sqrt(omega2);
+}
+
+// Which points count. A point counts when it is within kReachMargin R of the sphere's surface
+// now, or could get there within the step L being returned: its reach time
+// tau = (gap - kReachMargin R) / (2 v_rel) < L, with v_rel = |v_s| + max |v_a| over the surface
+// nodes (the factor 2 covers the change of velocity within a step). A counted point brings the
+// nodes of its triangle into the node term. The limit is the largest L with L <= f(S(L)), S(L) the
+// points with tau < L and f the bound of a set; f falls as S grows, so the points are taken in
+// the order of tau until the next one cannot arrive within the current L, or until taking it
+// would cut L below its own tau (then the step ends at that tau, before the point can arrive).
+// Far from contact the limit is thus infinite or the time the sphere needs to come within
+// reach: the penalty costs nothing until it can act. Approaching, the second case shortens the
+// step at most a few times (each halves tau) before the point is taken.
+double RigidSpherePenalty::stable_dt_limit(const State& state) const {
+  // The squared distances of the points from the sphere's centre: those add_forces computed,
+  // when they are of this state (the engine asks for the limit of a step after the evaluation
+  // that ended the previous one, at the same positions), else afresh.
+  if (d2_of_ != &state || d2_t_ != state.t) {
+    d2_of_ = nullptr;
+    for (size_t tri = 0; tri < tris_.size(); ++tri) {
+      const std::array<int, 3>& t = tris_[tri];
+      const std::array<Vec3, 3> x{state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[0])])],
+                                  state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[1])])],
+                                  state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[2])])]};
+      for (int k = 0; k < 3; ++k) {
+        const std::array<double, 3> N = shape_at(k);
+        d2_[3 * tri + static_cast<size_t>(k)] =
+            (N[0] * x[0] + N[1] * x[1] + N[2] * x[2] - x_s_).squaredNorm();
+      }
+    }
+  }
+
+  const double R = params_.sphere.radius;
+  const double near = (1.0 + kReachMargin) * R;  // closer than this: the point counts
+  const double near2 = near * near;
+  double v_max = 0.0;
+  for (int n : nodes_) v_max = std::max(v_max, state.v[static_cast<size_t>(n)].squaredNorm());
+  const double v_rel = v_s_.norm() + std::sqrt(v_max);
+
+  double A = 0.0;  // max_a K_P s_a / m_a over the nodes of the counted points' triangles
+  int n_points = 0;
+  size_t nearest = d2_.size();  // the closest point that does not count yet
+  for (size_t q = 0; q < d2_.size(); ++q) {
+    const double d2 = d2_[q];
+    if (!(d2 >= near2)) {  // also counts a non-finite distance
+      A = std::max(A, node_term(state, static_cast<int>(q / 3)));
+      ++n_points;
+    } else if (nearest == d2_.size() || d2 < d2_[nearest]) {
+      nearest = q;
+    }
+  }
+  double L = limit_from(A, n_points);
+  if (nearest == d2_.size() || !(v_rel > 0.0)) return L;
+  const auto tau_of = [&](double d2) { return (std::sqrt(d2) - near) / (2.0 * v_rel); };
+
+  // The usual cases end here: the nearest point cannot arrive within L (in contact, or far and
+  // slow), or taking it would cut L below its tau (far: the step may run until it can arrive).
+  double tau = tau_of(d2_[nearest]);
+  if (tau >= L) return L;
+  A = std::max(A, node_term(state, static_cast<int>(nearest / 3)));
+  ++n_points;
+  double L_with = limit_from(A, n_points);
+  if (L_with <= tau) return tau;
+  L = L_with;
+
+  // Approaching contact: take the points that can arrive within L (L only falls from here) in
+  // the order of their distance, from a min-heap.
+  const double reach = near + 2.0 * v_rel * L;
+  scratch_.clear();
+  for (size_t q = 0; q < d2_.size(); ++q)
+    if (q != nearest && d2_[q] >= near2 && d2_[q] < reach * reach)
+      scratch_.emplace_back(d2_[q], static_cast<int>(q / 3));
+  const auto farther = std::greater<std::pair<double, int>>();
+  std::make_heap(scratch_.begin(), scratch_.end(), farther);
+  while (!scratch_.empty()) {
+    tau = tau_of(scratch_.front().first);
+    if (tau >= L) break;
+    std::pop_heap(scratch_.begin(), scratch_.end(), farther);
+    A = std::max(A, node_term(state, scratch_.back().second));
+    ++n_points;
+    scratch_.pop_back();
+    L_with = limit_from(A, n_points);
+    if (L_with <= tau) return tau;
+    L = L_with;
+  }
+  return L;
+}
+
+// ---------------------------------------------------------------------------------------------
+// History
+
+std::vector<std::string> RigidSpherePenalty::history_columns() const {
+  std::vector<std::string> c;
+  for (const char* q :
+       {"sphere_x", "sphere_y", "sphere_z", "sphere_vx", "sphere_vy", "sphere_vz",
+        "sphere_kinetic_energy", "contact_force", "contact_force_axis", "penetration_max"})
+    c.push_back(params_.name + "." + q);
+  return c;
+}
+
+void RigidSpherePenalty::append_history(const State& /*state*/, std::vector<double>& row) const {
+  row.insert(row.end(), {x_s_.x(), x_s_.y(), x_s_.z(), v_s_.x(), v_s_.y(), v_s_.z(),
+                         sphere_kinetic_energy(), F_s_.norm(), F_s_.dot(axis_), penetration_max_});
+}
+
+}  // namespace ccm

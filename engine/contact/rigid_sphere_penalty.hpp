@@ -1,0 +1,152 @@
+// The rigid-body contact model of the trade study (thesis 2.8): an analytic rigid sphere (no
+// mesh) pushed out of one deformable body's surface by penalty springs (thesis eq. 2.5-2.6;
+// EQUATIONS.md "Rigid-sphere penalty"; contact-method.md §5 "Penalty" and §6(d)).
+//
+// Where the springs act. The surface's triangles (default "<body>/boundary") carry the
+// symmetric 3-point rule of degree 2: barycentric (2/3, 1/6, 1/6) and its two rotations. At each
+// quadrature point q, x_q = sum_a N_a(q) x_a on the current configuration, with
+//   d = |x_q - x_s| < R:   delta = R - d,   n = (x_q - x_s) / d,
+//   f_q = K_P delta n                       on the body           (thesis eq. 2.5, 2.6)
+//   f_a += N_a(q) f_q                       to the triangle's nodes (linear shape functions)
+//   F_s -= f_q                              on the sphere: equal and opposite
+//   E_pen = sum_q 1/2 K_P delta^2           the penalty energy; f = -dE_pen/dx exactly.
+//
+// How K_P is applied: K_P [N/m] is the stiffness of ONE quadrature point's spring, not scaled by
+// the point's area weight. That is the thesis's model (eq. 2.5: "a mechanical spring" K_P per
+// finite location; §2.8: "all quadrature points ... are checked", K_P = 1e6 per point), it keeps
+// K_P in N/m, and it makes the stiffness of a contact exactly K_P times the number of points
+// inside the sphere. The price, which the thesis paid too: the total stiffness of a contact
+// patch grows with the number of points in it, i.e. with mesh refinement (about 3 points per
+// triangle in contact). Why 3 points and not the centroid: a 1-point rule leaves each node
+// reachable only through triangle centroids, so a small sphere can press between centroids and a
+// node's load arrives late and lumpy; with 3 points a point lies at 1/6 of the altitude from
+// every edge and carries 2/3 of its force to the nearest node. (The thesis checked the volume
+// quadrature points of its artifact; ccm checks the surface, where contact happens.)
+//
+// The sphere is integrated by the engine's own central difference in PEC form (eq. 2.27-2.31):
+// begin_step(dt) predicts x_s += dt v_s + dt^2/2 a_s, v_s += dt/2 a_s; add_forces gathers F_s at
+// x_{n+1} and sets a_s = F_s / m_s + g; end_step(dt) corrects v_s += dt/2 a_s. Linear momentum of
+// sphere + body is therefore conserved to round-off (when no node of the body is fixed).
+//
+// Stable step (docs/contact-time-step.md): omega_pen^2 <= max_a K_P s_a / m_a + K_P n_s / m_s,
+// with s_a = sum_q N_a(q) over the points of node a's triangles (= its number of surface
+// triangles) and n_s the number of points that can touch the sphere within the step; the limit
+// returned is sqrt(1 - s^2) * 2 / omega_pen for the engine's structural safety s (0.9: 0.436), so
+// that dt^2 (omega_struct^2 + omega_pen^2) <= 4.
+//
+// One model object serves one run: it holds the sphere's state.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "engine/contact/contact_model.hpp"
+#include "engine/mesh/tet_mesh.hpp"
+#include "engine/observe/history.hpp"
+
+namespace ccm {
+
+struct RigidSphere {
+  double radius = 0.0;           // R [m], > 0
+  double mass = 0.0;             // m_s [kg], > 0
+  Vec3 center = Vec3::Zero();    // x_s at t = 0 [m]
+  Vec3 velocity = Vec3::Zero();  // v_s at t = 0 [m/s]
+};
+
+struct RigidSpherePenaltyParams {
+  std::string name = "sphere";  // the history column prefix
+  RigidSphere sphere;
+  double penalty = 1e6;         // K_P [N/m] per quadrature point (thesis 2.8)
+  Vec3 gravity = Vec3::Zero();  // acceleration of the sphere [m/s^2]
+  // Unit axis for the history column `<name>.contact_force_axis`; default: the direction of
+  // the initial velocity, else of gravity, else -z.
+  std::optional<Vec3> force_axis;
+  // The safety factor the engine applies to its structural step (TimeControl::dt_safety); the
+  // penalty limit takes the share sqrt(1 - s^2) of its own bound (for s >= 1, a stability
+  // experiment, the share of s = 0.9).
+  double structural_safety = 0.9;
+};
+
+class RigidSpherePenalty : public ContactModel, public HistorySource {
+ public:
+  // `surface`: triangles of the deformable body (global node ids), e.g. the surface
+  // "<body>/boundary" of the ModelMesh. Throws std::invalid_argument for an empty surface, a
+  // radius, mass or penalty that is not > 0, or a zero force axis.
+  RigidSpherePenalty(std::vector<Triangle> surface, RigidSpherePenaltyParams params);
+
+  std::string_view name() const override { return "rigid_penalty"; }
+  void begin_step(const State& state, double dt) override;
+  void add_forces(State& state) override;
+  void end_step(const State& state, double dt) override;
+  double stable_dt_limit(const State& state) const override;
+  // Work of the contact forces on the body's nodes, trapezoidal over each step:
+  // sum 1/2 (f_n + f_{n+1}) . (x_{n+1} - x_n) [J].
+  double work() const override { return work_body_; }
+
+  // History: <name>.sphere_x/y/z, .sphere_vx/vy/vz, .sphere_kinetic_energy, .contact_force
+  // (|F_s|), .contact_force_axis (F_s . axis), .penetration_max.
+  std::vector<std::string> history_columns() const override;
+  void append_history(const State& state, std::vector<double>& row) const override;
+
+  const RigidSpherePenaltyParams& params() const { return params_; }
+  const Vec3& sphere_position() const { return x_s_; }
+  const Vec3& sphere_velocity() const { return v_s_; }
+  const Vec3& sphere_acceleration() const { return a_s_; }
+  double sphere_kinetic_energy() const { return 0.5 * params_.sphere.mass * v_s_.squaredNorm(); }
+  const Vec3& force_axis() const { return axis_; }
+  // Of the last add_forces (at x_{n+1}):
+  const Vec3& contact_force() const { return F_s_; }           // on the sphere [N]
+  double penalty_energy() const { return penalty_energy_; }    // sum_q 1/2 K_P delta^2 [J]
+  double penetration_max() const { return penetration_max_; }  // max_q delta [m]
+  int active_points() const { return n_active_; }              // points with d < R
+  // Work of the contact force on the sphere, trapezoidal like work() [J]. With work():
+  // work() + sphere_work() = -(E_pen - E_pen,0) up to the rule's error on nonlinear steps.
+  double sphere_work() const { return work_sphere_; }
+  // Sorted global ids of the surface's nodes.
+  const std::vector<int>& surface_nodes() const { return nodes_; }
+
+ private:
+  // sqrt(1 - s^2) * 2 / omega_pen for omega_pen^2 = node_term + K_P n_points / m_s, where
+  // node_term = max_a K_P s_a / m_a over the nodes that can be pushed.
+  double limit_from(double node_term, int n_points) const;
+  double node_term(const State& state, int tri) const;
+
+  RigidSpherePenaltyParams params_;
+  std::vector<int> nodes_;                // global ids of the surface nodes
+  std::vector<std::array<int, 3>> tris_;  // local node indices (into nodes_)
+  std::vector<double> valence_;           // s_a = sum_q N_a(q) = surface triangles at a
+  Vec3 axis_ = -Vec3::UnitZ();
+  double share_ = 0.0;  // sqrt(1 - s^2)
+
+  // Sphere state (t_n before the predictor, t_{n+1} after it).
+  Vec3 x_s_ = Vec3::Zero(), v_s_ = Vec3::Zero(), a_s_ = Vec3::Zero();
+  Vec3 x_s_n_ = Vec3::Zero();  // position at the start of the step
+
+  // Nodal contact forces of the last two evaluations (local index), and their support.
+  std::vector<Vec3> f_np1_, f_n_;
+  std::vector<int> touched_np1_, touched_n_;
+  std::vector<char> is_touched_np1_, is_touched_n_;
+  std::vector<Vec3> x_n_;  // surface node positions at the start of the step
+  Vec3 F_s_ = Vec3::Zero(), F_s_n_ = Vec3::Zero();
+
+  double penalty_energy_ = 0.0;
+  double penetration_max_ = 0.0;
+  int n_active_ = 0;
+  double work_body_ = 0.0;
+  double work_sphere_ = 0.0;
+
+  // |x_q - x_s|^2 of every point (3 per triangle), as add_forces last computed them on the
+  // state d2_of_ at time d2_t_ (null when they are not add_forces's: after begin_step, as the
+  // sphere moves, or after stable_dt_limit recomputed them for another state). stable_dt_limit
+  // reuses them for that state and time: the engine does not move the nodes between the two.
+  mutable std::vector<double> d2_;
+  mutable const State* d2_of_ = nullptr;
+  double d2_t_ = 0.0;
+  mutable std::vector<std::pair<double, int>> scratch_;  // stable_dt_limit: (d^2, triangle)
+};
+
+}  // namespace ccm
