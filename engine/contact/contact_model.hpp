@@ -8,6 +8,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <string_view>
 
 #include "engine/solver/state.hpp"
@@ -34,6 +35,9 @@ class ContactModel {
   }
   // Work done on the deformable bodies by the contact so far [J], for the energy balance.
   virtual double work() const { return 0.0; }
+  // Non-empty when the contact has failed in the last step (the reason, for the verdict): the
+  // run must then end unstable. Checked by the integrator after every step.
+  virtual std::string failure() const { return {}; }
 };
 
 }  // namespace ccm

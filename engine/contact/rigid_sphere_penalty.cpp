@@ -1,5 +1,7 @@
 #include "engine/contact/rigid_sphere_penalty.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -300,6 +302,18 @@ std::vector<std::string> RigidSpherePenalty::history_columns() const {
 void RigidSpherePenalty::append_history(const State& /*state*/, std::vector<double>& row) const {
   row.insert(row.end(), {x_s_.x(), x_s_.y(), x_s_.z(), v_s_.x(), v_s_.y(), v_s_.z(),
                          sphere_kinetic_energy(), F_s_.norm(), F_s_.dot(axis_), penetration_max_});
+}
+
+// A surface point at R / 2 from the centre is half a radius deep: the penalty has not stopped
+// the sphere, the contact force directions (centre to point) no longer approximate the surface
+// normal, and a point that reaches the centre is pushed through the sphere. A working K_P keeps
+// the depth to a few per cent of R; half of R is an unambiguous failure, not a tuning limit.
+std::string RigidSpherePenalty::failure() const {
+  const double limit = kFailureDepth * params_.sphere.radius;
+  if (!(penetration_max_ <= limit))
+    return fmt::format("penetration {:.4g} m exceeds {} x the sphere radius ({:.4g} m)",
+                       penetration_max_, kFailureDepth, params_.sphere.radius);
+  return {};
 }
 
 }  // namespace ccm

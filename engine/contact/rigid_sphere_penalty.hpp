@@ -102,7 +102,11 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   const Vec3& contact_force() const { return F_s_; }           // on the sphere [N]
   double penalty_energy() const { return penalty_energy_; }    // sum_q 1/2 K_P delta^2 [J]
   double penetration_max() const { return penetration_max_; }  // max_q delta [m]
-  int active_points() const { return n_active_; }              // points with d < R
+  // Non-empty when penetration_max() > kFailureDepth * R: the sphere has sunk half its radius
+  // into the surface (K_P far too soft for the impact); see failure() in the .cpp.
+  std::string failure() const override;
+  static constexpr double kFailureDepth = 0.5;
+  int active_points() const { return n_active_; }  // points with d < R
   // Work of the contact force on the sphere, trapezoidal like work() [J]. With work():
   // work() + sphere_work() = -(E_pen - E_pen,0) up to the rule's error on nonlinear steps.
   double sphere_work() const { return work_sphere_; }

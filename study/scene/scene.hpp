@@ -129,8 +129,8 @@ struct OutputSpec {
   std::vector<TrackSpec> track;
 };
 
-// [contact] (docs/scene-file.md). "dcr" is reserved: parsed as "not yet available".
-enum class ContactKind { none, rigid_penalty };
+// [contact] (docs/scene-file.md).
+enum class ContactKind { none, rigid_penalty, dcr };
 
 struct RigidSphereSpec {
   std::string name = "sphere";   // history column prefix
@@ -148,8 +148,13 @@ struct ContactSpec {
   double penalty = 1e6;                // K_P [N/m] per quadrature point (thesis 2.8)
   std::optional<Vec3> force_axis;      // default: the sphere's initial velocity direction
   RigidSphereSpec sphere;
-  SourceRef where;         // the [contact] table
-  SourceRef sphere_where;  // [contact.sphere]
+  // dcr:
+  std::vector<std::string> surfaces;  // as given; a name without '/' means "<name>/boundary"
+  bool self_contact = false;
+  double restitution = 0.0;  // e in [0, 1]
+  double friction = 0.0;     // Coulomb mu >= 0
+  SourceRef where;           // the [contact] table
+  SourceRef sphere_where;    // [contact.sphere]
 };
 
 struct Scene {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/bc/node_selection.hpp"
+#include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
 #include "engine/core/time_table.hpp"
 
@@ -181,10 +182,54 @@ OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh) {
   return r;
 }
 
+namespace {
+
+// model = "dcr": every listed surface must exist and have triangles.
+ContactSetup build_dcr(const Scene& scene, const Model& model) {
+  const ContactSpec& c = scene.contact;
+  const ModelMesh& mesh = model.mesh;
+  dcr::DcrSettings settings;
+  size_t triangles = 0;
+  for (const std::string& given : c.surfaces) {
+    const std::string name = given.find('/') == std::string::npos ? given + "/boundary" : given;
+    const auto it = mesh.surfaces.find(name);
+    if (it == mesh.surfaces.end())
+      fail(scene, c.where, "surfaces",
+           fmt::format("no surface named '{}' (surfaces: {})", name, known_names(mesh.surfaces)));
+    if (it->second.triangles.empty())
+      fail(scene, c.where, "surfaces", fmt::format("surface '{}' has no triangle", name));
+    if (std::find(settings.surfaces.begin(), settings.surfaces.end(), name) !=
+        settings.surfaces.end())
+      fail(scene, c.where, "surfaces", fmt::format("surface '{}' is listed twice", name));
+    settings.surfaces.push_back(name);
+    triangles += it->second.triangles.size();
+  }
+  settings.self_contact = c.self_contact;
+  settings.restitution = c.restitution;
+  settings.friction = c.friction;
+  std::unique_ptr<dcr::DcrContact> dcr;
+  try {
+    dcr = std::make_unique<dcr::DcrContact>(mesh, settings, model.bcs.fixed_nodes);
+  } catch (const std::invalid_argument& e) {
+    fail(scene, c.where, "", e.what());
+  }
+  ContactSetup setup;
+  setup.model_name = "dcr";
+  setup.description = fmt::format(
+      "dcr: {} ({} triangles), self_contact {}, restitution {:.4g}, friction {:.4g}",
+      fmt::join(settings.surfaces, ", "), triangles, c.self_contact, c.restitution, c.friction);
+  setup.history = dcr.get();
+  setup.model = std::move(dcr);
+  return setup;
+}
+
+}  // namespace
+
 ContactSetup build_contact(const Scene& scene, const Model& model) {
   const ContactSpec& c = scene.contact;
   ContactSetup setup;
   if (c.kind == ContactKind::none) return setup;
+  if (c.kind == ContactKind::dcr) return build_dcr(scene, model);
   const ModelMesh& mesh = model.mesh;
   const int body = body_index(scene, mesh, c.where, "body", c.body);
   const std::string_view key = c.surface ? "surface" : "body";

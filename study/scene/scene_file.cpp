@@ -590,6 +590,34 @@ RigidSphereSpec parse_sphere(const Table& t, const Scene& scene) {
   return s;
 }
 
+// model = "dcr": the surfaces are checked against the meshes by the builder.
+void parse_dcr(const Table& t, ContactSpec& c) {
+  t.allow_only({"model", "surfaces", "self_contact", "restitution", "friction"});
+  c.kind = ContactKind::dcr;
+  const toml::node* n = t.node("surfaces");
+  if (!n) t.fail("surfaces", "required key is missing");
+  const toml::array* a = n->as_array();
+  const std::string path = t.key_path("surfaces");
+  if (!a) t.wrong_type(*n, path, "an array of strings");
+  if (a->empty()) t.fail("surfaces", "needs at least one surface");
+  for (size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = (*a)[i];
+    if (!e.is_string()) t.wrong_type(e, fmt::format("{}[{}]", path, i), "a string");
+    std::string name = e.as_string()->get();
+    if (std::find(c.surfaces.begin(), c.surfaces.end(), name) != c.surfaces.end())
+      t.fail_at(e, fmt::format("{}[{}]", path, i),
+                fmt::format("surface '{}' is listed twice", name));
+    c.surfaces.push_back(std::move(name));
+  }
+  c.self_contact = t.get_or("self_contact", c.self_contact);
+  c.restitution = t.get_or("restitution", c.restitution);
+  if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
+    t.fail("restitution", fmt::format("must lie in [0, 1] (got {})", c.restitution));
+  c.friction = t.get_or("friction", c.friction);
+  if (!(c.friction >= 0.0)) t.fail("friction", fmt::format("must be >= 0 (got {})", c.friction));
+  c.where = t.ref();
+}
+
 void parse_contact(const Table& root, Scene& scene) {
   const auto t = root.table("contact");
   if (!t) return;
@@ -598,7 +626,10 @@ void parse_contact(const Table& root, Scene& scene) {
     t->allow_only({"model"});
     return;
   }
-  if (model == "dcr") t->fail("model", "'dcr' is not yet available (use \"rigid_penalty\")");
+  if (model == "dcr") {
+    parse_dcr(*t, scene.contact);
+    return;
+  }
   if (model != "rigid_penalty")
     t->fail("model", fmt::format("must be one of none, rigid_penalty, dcr (got '{}')", model));
   t->allow_only({"model", "body", "surface", "penalty", "force_axis", "sphere"});

@@ -1,5 +1,7 @@
 #include "engine/contact/dcr/dcr_contact.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,6 +38,16 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   count_.assign(mesh.X.size(), 0);
 }
 
+std::string DcrContact::failure() const {
+  const double limit = kFailurePenetration * min_edge_;
+  if (!(residual_ <= limit))  // also NaN
+    return fmt::format(
+        "residual penetration {:.4g} m exceeds {:.4g} m ({} x the shortest surface "
+        "edge {:.4g} m) after {} iterations",
+        residual_, limit, kFailurePenetration, min_edge_, settings_.max_iterations);
+  return {};
+}
+
 void DcrContact::begin_step(const State& state, double /*dt*/) {
   if (x_n_.empty()) {  // first step: masses are known now
     for (size_t i = 0; i < inv_m_.size(); ++i)
@@ -69,8 +81,32 @@ double DcrContact::constraint_gradient(const Constraint& c, const std::vector<Ve
   return k;
 }
 
+// Without self-contact, bodies whose swept surface boxes do not overlap cannot touch: the
+// broad phase is skipped (a scene pays for the search only while bodies are close).
+bool DcrContact::bodies_may_touch(const State& s) const {
+  if (settings_.self_contact) return true;
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (size_t i = 0; i < features_.nodes.size(); ++i) {
+    const auto body = static_cast<size_t>(features_.node_body[i]);
+    if (boxes.size() <= body) boxes.resize(body + 1);
+    const auto n = static_cast<size_t>(features_.nodes[i]);
+    boxes[body].extend(x_n_[n]);
+    boxes[body].extend(s.x[n]);
+  }
+  for (auto& b : boxes)
+    if (!b.isEmpty()) {
+      b.min().array() -= 2.0 * separation_;
+      b.max().array() += 2.0 * separation_;
+    }
+  for (size_t a = 0; a < boxes.size(); ++a)
+    for (size_t b = a + 1; b < boxes.size(); ++b)
+      if (!boxes[a].isEmpty() && !boxes[b].isEmpty() && boxes[a].intersects(boxes[b])) return true;
+  return false;
+}
+
 void DcrContact::detect(const State& s) {
   constraints_.clear();
+  if (!bodies_may_touch(s)) return;
   broad_phase_.find(features_, x_n_, s.x, 2.0 * separation_, settings_.self_contact, candidates_);
   const std::vector<Vec3>& x0 = x_n_;
   const std::vector<Vec3>& x1 = s.x;

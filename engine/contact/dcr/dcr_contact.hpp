@@ -53,6 +53,10 @@ class DcrContact : public ContactModel, public HistorySource {
   void correct(State& state, double dt) override;
   double stable_dt_limit(const State& state) const override;
   double work() const override { return work_; }
+  // Non-empty when the projection left a penetration deeper than kFailurePenetration times the
+  // shortest surface edge (the iterations did not converge: the contact no longer holds).
+  std::string failure() const override;
+  static constexpr double kFailurePenetration = 1e-3;
 
   std::vector<std::string> history_columns() const override;
   void append_history(const State& s, std::vector<double>& row) const override;
@@ -61,9 +65,11 @@ class DcrContact : public ContactModel, public HistorySource {
   int active_contacts() const { return static_cast<int>(constraints_.size()); }
   double residual_penetration() const { return residual_; }  // max -g/|grad_p g| [m], >= 0
   const SurfaceFeatures& features() const { return features_; }
+  double min_edge() const { return min_edge_; }  // shortest surface edge, reference [m]
 
  private:
   void detect(const State& s);
+  bool bodies_may_touch(const State& s) const;
   void project_positions(State& s);
   void exchange_momentum(State& s, double dt);
   void apply_friction(const State& s, std::vector<Vec3>& v_end);

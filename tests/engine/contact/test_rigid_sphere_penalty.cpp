@@ -564,7 +564,7 @@ TEST_CASE("scene [contact]: errors name the file, the line and the key", "[conta
   const std::string sphere = "[contact.sphere]\nradius = 0.01\nmass = 0.1\ncenter = [0, 0, 1]\n";
   // Line 13 [contact], 14 model, 15 body, 16 the next line.
   CHECK(scene_error_of(kScene + "[contact]\nmodel = \"dcr\"\n") ==
-        "s.toml:14: contact.model: 'dcr' is not yet available (use \"rigid_penalty\")");
+        "s.toml:13: contact.surfaces: required key is missing");
   CHECK_THAT(scene_error_of(kScene + "[contact]\nmodel = \"rigid\"\n"),
              Contains("s.toml:14: contact.model: must be one of none, rigid_penalty, dcr"));
   CHECK(scene_error_of(head + "penalti = 1e6\n" + sphere) ==
