@@ -108,6 +108,15 @@ void RigidSpherePenalty::begin_step(const State& state, double dt) {
   x_s_ += dt * v_s_;
 }
 
+// Current positions of the three corners of surface triangle tri.
+std::array<Vec3, 3> RigidSpherePenalty::corners(const State& state, size_t tri) const {
+  std::array<Vec3, 3> x;
+  for (int c = 0; c < 3; ++c)
+    x[static_cast<size_t>(c)] = state.x[static_cast<size_t>(
+        nodes_[static_cast<size_t>(tris_[tri][static_cast<size_t>(c)])])];
+  return x;
+}
+
 void RigidSpherePenalty::add_forces(State& state) {
   for (int l : touched_np1_) {
     f_np1_[static_cast<size_t>(l)].setZero();
@@ -124,9 +133,7 @@ void RigidSpherePenalty::add_forces(State& state) {
   const double K = params_.penalty;
   for (size_t tri = 0; tri < tris_.size(); ++tri) {
     const std::array<int, 3>& t = tris_[tri];
-    const std::array<Vec3, 3> x{state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[0])])],
-                                state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[1])])],
-                                state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[2])])]};
+    const std::array<Vec3, 3> x = corners(state, tri);
     for (int k = 0; k < 3; ++k) {
       const std::array<double, 3> N = shape_at(k);
       const Vec3 r = N[0] * x[0] + N[1] * x[1] + N[2] * x[2] - x_s_;
@@ -219,10 +226,7 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   if (d2_of_ != &state || d2_t_ != state.t) {
     d2_of_ = nullptr;
     for (size_t tri = 0; tri < tris_.size(); ++tri) {
-      const std::array<int, 3>& t = tris_[tri];
-      const std::array<Vec3, 3> x{state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[0])])],
-                                  state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[1])])],
-                                  state.x[static_cast<size_t>(nodes_[static_cast<size_t>(t[2])])]};
+      const std::array<Vec3, 3> x = corners(state, tri);
       for (int k = 0; k < 3; ++k) {
         const std::array<double, 3> N = shape_at(k);
         d2_[3 * tri + static_cast<size_t>(k)] =

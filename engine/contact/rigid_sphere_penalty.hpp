@@ -114,6 +114,7 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   const std::vector<int>& surface_nodes() const { return nodes_; }
 
  private:
+  std::array<Vec3, 3> corners(const State& state, size_t tri) const;
   // sqrt(1 - s^2) * 2 / omega_pen for omega_pen^2 = node_term + K_P n_points / m_s, where
   // node_term = max_a K_P s_a / m_a over the nodes that can be pushed.
   double limit_from(double node_term, int n_points) const;
