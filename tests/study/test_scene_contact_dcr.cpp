@@ -8,6 +8,7 @@
 #include "engine/contact/rigid_sphere_penalty.hpp"
 #include "study/scene/scene_builder.hpp"
 #include "study/scene/scene_file.hpp"
+#include "tests/support/scene_fixtures.hpp"
 
 using Catch::Contains;
 using namespace ccm;
@@ -15,40 +16,10 @@ using namespace ccm;
 namespace {
 
 // Two cubes, 1 mm apart along z; lines 1-24. [contact] goes on line 25.
-const std::string kTwoCubes = R"([time]
-end = 1e-3
-[[bodies]]
-name = "a"
-[bodies.material]
-E = 1e5
-nu = 0.3
-rho = 1000.0
-[bodies.geometry]
-shape = "box"
-size = [0.01, 0.01, 0.01]
-mesh_size = 0.005
-[[bodies]]
-name = "b"
-[bodies.material]
-E = 1e5
-nu = 0.3
-rho = 1000.0
-[bodies.geometry]
-shape = "box"
-size = [0.01, 0.01, 0.01]
-mesh_size = 0.005
-[bodies.placement]
-translate = [0.0, 0.0, 0.011]
-)";
-
-std::string scene_error_of(const std::string& text) {
-  try {
-    parse_scene(text, "s.toml");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+const std::string kTwoCubes = test::kTimeToml + test::cube_body_toml("a") +
+                              test::cube_body_toml("b") +
+                              "[bodies.placement]\ntranslate = [0.0, 0.0, 0.011]\n";
+using test::scene_error_of;
 
 std::string build_error_of(const std::string& text) {
   const Scene scene = parse_scene(text, "s.toml");

@@ -14,6 +14,7 @@
 #include "engine/core/time_table.hpp"
 #include "study/scene/scene_builder.hpp"
 #include "study/scene/scene_file.hpp"
+#include "tests/support/scene_fixtures.hpp"
 
 namespace fs = std::filesystem;
 using Catch::Contains;
@@ -44,19 +45,7 @@ struct TempDir {
 };
 
 // A valid scene; the line numbers below are relied upon by the tests.
-const std::string kBase = R"([time]
-end = 1e-3
-[[bodies]]
-name = "cube"
-[bodies.material]
-E = 1e5
-nu = 0.3
-rho = 1000.0
-[bodies.geometry]
-shape = "box"
-size = [0.01, 0.01, 0.01]
-mesh_size = 0.005
-)";
+const std::string& kBase = test::kOneCubeScene;
 
 // kBase with `from` (which must occur) replaced by `to`.
 std::string with(std::string text, const std::string& from, const std::string& to) {

@@ -15,6 +15,7 @@
 #include "study/scene/scene_builder.hpp"
 #include "study/scene/scene_file.hpp"
 #include "tests/support/models.hpp"
+#include "tests/support/scene_fixtures.hpp"
 #include "tests/support/tolerance.hpp"
 
 using namespace ccm;
@@ -476,29 +477,8 @@ TEST_CASE("rigid sphere penalty: no contact, no force and no work", "[contact][r
 
 namespace {
 
-const std::string kScene = R"([time]
-end = 1e-3
-[[bodies]]
-name = "cube"
-[bodies.material]
-E = 1e5
-nu = 0.3
-rho = 1000.0
-[bodies.geometry]
-shape = "box"
-size = [0.01, 0.01, 0.01]
-mesh_size = 0.005
-)";
-// kScene has 12 lines; [contact] starts on line 13.
-
-std::string scene_error_of(const std::string& text) {
-  try {
-    parse_scene(text, "s.toml");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+const std::string& kScene = test::kOneCubeScene;  // 12 lines; [contact] starts on line 13
+using test::scene_error_of;
 
 }  // namespace
 

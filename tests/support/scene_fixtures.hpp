@@ -1,0 +1,33 @@
+// Small scene-file texts the scene and contact tests share. Line numbers matter to the tests
+// that check error messages: the one-cube scene has 12 lines.
+#pragma once
+
+#include <string>
+
+#include "study/scene/scene_file.hpp"
+
+namespace ccm::test {
+
+inline const std::string kTimeToml = "[time]\nend = 1e-3\n";
+
+// A soft 1 cm cube body named `name` (10 lines).
+inline std::string cube_body_toml(const std::string& name) {
+  return "[[bodies]]\nname = \"" + name +
+         "\"\n[bodies.material]\nE = 1e5\nnu = 0.3\nrho = 1000.0\n[bodies.geometry]\n"
+         "shape = \"box\"\nsize = [0.01, 0.01, 0.01]\nmesh_size = 0.005\n";
+}
+
+// One cube named "cube"; lines 1-12.
+inline const std::string kOneCubeScene = kTimeToml + cube_body_toml("cube");
+
+// The message of the SceneError parsing `text` (as "s.toml") throws, or "(no error)".
+inline std::string scene_error_of(const std::string& text) {
+  try {
+    parse_scene(text, "s.toml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace ccm::test
