@@ -1,0 +1,40 @@
+// Which share of a study this process runs: one process alone, or one MPI rank of
+// `mpirun -np N ccm study run ...`. A study is many independent runs, so ranks split the list
+// of runs round-robin and never talk during a run; rank 0 reports progress.
+#pragma once
+
+#include <cstddef>
+
+namespace ccm::study {
+
+class RankContext {
+ public:
+  // Initialises MPI only when the process was started by an MPI launcher (Open MPI, MPICH or
+  // PMIx environment variables), so a plain `ccm` never pays for MPI start-up.
+  RankContext();
+  ~RankContext();
+  RankContext(const RankContext&) = delete;
+  RankContext& operator=(const RankContext&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool is_root() const { return rank_ == 0; }
+  // Round-robin ownership of the i-th run of the study's ordered run list.
+  bool owns(std::size_t run_index) const {
+    return run_index % static_cast<std::size_t>(size_) == static_cast<std::size_t>(rank_);
+  }
+  // Waits for every rank (no-op without MPI).
+  void barrier() const;
+  // Sum of a count over all ranks (identity without MPI).
+  long sum(long value) const;
+
+ private:
+  bool mpi_ = false;
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+// True when environment variables of an MPI launcher are present.
+bool launched_by_mpi();
+
+}  // namespace ccm::study
