@@ -1,9 +1,12 @@
-// The ccm command line: `ccm --version`, `ccm run SCENE --out DIR [--quiet]`.
+// The ccm command line: `ccm --version`, `ccm run SCENE --out DIR [--quiet]`,
+// `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE`,
+// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 
 #include "study/cli/run_command.hpp"
+#include "study/cli/study_commands.hpp"
 #include "study/provenance/version.hpp"
 
 int main(int argc, char** argv) {
@@ -23,6 +26,41 @@ int main(int argc, char** argv) {
       "Exit codes: 0 completed, 1 internal error, 2 bad input (nothing written), 3 unstable "
       "(results up to the instability written).");
 
+  ccm::StudyRunArgs study_run_args;
+  ccm::StudyStatusArgs study_status_args;
+  CLI::App* study = app.add_subcommand("study", "Trade studies: run a grid, show its status");
+  study->require_subcommand(1);
+  CLI::App* study_run = study->add_subcommand(
+      "run",
+      "Run every point of a grid file (both models) not yet in the store, then its "
+      "metrics, fits and recommendation table");
+  study_run->add_option("GRID", study_run_args.grid, "Grid file (TOML; see docs/grid-file.md)")
+      ->required();
+  study_run->add_option("--db", study_run_args.db, "Study store (SQLite; created if absent)")
+      ->required();
+  study_run
+      ->add_option("--jobs,-j", study_run_args.jobs,
+                   "Local worker processes (under mpirun each rank is one worker)")
+      ->default_val(1);
+  study_run->add_flag("--quiet,-q", study_run_args.quiet, "No progress line and no tables");
+  study_run->footer(
+      "Resumes where a killed study stopped. Exit codes: 0 done, 1 some run failed or internal "
+      "error, 2 bad input.");
+  CLI::App* study_status =
+      study->add_subcommand("status", "Done / running / failed / unstable per grid point");
+  study_status->add_option("--db", study_status_args.db, "Study store (SQLite)")->required();
+
+  ccm::RecommendArgs rec;
+  CLI::App* recommend = app.add_subcommand(
+      "recommend", "Which impactor model to use at a design point, and why (from a study)");
+  recommend->add_option("--db", rec.db, "Study store (SQLite)")->required();
+  recommend->add_option("--er", rec.er, "Modulus ratio E_impactor / E_artifact")->required();
+  recommend->add_option("--rls", rec.rls, "Length ratio D_impactor / L_artifact")->required();
+  recommend->add_option("--ke", rec.ke, "Impactor kinetic energy [J]")->required();
+  recommend->add_option("--max-error", rec.max_error,
+                        "Use rigid when all its predicted final-state errors are below this");
+  recommend->add_flag("--json", rec.json, "Print the recommendation as JSON");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -30,5 +68,8 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "ccm: error: {}\nRun 'ccm --help' for usage.\n", e.what());
     return ccm::exit_code::bad_input;
   }
+  if (*study_run) return ccm::study_run_command(study_run_args);
+  if (*study_status) return ccm::study_status_command(study_status_args);
+  if (*recommend) return ccm::recommend_command(rec);
   return ccm::run_command(args);
 }

@@ -40,4 +40,11 @@ long RankContext::sum(long value) const {
   return total;
 }
 
+bool RankContext::broadcast_flag(bool flag) const {
+  if (!mpi_) return flag;
+  int value = flag ? 1 : 0;
+  MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return value != 0;
+}
+
 }  // namespace ccm::study

@@ -27,6 +27,8 @@ class RankContext {
   void barrier() const;
   // Sum of a count over all ranks (identity without MPI).
   long sum(long value) const;
+  // Rank 0's flag, on every rank (identity without MPI).
+  bool broadcast_flag(bool flag) const;
 
  private:
   bool mpi_ = false;

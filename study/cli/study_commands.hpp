@@ -1,0 +1,33 @@
+// `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE` and
+// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace ccm {
+
+struct StudyRunArgs {
+  std::filesystem::path grid;
+  std::filesystem::path db;
+  int jobs = 1;        // local worker processes (without MPI)
+  bool quiet = false;  // no progress line, no tables
+};
+
+struct StudyStatusArgs {
+  std::filesystem::path db;
+};
+
+struct RecommendArgs {
+  std::filesystem::path db;
+  double er = 1.0, rls = 1.0, ke = 0.0;
+  std::optional<double> max_error;
+  bool json = false;
+};
+
+// Each returns the process exit code (study/cli/run_command.hpp exit_code).
+int study_run_command(const StudyRunArgs& args);
+int study_status_command(const StudyStatusArgs& args);
+int recommend_command(const RecommendArgs& args);
+
+}  // namespace ccm

@@ -1,0 +1,254 @@
+// `ccm study run GRID --db FILE [--jobs N]`: every run of the grid not yet in the store, spread
+// over local worker processes (--jobs) or MPI ranks, then the metrics of every point, the
+// surface fits and the recommendation table. A killed study resumes: runs already completed
+// or unstable are skipped, an interrupted one is redone.
+#include <fmt/format.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <vector>
+
+#include "db/store/provenance.hpp"
+#include "db/store/study_store.hpp"
+#include "study/cli/run_command.hpp"
+#include "study/cli/study_commands.hpp"
+#include "study/cli/study_progress.hpp"
+#include "study/cli/study_tables.hpp"
+#include "study/fit/study_fits.hpp"
+#include "study/grid/grid_expand.hpp"
+#include "study/grid/grid_file.hpp"
+#include "study/metrics/point_metrics.hpp"
+#include "study/parallel/rank_context.hpp"
+#include "study/runner/content_hash.hpp"
+#include "study/runner/point_runner.hpp"
+#include "study/scene/scene.hpp"
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+using study::GridPoint;
+using study::GridSpec;
+using study::ImpactModel;
+
+struct PlannedRun {
+  GridPoint point;
+  ImpactModel model;
+};
+
+// Every run of the grid file, in a fixed order: the grid's points, then the convergence
+// points, each with its CCM run before its rigid run.
+std::vector<PlannedRun> plan_runs(const GridSpec& spec) {
+  std::vector<PlannedRun> runs;
+  for (const auto& points : {study::expand_grid(spec), study::expand_convergence(spec)})
+    for (const GridPoint& p : points)
+      for (ImpactModel m : {ImpactModel::ccm, ImpactModel::rigid}) runs.push_back({p, m});
+  return runs;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Binds the store to the study and registers every point (rank 0, before any worker starts).
+void prepare_store(const fs::path& db, const GridSpec& spec, const std::string& grid_hash,
+                   const std::vector<PlannedRun>& runs) {
+  db::StudyStore store(db);
+  store.open_study(spec.title, grid_hash);
+  for (const PlannedRun& r : runs) store.add_grid_point(r.point);
+}
+
+// Runs the share of `worker` out of `workers` (run i belongs to worker i mod workers) that is
+// not done yet; each run is committed on its own. Returns the number of failed runs.
+long run_share(const fs::path& db, const GridSpec& spec, const std::string& grid_hash,
+               const std::vector<PlannedRun>& runs, int worker, int workers,
+               const db::RunProvenance& provenance) {
+  db::StudyStore store(db);
+  store.open_study(spec.title, grid_hash);
+  long failed = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (i % static_cast<std::size_t>(workers) != static_cast<std::size_t>(worker)) continue;
+    const PlannedRun& r = runs[i];
+    if (!store.mark_running(r.point, r.model, provenance, db::utc_now())) continue;  // done
+    try {
+      store.record_run(study::run_point(spec, r.point, r.model), provenance);
+    } catch (const db::StoreError&) {
+      throw;  // the store itself is broken: stop this worker
+    } catch (const std::exception& e) {
+      store.record_failure(r.point, r.model, e.what(), provenance);
+      ++failed;
+    }
+  }
+  return failed;
+}
+
+// Forks `jobs` worker processes (each dies with its parent) and waits for all of them.
+// Returns the largest exit code.
+int run_forked_workers(int jobs, const std::function<int(int)>& work,
+                       const std::function<void()>& while_waiting) {
+  std::fflush(nullptr);
+  std::vector<pid_t> children;
+  for (int j = 0; j < jobs; ++j) {
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("cannot start a worker process (fork failed)");
+    if (pid == 0) {
+      prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed study leaves no orphan workers
+      int code = exit_code::internal_error;
+      try {
+        code = work(j);
+      } catch (const std::exception& e) {
+        fmt::print(stderr, "ccm: error: worker {}: {}\n", j, e.what());
+      }
+      std::fflush(nullptr);
+      _exit(code);
+    }
+    children.push_back(pid);
+  }
+  while_waiting();
+  int worst = 0;
+  for (pid_t pid : children) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    worst = std::max(worst, WIFEXITED(status) ? WEXITSTATUS(status) : exit_code::internal_error);
+  }
+  return worst;
+}
+
+// The metrics of every point whose two runs are stored, the fits over the main grid's points,
+// all saved in one transaction; returns them for printing.
+struct DerivedResults {
+  std::vector<study::PointMetrics> grid;         // the main grid's points
+  std::vector<study::PointMetrics> convergence;  // the convergence points
+  study::StudyFits fits;
+  std::vector<ConvergenceRow> convergence_rows;  // each run against the finest CCM run
+};
+
+std::vector<study::PointMetrics> point_metrics(const db::StudyStore& store,
+                                               const std::vector<GridPoint>& points) {
+  std::vector<study::PointMetrics> out;
+  for (const GridPoint& p : points) {
+    const auto ccm_run = store.load_run(p, ImpactModel::ccm);
+    const auto rigid_run = store.load_run(p, ImpactModel::rigid);
+    if (ccm_run && rigid_run) out.push_back(study::compute_point_metrics(*ccm_run, *rigid_run));
+  }
+  return out;
+}
+
+DerivedResults derive_results(const fs::path& db, const GridSpec& spec,
+                              const std::string& grid_hash) {
+  db::StudyStore store(db);
+  store.open_study(spec.title, grid_hash);
+  DerivedResults results;
+  results.grid = point_metrics(store, study::expand_grid(spec));
+  results.convergence = point_metrics(store, study::expand_convergence(spec));
+  results.fits = study::fit_study(results.grid);
+  std::vector<study::RunRecord> convergence_runs;
+  for (const GridPoint& p : study::expand_convergence(spec))
+    for (ImpactModel m : {ImpactModel::ccm, ImpactModel::rigid})
+      if (auto run = store.load_run(p, m)) convergence_runs.push_back(std::move(*run));
+  results.convergence_rows = compare_convergence_runs(convergence_runs);
+  auto transaction = store.begin();
+  for (const auto* set : {&results.grid, &results.convergence})
+    for (const study::PointMetrics& m : *set) store.save_metrics(m);
+  store.save_fits(results.fits);
+  transaction.commit();
+  return results;
+}
+
+long count_failed(const fs::path& db, const GridSpec& spec, const std::string& grid_hash) {
+  db::StudyStore store(db);
+  store.open_study(spec.title, grid_hash);
+  long failed = 0;
+  for (const db::PointStatus& s : store.status())
+    for (const auto& run : {s.ccm, s.rigid}) failed += run == db::RunStatus::failed ? 1 : 0;
+  return failed;
+}
+
+// Runs this process's share: forked workers (--jobs) or this MPI rank. Rank 0 shows progress.
+int run_all(const StudyRunArgs& args, const study::RankContext& ranks, const GridSpec& spec,
+            const std::string& grid_hash, const std::vector<PlannedRun>& runs) {
+  const int jobs = ranks.size() > 1 ? 1 : args.jobs;
+  const auto provenance = db::current_provenance(grid_hash, ranks.size(), jobs);
+  auto work = [&](int worker) {
+    const int workers = ranks.size() * jobs;
+    const int id = ranks.rank() * jobs + worker;
+    return run_share(args.db, spec, grid_hash, runs, id, workers, provenance) > 0
+               ? exit_code::internal_error
+               : exit_code::completed;
+  };
+  std::unique_ptr<StudyProgress> progress;
+  auto show_progress = [&] {
+    if (ranks.is_root() && !args.quiet)
+      progress = std::make_unique<StudyProgress>(args.db, static_cast<long>(runs.size()));
+  };
+  if (jobs > 1) return run_forked_workers(jobs, work, show_progress);
+  show_progress();
+  return work(0);
+}
+
+int study_run(const StudyRunArgs& args, const study::RankContext& ranks) {
+  const GridSpec spec = study::parse_grid_file(args.grid);  // every rank: same result
+  const std::string grid_hash = study::fnv1a64(read_text(args.grid));
+  const std::vector<PlannedRun> runs = plan_runs(spec);
+
+  std::string setup_error;
+  if (ranks.is_root()) try {
+      prepare_store(args.db, spec, grid_hash, runs);
+    } catch (const db::StoreError& e) {
+      setup_error = e.what();
+    }
+  if (ranks.broadcast_flag(!setup_error.empty())) {
+    if (ranks.is_root()) fmt::print(stderr, "ccm: error: {}\n", setup_error);
+    return exit_code::bad_input;
+  }
+  if (ranks.is_root() && !args.quiet)
+    fmt::print("study \"{}\": {} runs ({} points x 2 models) on {} worker(s), store {}\n",
+               spec.title, runs.size(), runs.size() / 2, ranks.size() * args.jobs,
+               args.db.string());
+
+  run_all(args, ranks, spec, grid_hash, runs);
+  ranks.barrier();
+  if (!ranks.is_root()) return exit_code::completed;
+
+  const DerivedResults results = derive_results(args.db, spec, grid_hash);
+  if (!args.quiet) {
+    print_point_table(stdout, results.grid, results.fits);
+    print_convergence_table(stdout, results.convergence_rows);
+  }
+  if (const long failed = count_failed(args.db, spec, grid_hash); failed > 0) {
+    fmt::print(stderr, "ccm: error: {} run(s) failed; `ccm study status --db {}` names them\n",
+               failed, args.db.string());
+    return exit_code::internal_error;
+  }
+  return exit_code::completed;
+}
+
+}  // namespace
+
+int study_run_command(const StudyRunArgs& args) {
+  try {
+    study::RankContext ranks;
+    if (args.jobs < 1) {
+      fmt::print(stderr, "ccm: error: --jobs must be at least 1 (got {})\n", args.jobs);
+      return exit_code::bad_input;
+    }
+    return study_run(args, ranks);
+  } catch (const SceneError& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::internal_error;
+  }
+}
+
+}  // namespace ccm

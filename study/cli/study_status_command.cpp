@@ -1,0 +1,56 @@
+// `ccm study status --db FILE`: done / running / failed / unstable per grid point.
+#include <fmt/format.h>
+
+#include <map>
+
+#include "db/store/study_store.hpp"
+#include "study/cli/run_command.hpp"
+#include "study/cli/study_commands.hpp"
+#include "study/cli/study_store_open.hpp"
+
+namespace ccm {
+namespace {
+
+std::string run_text(const std::optional<db::RunStatus>& run) {
+  return run ? std::string(db::to_string(*run)) : std::string("pending");
+}
+
+void print_status(const std::vector<db::PointStatus>& points) {
+  fmt::print("{:>5} {:>8} {:>5} {:>6} {:>10}  {:>9} {:>9}  {}\n", "point", "ER", "RLS", "KE[J]",
+             "state", "ccm", "rigid", "reason");
+  std::map<std::string, int> totals;
+  for (const auto& s : points) {
+    const auto& p = s.point;
+    std::string extra;
+    for (const auto& [name, value] : p.other_axes) extra += fmt::format(" {}={:g}", name, value);
+    fmt::print("{:>5} {:>8.0e} {:>5.2f} {:>6.0f} {:>10}  {:>9} {:>9}  {}{}\n", p.index,
+               p.modulus_ratio, p.length_ratio, p.kinetic_energy, db::to_string(s.state),
+               run_text(s.ccm), run_text(s.rigid), s.reason, extra);
+    ++totals[std::string(db::to_string(s.state))];
+  }
+  std::string line;
+  for (const auto& [state, n] : totals)
+    line += fmt::format("{}{} {}", line.empty() ? "" : ", ", n, state);
+  fmt::print("{} points: {}\n", points.size(), line.empty() ? "none" : line);
+}
+
+}  // namespace
+
+int study_status_command(const StudyStatusArgs& args) {
+  try {
+    auto store = open_study_store(args.db);
+    print_status(store->status());
+    return exit_code::completed;
+  } catch (const StudyInputError& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const db::StoreError& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::internal_error;
+  }
+}
+
+}  // namespace ccm

@@ -1,0 +1,112 @@
+#include "study/cli/study_tables.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include "study/metrics/model_errors.hpp"
+#include "study/recommend/recommendation.hpp"
+
+namespace ccm {
+namespace {
+
+using study::ImpactModel;
+
+double mesh_scale(const study::GridPoint& p) {
+  const auto it = p.other_axes.find("mesh_scale");
+  return it == p.other_axes.end() ? 1.0 : it->second;
+}
+
+study::ArtifactErrors final_state_errors(const study::ArtifactHistory& run,
+                                         const study::ArtifactHistory& reference) {
+  return {study::final_state_error(reference.u_mean, run.u_mean),
+          study::final_state_error(reference.u_max, run.u_max),
+          study::final_state_error(reference.kinetic_energy, run.kinetic_energy)};
+}
+
+// "ccm" or "rigid" with the reason when the fits cannot say.
+std::string recommended(const study::StudyFits& fits, const study::GridPoint& p) {
+  try {
+    const auto r = study::recommend(fits, {p.modulus_ratio, p.length_ratio, p.kinetic_energy});
+    return std::string(study::to_string(r.model));
+  } catch (const std::exception&) {
+    return "-";
+  }
+}
+
+}  // namespace
+
+std::vector<ConvergenceRow> compare_convergence_runs(const std::vector<study::RunRecord>& runs) {
+  using Key = std::tuple<double, double, double>;
+  std::map<Key, const study::RunRecord*> finest;
+  auto key = [](const study::RunRecord& r) {
+    return Key{r.point.modulus_ratio, r.point.length_ratio, r.point.kinetic_energy};
+  };
+  for (const auto& r : runs) {
+    if (r.model != ImpactModel::ccm || !r.completed()) continue;
+    auto& best = finest[key(r)];
+    if (best == nullptr || mesh_scale(r.point) < mesh_scale(best->point)) best = &r;
+  }
+  std::vector<ConvergenceRow> rows;
+  for (const auto& r : runs) {
+    ConvergenceRow row{r.point, r.model, false, false, {}, r.wall_seconds, r.n_elements};
+    const auto it = finest.find(key(r));
+    if (it != finest.end() && r.completed() &&
+        it->second->artifact.time.size() == r.artifact.time.size()) {
+      row.reference = it->second == &r;
+      row.usable = true;
+      row.final_state = final_state_errors(r.artifact, it->second->artifact);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void print_point_table(std::FILE* out, const std::vector<study::PointMetrics>& points,
+                       const study::StudyFits& fits) {
+  fmt::print(out,
+             "\nGrid points: final-state errors of rigid against CCM (eqs. 2.37-2.39), runtime "
+             "ratio RTR = NT_ccm/NT_rigid (2.40), recommendation from the fitted surfaces\n");
+  fmt::print(out, "{:>8} {:>5} {:>6}  {:>9} {:>9}  {:>8} {:>8} {:>8}  {:>9}  {:>9}  {}\n", "ER",
+             "RLS", "KE[J]", "ccm", "rigid", "e_umean", "e_umax", "e_KE", "RTR", "wall[s]", "use");
+  for (const auto& m : points) {
+    const auto& p = m.point;
+    fmt::print(out, "{:>8.0e} {:>5.2f} {:>6.0f}  {:>9} {:>9}  ", p.modulus_ratio, p.length_ratio,
+               p.kinetic_energy, m.ccm.verdict, m.rigid.verdict);
+    if (!m.usable) {
+      fmt::print(out, "left out of the fits: {}\n", m.excluded_reason);
+      continue;
+    }
+    fmt::print(out, "{:>8.3f} {:>8.3f} {:>8.3f}  {:>9.3g}  {:>9.3g}  {}\n", m.final_state.u_mean,
+               m.final_state.u_max, m.final_state.kinetic_energy, m.runtime_ratio,
+               m.ccm.wall_seconds + m.rigid.wall_seconds, recommended(fits, p));
+  }
+  for (const auto& note : fits.notes) fmt::print(out, "note: {}\n", note);
+}
+
+void print_convergence_table(std::FILE* out, const std::vector<ConvergenceRow>& rows) {
+  if (rows.empty()) return;
+  fmt::print(out,
+             "\nConvergence: final-state errors against the finest CCM run of each point, next "
+             "to each run's wall time\n");
+  fmt::print(out, "{:>8} {:>5} {:>6} {:>6} {:>6} {:>8}  {:>8} {:>8} {:>8}  {:>9}\n", "ER", "RLS",
+             "KE[J]", "model", "scale", "elements", "e_umean", "e_umax", "e_KE", "wall[s]");
+  for (const auto& r : rows) {
+    const auto& p = r.point;
+    fmt::print(out, "{:>8.0e} {:>5.2f} {:>6.0f} {:>6} {:>6.2f} {:>8}  ", p.modulus_ratio,
+               p.length_ratio, p.kinetic_energy, study::to_string(r.model), mesh_scale(p),
+               r.n_elements);
+    if (r.reference)
+      fmt::print(out, "{:>26}  ", "(reference)");
+    else if (!r.usable)
+      fmt::print(out, "{:>26}  ", "(not comparable)");
+    else
+      fmt::print(out, "{:>8.4f} {:>8.4f} {:>8.4f}  ", r.final_state.u_mean, r.final_state.u_max,
+                 r.final_state.kinetic_energy);
+    fmt::print(out, "{:>9.3g}\n", r.wall_seconds);
+  }
+}
+
+}  // namespace ccm
