@@ -1,0 +1,235 @@
+// `ccm study run / status` and `ccm recommend` end to end on a tiny grid: resume after SIGKILL,
+// parallel workers and MPI ranks giving the serial results, two writers on one file, bad input.
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <csignal>
+#include <thread>
+
+#include "db/store/study_store.hpp"
+#include "study/grid/grid_expand.hpp"
+#include "study/grid/grid_file.hpp"
+#include "tests/support/temp_dir.hpp"
+
+extern char** environ;
+
+using namespace ccm;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Two points x two models, each run well under a second: coarse meshes, 30 ms of simulated
+// time, first touch at 20 ms.
+const std::string kTinyGrid = R"(title = "tiny"
+[axes]
+ER = [1.0, 100.0]
+RLS = [0.5]
+KE = [0.001]
+[time]
+contact_time = 0.02
+end = 0.03
+output_interval = 1e-3
+[artifact]
+length = 1.0
+thickness = 0.25
+E = 1000.0
+nu = 0.3
+rho = 1000.0
+mesh_size = 0.25
+support = "base"
+[impactor]
+nu = 0.3
+rho = 1000.0
+mesh_size_ratio = 0.5
+[contact]
+penalty = 1.0e6
+)";
+
+std::string read_file(const fs::path& file) {
+  std::ifstream in(file);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs a shell command; returns its exit code, stderr into `err`.
+int shell(const std::string& command, const fs::path& err_file, std::string& err) {
+  const int status = std::system(fmt::format("{} 2> '{}'", command, err_file.string()).c_str());
+  err = read_file(err_file);
+  REQUIRE(WIFEXITED(status));
+  return WEXITSTATUS(status);
+}
+
+std::string study_run(const fs::path& grid, const fs::path& db, const std::string& extra = "") {
+  return fmt::format("'{}' study run '{}' --db '{}' --quiet {} > /dev/null", CCM_BINARY,
+                     grid.string(), db.string(), extra);
+}
+
+// Every stored run's artifact histories, in point and model order.
+std::vector<study::ArtifactHistory> stored_histories(const fs::path& db, const fs::path& grid) {
+  db::StudyStore store(db);
+  REQUIRE(store.open_existing_study());
+  std::vector<study::ArtifactHistory> out;
+  for (const auto& p : study::expand_grid(study::parse_grid_file(grid)))
+    for (auto m : {study::ImpactModel::ccm, study::ImpactModel::rigid}) {
+      const auto run = store.load_run(p, m);
+      REQUIRE(run.has_value());
+      out.push_back(run->artifact);
+    }
+  return out;
+}
+
+void require_same_histories(const std::vector<study::ArtifactHistory>& a,
+                            const std::vector<study::ArtifactHistory>& b) {
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {  // deterministic runs: bit-identical
+    CHECK(a[i].time == b[i].time);
+    CHECK(a[i].u_mean == b[i].u_mean);
+    CHECK(a[i].u_max == b[i].u_max);
+    CHECK(a[i].kinetic_energy == b[i].kinetic_energy);
+  }
+}
+
+long count_runs(const fs::path& db, std::optional<db::RunStatus> status) {
+  db::StudyStore store(db);
+  if (!store.open_existing_study()) return 0;
+  long n = 0;
+  for (const auto& s : store.status())
+    for (const auto& run : {s.ccm, s.rigid})
+      if (run && (!status || *run == *status)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("ccm study run: a serial study completes, resumes without rerunning, reports status",
+          "[study][cli]") {
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("tiny.toml", kTinyGrid), db = tmp.path / "s.sqlite";
+  std::string err;
+  REQUIRE(shell(study_run(grid, db), tmp.path / "err", err) == 0);
+  CHECK(count_runs(db, db::RunStatus::completed) == 4);
+  const auto first = stored_histories(db, grid);
+  REQUIRE(first[0].time.size() == 31);  // 0 ... 30 ms every 1 ms
+
+  // Again: nothing left to run, the same results.
+  REQUIRE(shell(study_run(grid, db), tmp.path / "err", err) == 0);
+  require_same_histories(first, stored_histories(db, grid));
+  CHECK(count_runs(db, std::nullopt) == 4);
+
+  std::string out = tmp.path / "status.txt";
+  REQUIRE(shell(fmt::format("'{}' study status --db '{}' > '{}'", CCM_BINARY, db.string(), out),
+                tmp.path / "err", err) == 0);
+  CHECK_THAT(read_file(out), Catch::Contains("2 points: 2 done"));
+
+  const std::string rec = (tmp.path / "rec.json").string();
+  REQUIRE(shell(fmt::format("'{}' recommend --db '{}' --er 10 --rls 0.5 --ke 0.001 --json > '{}'",
+                            CCM_BINARY, db.string(), rec),
+                tmp.path / "err", err) == 0);
+  CHECK_THAT(read_file(rec), Catch::Contains("\"model\""));
+}
+
+TEST_CASE("ccm study run: killed with SIGKILL mid-study, it resumes to the uninterrupted result",
+          "[study][cli]") {
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("tiny.toml", kTinyGrid);
+  const fs::path reference = tmp.path / "ref.sqlite", killed = tmp.path / "killed.sqlite";
+  std::string err;
+  REQUIRE(shell(study_run(grid, reference), tmp.path / "err", err) == 0);
+
+  // Start a study, wait for its first committed run, kill it at once (the next run is then
+  // under way: its row says "running").
+  const std::string bin = CCM_BINARY, g = grid.string(), d = killed.string();
+  std::vector<char*> argv = {bin.data(),
+                             const_cast<char*>("study"),
+                             const_cast<char*>("run"),
+                             const_cast<char*>(g.c_str()),
+                             const_cast<char*>("--db"),
+                             const_cast<char*>(d.c_str()),
+                             const_cast<char*>("--quiet"),
+                             nullptr};
+  pid_t pid = 0;
+  REQUIRE(posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ) == 0);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (count_runs(killed, db::RunStatus::completed) < 1 &&
+         std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  REQUIRE(WIFSIGNALED(status));  // it was killed, not finished
+  const long done_before = count_runs(killed, db::RunStatus::completed);
+  CHECK(done_before >= 1);
+  CHECK(done_before < 4);
+
+  REQUIRE(shell(study_run(grid, killed), tmp.path / "err", err) == 0);
+  CHECK(count_runs(killed, std::nullopt) == 4);  // one row per run: no duplicates
+  CHECK(count_runs(killed, db::RunStatus::completed) == 4);
+  require_same_histories(stored_histories(reference, grid), stored_histories(killed, grid));
+}
+
+TEST_CASE("ccm study run: --jobs 2 and two concurrent studies on one file give the serial result",
+          "[study][cli]") {
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("tiny.toml", kTinyGrid);
+  const fs::path serial = tmp.path / "serial.sqlite", jobs = tmp.path / "jobs.sqlite",
+                 shared = tmp.path / "shared.sqlite";
+  std::string err;
+  REQUIRE(shell(study_run(grid, serial), tmp.path / "err", err) == 0);
+  REQUIRE(shell(study_run(grid, jobs, "--jobs 2"), tmp.path / "err", err) == 0);
+  require_same_histories(stored_histories(serial, grid), stored_histories(jobs, grid));
+
+  // Two studies on one file at once: both succeed, each run stored once.
+  const std::string both =
+      fmt::format("({} & {} ; wait)", study_run(grid, shared), study_run(grid, shared));
+  REQUIRE(shell(fmt::format("sh -c \"{}\"", both), tmp.path / "err", err) == 0);
+  CHECK(count_runs(shared, std::nullopt) == 4);
+  require_same_histories(stored_histories(serial, grid), stored_histories(shared, grid));
+}
+
+TEST_CASE("ccm study run under mpirun -np 2 gives the serial result", "[study][cli][mpi]") {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) {
+    WARN("mpirun not found: the MPI study test is skipped");
+    return;
+  }
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("tiny.toml", kTinyGrid);
+  const fs::path serial = tmp.path / "serial.sqlite", ranks = tmp.path / "ranks.sqlite";
+  std::string err;
+  REQUIRE(shell(study_run(grid, serial), tmp.path / "err", err) == 0);
+  // Open MPI's own allocations are not ours to leak-check under the sanitizer build.
+  const std::string mpi =
+      fmt::format("ASAN_OPTIONS=detect_leaks=0 mpirun --allow-run-as-root --oversubscribe -np 2 {}",
+                  study_run(grid, ranks));
+  INFO(err);
+  REQUIRE(shell(mpi, tmp.path / "err", err) == 0);
+  require_same_histories(stored_histories(serial, grid), stored_histories(ranks, grid));
+}
+
+TEST_CASE("ccm study/recommend: bad input exits 2 with a clear message and writes nothing",
+          "[study][cli]") {
+  test::TempDir tmp;
+  std::string err;
+  const fs::path missing = tmp.path / "missing.sqlite";
+  CHECK(shell(fmt::format("'{}' study status --db '{}'", CCM_BINARY, missing.string()),
+              tmp.path / "err", err) == 2);
+  CHECK(err == "ccm: error: " + missing.string() +
+                   ": no such study database (run `ccm study run` first)\n");
+  CHECK(!fs::exists(missing));
+
+  const fs::path foreign = tmp.write("foreign.sqlite", "this is not a database\n");
+  CHECK(shell(fmt::format("'{}' recommend --db '{}' --er 1 --rls 1 --ke 10", CCM_BINARY,
+                          foreign.string()),
+              tmp.path / "err", err) == 2);
+  CHECK_THAT(err, Catch::StartsWith("ccm: error: " + foreign.string()));
+
+  const fs::path bad_grid = tmp.write("bad.toml", "title = \"x\"\n[axes]\nER = [-1.0]\n");
+  const fs::path db = tmp.path / "new.sqlite";
+  CHECK(shell(study_run(bad_grid, db), tmp.path / "err", err) == 2);
+  CHECK_THAT(err, Catch::StartsWith("ccm: error: " + bad_grid.string() + ":3"));
+  CHECK(!fs::exists(db));  // nothing created for a grid that cannot run
+}
