@@ -2,7 +2,7 @@
 // runs, run in-process: a measurement, printed as a table (per-run wall time, steps, verdict,
 // artifact kinetic energy at t_f for both models). It asserts only what must hold whatever the
 // physics shows: every run completes, both models of a point share the sample times, and the
-// artifact is at rest before the first touch at t_c.
+// artifact is at rest (to round-off) before the first touch at t_c.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -65,8 +65,9 @@ void run_and_check(const GridSpec& g, const std::vector<GridPoint>& points) {
     CHECK(c.artifact.time == r.artifact.time);
     for (size_t i = 0; i < c.artifact.time.size(); ++i)
       if (c.artifact.time[i] < g.time.contact_time - 1e-9) {
-        CHECK(c.artifact.kinetic_energy[i] == 0.0);
-        CHECK(r.artifact.kinetic_energy[i] == 0.0);
+        // At rest up to the round-off of the internal forces at F = I (~1e-28 J measured).
+        CHECK(c.artifact.kinetic_energy[i] < 1e-12 * p.kinetic_energy);
+        CHECK(r.artifact.kinetic_energy[i] < 1e-12 * p.kinetic_energy);
       }
   }
   fmt::print("total run wall time (set-up excluded): {:.1f} s\n", wall);
