@@ -73,6 +73,13 @@ void StudyStore::open_study(const std::string& name, const std::string& grid_has
   transaction.commit();
 }
 
+bool StudyStore::open_existing_study() {
+  Statement existing(*connection_, "SELECT id FROM studies ORDER BY id LIMIT 1");
+  if (!existing.step()) return false;
+  study_id_ = existing.column_int(0);
+  return true;
+}
+
 std::string StudyStore::study_name() const {
   Statement query(*connection_, "SELECT name FROM studies WHERE id = ?1");
   query.bind(1, study_id());

@@ -53,7 +53,11 @@ int recommend_command(const RecommendArgs& args) {
       throw StudyInputError(args.db.string() +
                             ": the study has no fitted surfaces yet (no point with both runs "
                             "completed): finish `ccm study run` first");
-    study::RecommendQuery query{args.er, args.rls, args.ke, args.max_error};
+    study::RecommendQuery query;
+    query.modulus_ratio = args.er;
+    query.length_ratio = args.rls;
+    query.kinetic_energy = args.ke;
+    query.max_error = args.max_error;
     const study::Recommendation r = study::recommend(fits, query);
     if (args.json)
       fmt::print("{}\n", recommendation_json(args, r).dump(2));

@@ -23,7 +23,7 @@ void print_status(const std::vector<db::PointStatus>& points) {
     const auto& p = s.point;
     std::string extra;
     for (const auto& [name, value] : p.other_axes) extra += fmt::format(" {}={:g}", name, value);
-    fmt::print("{:>5} {:>8.0e} {:>5.2f} {:>6.0f} {:>10}  {:>9} {:>9}  {}{}\n", p.index,
+    fmt::print("{:>5} {:>8.0e} {:>5.2f} {:>6g} {:>10}  {:>9} {:>9}  {}{}\n", p.index,
                p.modulus_ratio, p.length_ratio, p.kinetic_energy, db::to_string(s.state),
                run_text(s.ccm), run_text(s.rigid), s.reason, extra);
     ++totals[std::string(db::to_string(s.state))];

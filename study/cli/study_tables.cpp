@@ -29,7 +29,11 @@ study::ArtifactErrors final_state_errors(const study::ArtifactHistory& run,
 // "ccm" or "rigid" with the reason when the fits cannot say.
 std::string recommended(const study::StudyFits& fits, const study::GridPoint& p) {
   try {
-    const auto r = study::recommend(fits, {p.modulus_ratio, p.length_ratio, p.kinetic_energy});
+    study::RecommendQuery query;
+    query.modulus_ratio = p.modulus_ratio;
+    query.length_ratio = p.length_ratio;
+    query.kinetic_energy = p.kinetic_energy;
+    const auto r = study::recommend(fits, query);
     return std::string(study::to_string(r.model));
   } catch (const std::exception&) {
     return "-";
@@ -73,7 +77,7 @@ void print_point_table(std::FILE* out, const std::vector<study::PointMetrics>& p
              "RLS", "KE[J]", "ccm", "rigid", "e_umean", "e_umax", "e_KE", "RTR", "wall[s]", "use");
   for (const auto& m : points) {
     const auto& p = m.point;
-    fmt::print(out, "{:>8.0e} {:>5.2f} {:>6.0f}  {:>9} {:>9}  ", p.modulus_ratio, p.length_ratio,
+    fmt::print(out, "{:>8.0e} {:>5.2f} {:>6g}  {:>9} {:>9}  ", p.modulus_ratio, p.length_ratio,
                p.kinetic_energy, m.ccm.verdict, m.rigid.verdict);
     if (!m.usable) {
       fmt::print(out, "left out of the fits: {}\n", m.excluded_reason);
@@ -95,7 +99,7 @@ void print_convergence_table(std::FILE* out, const std::vector<ConvergenceRow>& 
              "KE[J]", "model", "scale", "elements", "e_umean", "e_umax", "e_KE", "wall[s]");
   for (const auto& r : rows) {
     const auto& p = r.point;
-    fmt::print(out, "{:>8.0e} {:>5.2f} {:>6.0f} {:>6} {:>6.2f} {:>8}  ", p.modulus_ratio,
+    fmt::print(out, "{:>8.0e} {:>5.2f} {:>6g} {:>6} {:>6.2f} {:>8}  ", p.modulus_ratio,
                p.length_ratio, p.kinetic_energy, study::to_string(r.model), mesh_scale(p),
                r.n_elements);
     if (r.reference)

@@ -143,7 +143,7 @@ TEST_CASE("ccm study run: killed with SIGKILL mid-study, it resumes to the unint
 
   // Start a study, wait for its first committed run, kill it at once (the next run is then
   // under way: its row says "running").
-  const std::string bin = CCM_BINARY, g = grid.string(), d = killed.string();
+  std::string bin = CCM_BINARY, g = grid.string(), d = killed.string();
   std::vector<char*> argv = {bin.data(),
                              const_cast<char*>("study"),
                              const_cast<char*>("run"),
