@@ -1,3 +1,11 @@
+// GCC 12 reports -Wmaybe-uninitialized inside Eigen's AVX-512 matrix-vector product (a false
+// positive on _mm512_undefined_pd, GCC bug 105593) when built with -march=native on an AVX-512
+// machine. The warning is emitted after inlining, so it is silenced for this file only,
+// before the first include (GCC applies the pragma by source location).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 #include "study/fit/polynomial_surface.hpp"
 
 #include <Eigen/QR>

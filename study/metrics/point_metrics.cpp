@@ -1,5 +1,6 @@
 #include "study/metrics/point_metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 

@@ -44,7 +44,8 @@ struct PointMetrics {
 // Derives the metrics of one point from its CCM and rigid runs. The runs must belong to the
 // same grid point and share their sample times (relative tolerance 1e-9 of t_final); an
 // unstable run gives an unusable point with the reason, never an exception. Throws
-// std::invalid_argument when the records are not the two models of one point.
+// std::invalid_argument when the records are not the two models of one point, or when a
+// completed run lacks a positive AIR or ISTS.
 PointMetrics compute_point_metrics(const RunRecord& ccm, const RunRecord& rigid);
 
 }  // namespace ccm::study

@@ -69,6 +69,20 @@ void warn_outside_grid(const StudyFits& fits, const std::vector<double>& levels,
   }
 }
 
+// Polynomial surfaces can leave the physical range, mostly when extrapolated.
+void warn_unphysical(const Prediction& p, std::vector<std::string>& warn) {
+  const ArtifactErrors& e = p.final_state;
+  if (std::min({e.u_mean, e.u_max, e.kinetic_energy}) < 0.0)
+    warn.push_back(
+        "a predicted final-state error is negative: the fitted surface is outside "
+        "its physical range here; treat the prediction as unreliable");
+  if (!(p.runtime_ratio > 0.0))
+    warn.push_back(
+        fmt::format("the predicted runtime ratio {:.3g} is not positive: the fitted "
+                    "surface is outside its physical range here",
+                    p.runtime_ratio));
+}
+
 void decide(const RecommendQuery& q, Recommendation& r) {
   const ArtifactErrors& e = r.predicted.final_state;
   const ArtifactErrors& w = r.predicted.weighting;
@@ -105,6 +119,7 @@ Recommendation recommend(const StudyFits& fits, const RecommendQuery& query) {
                              p(Metric::final_kinetic_energy)};
   r.predicted.runtime_ratio = p(Metric::runtime_ratio);
   r.predicted.weighting = {p(Metric::w_u_mean), p(Metric::w_u_max), p(Metric::w_kinetic_energy)};
+  warn_unphysical(r.predicted, r.warnings);
   decide(query, r);
   return r;
 }

@@ -8,6 +8,7 @@
 #include "db/store/study_store.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/metrics/point_metrics.hpp"
+#include "study/recommend/recommendation.hpp"
 #include "tests/db/scratch_dir.hpp"
 #include "tests/db/store_queries.hpp"
 #include "tests/study/metrics/synthetic_runs.hpp"
@@ -184,6 +185,16 @@ TEST_CASE("metrics and fits round-trip; unusable points stay visible", "[db]") {
     CHECK(g->fit.samples.size() == 11);
     CHECK(g->fit.surface(2.5, 0.7) == f.fit.surface(2.5, 0.7));
   }
+  // The loaded fits recommend exactly what the fitted ones do (coefficients stored as REAL).
+  study::RecommendQuery q;
+  q.modulus_ratio = 300.0;
+  q.length_ratio = 0.8;
+  q.kinetic_energy = 50.0;
+  const study::Recommendation from_memory = study::recommend(fits, q);
+  const study::Recommendation from_store = study::recommend(back, q);
+  CHECK(from_store.model == from_memory.model);
+  CHECK(from_store.reason == from_memory.reason);
+  CHECK(from_store.predicted.weighting.u_max == from_memory.predicted.weighting.u_max);
   REQUIRE(back.excluded.size() == 1);
   CHECK(back.excluded[0].point_index == 4);
   CHECK(back.excluded[0].reason.rfind("ccm run unstable", 0) == 0);

@@ -1,7 +1,6 @@
 // Schema versioning: an older store is migrated in place; foreign or newer files are refused.
 #include <catch2/catch.hpp>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include "db/schema/migrations.hpp"
@@ -14,8 +13,10 @@ using namespace ccm;
 namespace {
 
 std::string file_bytes(const std::filesystem::path& file) {
+  std::string bytes(std::filesystem::file_size(file), '\0');
   std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  return bytes;
 }
 
 std::string open_error(const std::filesystem::path& file) {

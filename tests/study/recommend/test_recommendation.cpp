@@ -96,7 +96,10 @@ TEST_CASE("queries outside the studied grid are answered with warnings", "[recom
   CHECK(mentions(r.warnings, "KE = 500 J lies outside the studied levels [10, 100] J"));
   CHECK(mentions(r.warnings, "log10 ER = 8 lies outside"));
   CHECK(mentions(r.warnings, "RLS = 2 lies outside"));
-  CHECK(r.predicted.final_state.u_mean == Approx(2.0 * (0.3 - 0.05 * 8.0)).epsilon(1e-12));
+  // 2 (0.3 - 0.05 x 8) = -0.2: extrapolation left the physical range, and says so.
+  CHECK(r.predicted.final_state.u_mean == Approx(-0.2).epsilon(1e-12));
+  CHECK(mentions(r.warnings, "a predicted final-state error is negative"));
+  CHECK(r.warnings.size() == 4);
 }
 
 TEST_CASE("bad queries and missing fits are refused with a clear message", "[recommend]") {
