@@ -68,7 +68,9 @@ void parse_time(const StrictTable& root, GridSpec& g) {
   time.output_interval = positive(t, "output_interval");
   if (time.output_interval > time.end)
     t.fail("output_interval", fmt::format("must be <= end = {}", time.end));
-  time.dt_safety = in_range(t, "dt_safety", t.number_or("dt_safety", 0.9), 1e-3, 1.0, "(0, 1]");
+  time.dt_safety = t.number_or("dt_safety", time.dt_safety);
+  if (!(time.dt_safety > 0.0 && time.dt_safety <= 1.0))
+    t.fail("dt_safety", fmt::format("must lie in (0, 1] (got {})", time.dt_safety));
   time.max_steps = t.integer("max_steps").value_or(0);
   if (time.max_steps < 0) t.fail("max_steps", "must be >= 0 (0: no limit)");
 }
@@ -98,8 +100,9 @@ void parse_impactor(const StrictTable& root, GridSpec& g) {
   t.allow_only({"nu", "rho", "mesh_size_ratio"});
   g.impactor.nu = poisson(t, "nu");
   g.impactor.rho = positive(t, "rho");
-  const double ratio = t.need_number("mesh_size_ratio");
-  g.impactor.mesh_size_ratio = in_range(t, "mesh_size_ratio", ratio, 1e-6, 0.5, "(0, 0.5]");
+  g.impactor.mesh_size_ratio = t.need_number("mesh_size_ratio");
+  const std::string problem = axis_value_problem("impactor_mesh_ratio", g.impactor.mesh_size_ratio);
+  if (!problem.empty()) t.fail("mesh_size_ratio", problem);
 }
 
 void parse_contact(const StrictTable& root, GridSpec& g) {
