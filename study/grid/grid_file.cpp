@@ -18,9 +18,12 @@ double positive(const StrictTable& t, std::string_view key) {
   return v;
 }
 
-double in_range(const StrictTable& t, std::string_view key, double v, double lo, double hi,
-                std::string_view range) {
-  if (!(v >= lo && v <= hi)) t.fail(key, fmt::format("must lie in {} (got {})", range, v));
+// The value of `key` (or `fallback` when absent), checked like the axis of the same meaning.
+double checked_as_axis(const StrictTable& t, std::string_view key, std::string_view axis,
+                       double fallback) {
+  const double v = t.number_or(key, fallback);
+  const std::string problem = axis_value_problem(axis, v);
+  if (!problem.empty()) t.fail(key, problem);
   return v;
 }
 
@@ -100,9 +103,8 @@ void parse_impactor(const StrictTable& root, GridSpec& g) {
   t.allow_only({"nu", "rho", "mesh_size_ratio"});
   g.impactor.nu = poisson(t, "nu");
   g.impactor.rho = positive(t, "rho");
-  g.impactor.mesh_size_ratio = t.need_number("mesh_size_ratio");
-  const std::string problem = axis_value_problem("impactor_mesh_ratio", g.impactor.mesh_size_ratio);
-  if (!problem.empty()) t.fail("mesh_size_ratio", problem);
+  if (!t.has("mesh_size_ratio")) t.fail("mesh_size_ratio", "required key is missing");
+  g.impactor.mesh_size_ratio = checked_as_axis(t, "mesh_size_ratio", "impactor_mesh_ratio", 0.0);
 }
 
 void parse_contact(const StrictTable& root, GridSpec& g) {
@@ -110,11 +112,9 @@ void parse_contact(const StrictTable& root, GridSpec& g) {
   if (!t) return;
   t->allow_only({"penalty", "restitution", "friction"});
   GridContact& c = g.contact;
-  c.penalty = t->number_or("penalty", c.penalty);
-  if (!(c.penalty > 0.0)) t->fail("penalty", fmt::format("must be > 0 (got {})", c.penalty));
-  c.restitution = in_range(*t, "restitution", t->number_or("restitution", 0.0), 0.0, 1.0, "[0, 1]");
-  c.friction = t->number_or("friction", 0.0);
-  if (!(c.friction >= 0.0)) t->fail("friction", fmt::format("must be >= 0 (got {})", c.friction));
+  c.penalty = checked_as_axis(*t, "penalty", "penalty", c.penalty);
+  c.restitution = checked_as_axis(*t, "restitution", "restitution", c.restitution);
+  c.friction = checked_as_axis(*t, "friction", "friction", c.friction);
 }
 
 ConvergencePoint parse_convergence_point(const StrictTable& t) {
