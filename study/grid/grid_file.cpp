@@ -36,14 +36,13 @@ double poisson(const StrictTable& t, std::string_view key) {
 // An axis: a non-empty array of distinct allowed values, kept in the file's order.
 // `axis` names the range check (point_parameters.hpp), `key` the array.
 std::vector<double> axis_values(const StrictTable& t, std::string_view key, std::string_view axis) {
-  const std::string_view name = key;
-  const std::vector<double> values = t.number_array(name);
+  const std::vector<double> values = t.number_array(key);
   for (size_t i = 0; i < values.size(); ++i) {
     const std::string problem = axis_value_problem(axis, values[i]);
-    if (!problem.empty()) t.fail(name, fmt::format("[{}] {}", i, problem));
-    if (std::find(values.begin(), values.begin() + static_cast<long>(i), values[i]) !=
-        values.begin() + static_cast<long>(i))
-      t.fail(name, fmt::format("[{}] repeats the value {}", i, values[i]));
+    if (!problem.empty()) t.fail(key, fmt::format("[{}] {}", i, problem));
+    const auto earlier_end = values.begin() + static_cast<long>(i);
+    if (std::find(values.begin(), earlier_end, values[i]) != earlier_end)
+      t.fail(key, fmt::format("[{}] repeats the value {}", i, values[i]));
   }
   return values;
 }
