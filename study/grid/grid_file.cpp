@@ -18,9 +18,12 @@ double positive(const StrictTable& t, std::string_view key) {
   return v;
 }
 
-double in_range(const StrictTable& t, std::string_view key, double v, double lo, double hi,
-                std::string_view range) {
-  if (!(v >= lo && v <= hi)) t.fail(key, fmt::format("must lie in {} (got {})", range, v));
+// The value of `key` (or `fallback` when absent), checked like the axis of the same meaning.
+double checked_as_axis(const StrictTable& t, std::string_view key, std::string_view axis,
+                       double fallback) {
+  const double v = t.number_or(key, fallback);
+  const std::string problem = axis_value_problem(axis, v);
+  if (!problem.empty()) t.fail(key, problem);
   return v;
 }
 
@@ -33,14 +36,13 @@ double poisson(const StrictTable& t, std::string_view key) {
 // An axis: a non-empty array of distinct allowed values, kept in the file's order.
 // `axis` names the range check (point_parameters.hpp), `key` the array.
 std::vector<double> axis_values(const StrictTable& t, std::string_view key, std::string_view axis) {
-  const std::string_view name = key;
-  const std::vector<double> values = t.number_array(name);
+  const std::vector<double> values = t.number_array(key);
   for (size_t i = 0; i < values.size(); ++i) {
     const std::string problem = axis_value_problem(axis, values[i]);
-    if (!problem.empty()) t.fail(name, fmt::format("[{}] {}", i, problem));
-    if (std::find(values.begin(), values.begin() + static_cast<long>(i), values[i]) !=
-        values.begin() + static_cast<long>(i))
-      t.fail(name, fmt::format("[{}] repeats the value {}", i, values[i]));
+    if (!problem.empty()) t.fail(key, fmt::format("[{}] {}", i, problem));
+    const auto earlier_end = values.begin() + static_cast<long>(i);
+    if (std::find(values.begin(), earlier_end, values[i]) != earlier_end)
+      t.fail(key, fmt::format("[{}] repeats the value {}", i, values[i]));
   }
   return values;
 }
@@ -68,7 +70,9 @@ void parse_time(const StrictTable& root, GridSpec& g) {
   time.output_interval = positive(t, "output_interval");
   if (time.output_interval > time.end)
     t.fail("output_interval", fmt::format("must be <= end = {}", time.end));
-  time.dt_safety = in_range(t, "dt_safety", t.number_or("dt_safety", 0.9), 1e-3, 1.0, "(0, 1]");
+  time.dt_safety = t.number_or("dt_safety", time.dt_safety);
+  if (!(time.dt_safety > 0.0 && time.dt_safety <= 1.0))
+    t.fail("dt_safety", fmt::format("must lie in (0, 1] (got {})", time.dt_safety));
   time.max_steps = t.integer("max_steps").value_or(0);
   if (time.max_steps < 0) t.fail("max_steps", "must be >= 0 (0: no limit)");
 }
@@ -98,8 +102,8 @@ void parse_impactor(const StrictTable& root, GridSpec& g) {
   t.allow_only({"nu", "rho", "mesh_size_ratio"});
   g.impactor.nu = poisson(t, "nu");
   g.impactor.rho = positive(t, "rho");
-  const double ratio = t.need_number("mesh_size_ratio");
-  g.impactor.mesh_size_ratio = in_range(t, "mesh_size_ratio", ratio, 1e-6, 0.5, "(0, 0.5]");
+  if (!t.has("mesh_size_ratio")) t.fail("mesh_size_ratio", "required key is missing");
+  g.impactor.mesh_size_ratio = checked_as_axis(t, "mesh_size_ratio", "impactor_mesh_ratio", 0.0);
 }
 
 void parse_contact(const StrictTable& root, GridSpec& g) {
@@ -107,11 +111,9 @@ void parse_contact(const StrictTable& root, GridSpec& g) {
   if (!t) return;
   t->allow_only({"penalty", "restitution", "friction"});
   GridContact& c = g.contact;
-  c.penalty = t->number_or("penalty", c.penalty);
-  if (!(c.penalty > 0.0)) t->fail("penalty", fmt::format("must be > 0 (got {})", c.penalty));
-  c.restitution = in_range(*t, "restitution", t->number_or("restitution", 0.0), 0.0, 1.0, "[0, 1]");
-  c.friction = t->number_or("friction", 0.0);
-  if (!(c.friction >= 0.0)) t->fail("friction", fmt::format("must be >= 0 (got {})", c.friction));
+  c.penalty = checked_as_axis(*t, "penalty", "penalty", c.penalty);
+  c.restitution = checked_as_axis(*t, "restitution", "restitution", c.restitution);
+  c.friction = checked_as_axis(*t, "friction", "friction", c.friction);
 }
 
 ConvergencePoint parse_convergence_point(const StrictTable& t) {

@@ -2,7 +2,6 @@
 // values applied, and the impact kinematics that follow from them (thesis 2.8).
 #pragma once
 
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>

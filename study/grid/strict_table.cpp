@@ -34,12 +34,6 @@ int StrictTable::line_of_key(std::string_view key) const {
   return n ? line_of(*n) : line_of(*t_);
 }
 
-std::vector<std::string> StrictTable::keys() const {
-  std::vector<std::string> out;
-  for (auto&& [k, v] : *t_) out.emplace_back(k.str());
-  return out;
-}
-
 void StrictTable::fail(std::string_view key, std::string_view problem) const {
   throw scene_error(*file_, line_of_key(key), key_path(key), problem);
 }

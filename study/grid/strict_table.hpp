@@ -23,7 +23,6 @@ class StrictTable {
   std::string key_path(std::string_view key) const;
   int line_of_key(std::string_view key) const;  // the table's line when the key is absent
   bool has(std::string_view key) const { return t_->contains(key); }
-  std::vector<std::string> keys() const;
 
   [[noreturn]] void fail(std::string_view key, std::string_view problem) const;
   void allow_only(std::initializer_list<std::string_view> allowed) const;

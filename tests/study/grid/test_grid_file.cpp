@@ -70,6 +70,16 @@ TEST_CASE("grid file errors name the file, the line and the key", "[grid]") {
     CHECK_THAT(grid_error_of(small_grid_with("ER = [1.0, 100.0]", "ER = [1.0, 1.0]")),
                Contains("g.toml:2: axes.ER: [1] repeats the value 1"));
   }
+  SECTION("out of range: time step safety and contact parameters") {
+    CHECK_THAT(grid_error_of(small_grid_with("output_interval = 1e-3",
+                                             "output_interval = 1e-3\ndt_safety = 0.0")),
+               Contains("g.toml:10: time.dt_safety: must lie in (0, 1] (got 0)"));
+    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\nrestitution = 2.0\n"),
+               Contains("g.toml:25: contact.restitution: must lie in [0, 1] (got 2)"));
+    CHECK_THAT(
+        grid_error_of(small_grid_with("KE = [10.0, 100.0]", "KE = [10.0]\nfriction = [-0.1]")),
+        Contains("g.toml:5: axes.friction: [0] must be >= 0 (got -0.1)"));
+  }
   SECTION("missing key or table: the line of the enclosing table") {
     CHECK_THAT(grid_error_of(small_grid_with("E = 1000.0\n", "")),
                Contains("g.toml:11: artifact.E: required key is missing"));

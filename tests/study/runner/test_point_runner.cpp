@@ -1,6 +1,14 @@
 // The point runner: one small point, both models, consistent RunRecords on the same sample times.
+#include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "study/grid/grid_file.hpp"
@@ -123,4 +131,25 @@ TEST_CASE("a point whose mesh Gmsh rejects is a scene error naming the point's s
   p.other_axes["mesh_scale"] = 2.0;  // impactor tet edge 0.4 > radius 0.25
   CHECK_THROWS_WITH(run_point(g, p, ImpactModel::ccm),
                     Catch::Contains("tiny.point3.ccm.toml") && Catch::Contains("impactor"));
+}
+
+TEST_CASE("a point's scene text runs unchanged with `ccm run`, which reports the same hash",
+          "[runner]") {
+  namespace fs = std::filesystem;
+  const GridSpec g = parse_grid(kTinyGrid, "tiny.toml");
+  const std::string text = point_scene_text(g, tiny_point(), ImpactModel::rigid);
+  const fs::path dir = fs::temp_directory_path() / fmt::format("ccm-test-point-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "point.toml") << text;
+  const std::string cmd = fmt::format("\"{}\" run \"{}\" --out \"{}\" --quiet", CCM_BINARY,
+                                      (dir / "point.toml").string(), (dir / "out").string());
+  const int status = std::system(cmd.c_str());
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  std::ifstream summary(dir / "out" / "summary.toml");
+  std::stringstream content;
+  content << summary.rdbuf();
+  CHECK_THAT(content.str(), Catch::Contains(fmt::format("scene_fnv1a64 = \"{}\"", fnv1a64(text))));
+  fs::remove_all(dir);
 }
