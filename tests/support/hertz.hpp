@@ -9,17 +9,31 @@
 #include "engine/solver/lumped_mass.hpp"
 #include "tests/support/contact_scenes.hpp"
 #include "tests/support/models.hpp"
+#include "tests/support/refined_sphere.hpp"
 
 namespace ccm::test {
 
 struct HertzCase {
-  double R = 0.01;      // sphere radius [m]
-  double E = 1e6;       // Young's modulus [Pa]
-  double nu = 0.3;      // Poisson's ratio (0.3: far from locking of linear tets)
-  double rho = 1000.0;  // density [kg/m^3]
-  double v = 0.4;       // approach speed (each sphere moves at v / 2) [m/s]
-  double mesh_size = 0.002;
+  double R = 0.01;            // sphere radius [m]
+  double E = 1e6;             // Young's modulus [Pa]
+  double nu = 0.3;            // Poisson's ratio (0.3: far from locking of linear tets)
+  double rho = 1000.0;        // density [kg/m^3]
+  double v = 0.4;             // approach speed (each sphere moves at v / 2) [m/s]
+  double mesh_size = 0.002;   // element size (away from the contact, when refined)
+  double contact_size = 0.0;  // > 0: element size at the contact poles (refined_sphere.hpp)
 };
+
+// The sphere with its contact pole at centre + R (0, 0, pole_sign), uniform or refined there.
+inline TetMesh hertz_sphere(const HertzCase& c, const Vec3& centre, int pole_sign) {
+  if (!(c.contact_size > 0.0)) return gmsh_sphere(c.R, c.mesh_size, centre);
+  RefinedSphere spec;
+  spec.radius = c.R;
+  spec.h_max = c.mesh_size;
+  spec.h_min = c.contact_size;
+  spec.refined_radius = 0.25 * c.R;  // 1.5 a_max at the default speed
+  spec.transition = 0.3 * c.R;
+  return refined_sphere(spec, centre, pole_sign);
+}
 
 // Closed form for two identical spheres: R* = R / 2, E* = E / (2 (1 - nu^2)), m* = m / 2.
 struct HertzPrediction {
@@ -56,8 +70,8 @@ inline HertzRun run_hertz(const HertzCase& c) {
   const double gap = 1e-4 * c.R;
   const MaterialParams mat{MaterialModel::neo_hookean, c.E, c.nu, c.rho};
   ModelMesh mesh;
-  add_body(mesh, "low", mat, gmsh_sphere(c.R, c.mesh_size, Vec3(0, 0, -c.R)));
-  add_body(mesh, "up", mat, gmsh_sphere(c.R, c.mesh_size, Vec3(0, 0, c.R + gap)));
+  add_body(mesh, "low", mat, hertz_sphere(c, Vec3(0, 0, -c.R), 1));
+  add_body(mesh, "up", mat, hertz_sphere(c, Vec3(0, 0, c.R + gap), -1));
   Model model = make_model(std::move(mesh));
   set_body_velocity(model, 0, Vec3(0, 0, c.v / 2));
   set_body_velocity(model, 1, Vec3(0, 0, -c.v / 2));
