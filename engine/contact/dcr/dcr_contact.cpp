@@ -91,7 +91,7 @@ std::string DcrContact::failure() const {
     return fmt::format(
         "residual penetration {:.4g} m exceeds {:.4g} m ({} x the shortest surface "
         "edge {:.4g} m) after {} iterations",
-        residual_, limit, kFailurePenetration, min_edge_, settings_.max_iterations);
+        residual_, limit, kFailurePenetration, min_edge_, settings_.max_projection_iterations);
   return {};
 }
 
@@ -233,7 +233,7 @@ void DcrContact::project_positions(State& s) {
     for (int n : c.nodes) x_start_.push_back(s.x[static_cast<size_t>(n)]);
   steps_.assign(constraints_.size(), 0.0);
   grads_.resize(constraints_.size());
-  for (int it = 0; it < settings_.max_iterations; ++it) {
+  for (int it = 0; it < settings_.max_projection_iterations; ++it) {
     double worst = 0.0;
     for (size_t k = 0; k < constraints_.size(); ++k) {
       Constraint& c = constraints_[k];
