@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "engine/contact/dcr/ccd.hpp"
 
@@ -15,25 +17,70 @@ namespace {
 // Tolerance of the barycentric / edge-parameter inclusion tests in the CCD.
 constexpr double kInclusionTolerance = 1e-6;
 
+// Velocity solve converged when no contact changes a velocity by more than this x the fastest
+// contact node.
+constexpr double kVelocityTolerance = 1e-9;
+
+// Tolerance of the "projection inside the face" test of a persistent contact (barycentric).
+constexpr double kPersistentTolerance = 1e-6;
+
 double shortest_edge(const SurfaceFeatures& f, const std::vector<Vec3>& X) {
   double h = std::numeric_limits<double>::infinity();
   for (const auto& e : f.edges) h = std::min(h, (X[e[1]] - X[e[0]]).norm());
   return h;
 }
 
+// Whether each body holds a fixed node (anchored bodies get no restitution impulse).
+std::vector<bool> anchored_bodies(const ModelMesh& mesh, const std::vector<int>& fixed_nodes) {
+  std::vector<bool> anchored(mesh.bodies.size(), false);
+  for (int n : fixed_nodes)
+    for (size_t b = 0; b < mesh.bodies.size(); ++b)
+      if (n >= mesh.bodies[b].first_node && n < mesh.bodies[b].first_node + mesh.bodies[b].n_nodes)
+        anchored[b] = true;
+  return anchored;
+}
+
+// Whether the orthogonal projection of p onto the plane of (a, b, c) lies in the triangle
+// (barycentric weights >= -tol).
+bool projects_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double tol) {
+  const Vec3 e1 = b - a, e2 = c - a, r = p - a;
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2);
+  const double r1 = r.dot(e1), r2 = r.dot(e2), det = d11 * d22 - d12 * d12;
+  if (!(det > 0.0)) return false;
+  const double wb = (d22 * r1 - d12 * r2) / det, wc = (d11 * r2 - d12 * r1) / det;
+  return wb >= -tol && wc >= -tol && 1.0 - wb - wc >= -tol;
+}
+
+// Two unit vectors completing the unit vector n to an orthonormal basis.
+std::pair<Vec3, Vec3> tangent_basis(const Vec3& n) {
+  const Vec3 helper = std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 t1 = n.cross(helper).normalized();
+  return {t1, n.cross(t1)};
+}
+
 }  // namespace
 
 DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
                        const std::vector<int>& fixed_nodes)
-    : settings_(std::move(settings)), features_(make_surface_features(mesh, settings_.surfaces)) {
+    : settings_(std::move(settings)),
+      features_(make_surface_features(mesh, settings_.surfaces)),
+      restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)) {
   if (settings_.restitution < 0.0 || settings_.restitution > 1.0)
     throw std::invalid_argument("dcr: restitution must lie in [0, 1]");
   if (settings_.friction < 0.0) throw std::invalid_argument("dcr: friction must be >= 0");
+  if (!(settings_.proximity > 0.0 && settings_.proximity <= 0.5))
+    throw std::invalid_argument("dcr: proximity must lie in (0, 0.5] (fraction of an edge)");
+  node_body_.assign(mesh.X.size(), -1);
+  for (size_t b = 0; b < mesh.bodies.size(); ++b)
+    for (int n = 0; n < mesh.bodies[b].n_nodes; ++n)
+      node_body_[static_cast<size_t>(mesh.bodies[b].first_node + n)] = static_cast<int>(b);
   inv_m_.assign(mesh.X.size(), 0.0);  // filled from the state's masses at the first step
   for (int n : fixed_nodes) inv_m_[static_cast<size_t>(n)] = -1.0;  // marker: never moves
   min_edge_ = shortest_edge(features_, mesh.X);
   // Kept gap after projection: far below the mesh size, far above round-off.
   separation_ = 1e-4 * min_edge_;
+  // Persistent contacts: far below an element, far above the kept separation.
+  proximity_ = settings_.proximity * min_edge_;
   v_end_.assign(mesh.X.size(), Vec3::Zero());
   count_.assign(mesh.X.size(), 0);
 }
@@ -44,7 +91,7 @@ std::string DcrContact::failure() const {
     return fmt::format(
         "residual penetration {:.4g} m exceeds {:.4g} m ({} x the shortest surface "
         "edge {:.4g} m) after {} iterations",
-        residual_, limit, kFailurePenetration, min_edge_, settings_.max_iterations);
+        residual_, limit, kFailurePenetration, min_edge_, settings_.max_projection_iterations);
   return {};
 }
 
@@ -95,8 +142,8 @@ bool DcrContact::bodies_may_touch(const State& s) const {
   }
   for (auto& b : boxes)
     if (!b.isEmpty()) {
-      b.min().array() -= 2.0 * separation_;
-      b.max().array() += 2.0 * separation_;
+      b.min().array() -= proximity_;
+      b.max().array() += proximity_;
     }
   for (size_t a = 0; a < boxes.size(); ++a)
     for (size_t b = a + 1; b < boxes.size(); ++b)
@@ -107,29 +154,45 @@ bool DcrContact::bodies_may_touch(const State& s) const {
 void DcrContact::detect(const State& s) {
   constraints_.clear();
   if (!bodies_may_touch(s)) return;
-  broad_phase_.find(features_, x_n_, s.x, 2.0 * separation_, settings_.self_contact, candidates_);
+  broad_phase_.find(features_, x_n_, s.x, proximity_, settings_.self_contact, candidates_);
+  for (const NodeFaceCandidate& nf : candidates_.node_face)
+    add_node_face(s, features_.nodes[static_cast<size_t>(nf.node)],
+                  features_.faces[static_cast<size_t>(nf.face)]);
+  for (const EdgeEdgeCandidate& ee : candidates_.edge_edge)
+    add_edge_edge(s, features_.edges[static_cast<size_t>(ee.edge_a)],
+                  features_.edges[static_cast<size_t>(ee.edge_b)]);
+}
+
+// A node and a face are a contact when the node, arriving from the outward side (g(x_n) >= 0),
+// crosses the face during the step (CCD), or stays outward within the proximity distance of it
+// with its projection inside the face (persistent contact).
+void DcrContact::add_node_face(const State& s, int p, const Triangle& t) {
   const std::vector<Vec3>& x0 = x_n_;
   const std::vector<Vec3>& x1 = s.x;
-  for (const NodeFaceCandidate& nf : candidates_.node_face) {
-    const int p = features_.nodes[static_cast<size_t>(nf.node)];
-    const Triangle& t = features_.faces[static_cast<size_t>(nf.face)];
-    // Only a node arriving from the outward side is held out (g(x_n) >= 0).
-    if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) continue;
-    if (!node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]], x1[t[2]],
-                       kInclusionTolerance))
-      continue;
-    constraints_.push_back({{p, t[0], t[1], t[2]}, true, 1.0, 0.0, 0.0});
+  if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return;
+  const bool crossed = node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
+                                     x1[t[2]], kInclusionTolerance)
+                           .has_value();
+  if (!crossed) {
+    const double g1 = node_face_volume(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]);
+    const double third_area = (x1[t[1]] - x1[t[0]]).cross(x1[t[2]] - x1[t[0]]).norm() / 6.0;
+    if (!(g1 >= 0.0 && g1 <= proximity_ * third_area)) return;
+    if (!projects_inside(x1[p], x1[t[0]], x1[t[1]], x1[t[2]], kPersistentTolerance)) return;
   }
-  for (const EdgeEdgeCandidate& ee : candidates_.edge_edge) {
-    const auto& ea = features_.edges[static_cast<size_t>(ee.edge_a)];
-    const auto& eb = features_.edges[static_cast<size_t>(ee.edge_b)];
-    if (!edge_edge_ccd(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
-                       x1[eb[1]], kInclusionTolerance))
-      continue;
-    // The admissible side is the one the edges started on (the thesis's orientation tag).
-    const double g0 = edge_edge_volume(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]);
-    constraints_.push_back({{ea[0], ea[1], eb[0], eb[1]}, false, g0 >= 0.0 ? 1.0 : -1.0, 0.0, 0.0});
-  }
+  constraints_.push_back({{p, t[0], t[1], t[2]}, true, 1.0, false});
+}
+
+// Two edges are a contact when they cross during the step (CCD); the admissible side is the one
+// they started on (the thesis's orientation tag).
+void DcrContact::add_edge_edge(const State& s, const std::array<int, 2>& ea,
+                               const std::array<int, 2>& eb) {
+  const std::vector<Vec3>& x0 = x_n_;
+  const std::vector<Vec3>& x1 = s.x;
+  if (!edge_edge_ccd(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
+                     x1[eb[1]], kInclusionTolerance))
+    return;
+  const double g0 = edge_edge_volume(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]);
+  constraints_.push_back({{ea[0], ea[1], eb[0], eb[1]}, false, g0 >= 0.0 ? 1.0 : -1.0, false});
 }
 
 // Relaxed Jacobi: every constraint proposes a multiplier step along M^-1 grad g from the same
@@ -170,10 +233,10 @@ void DcrContact::project_positions(State& s) {
     for (int n : c.nodes) x_start_.push_back(s.x[static_cast<size_t>(n)]);
   steps_.assign(constraints_.size(), 0.0);
   grads_.resize(constraints_.size());
-  for (int it = 0; it < settings_.max_iterations; ++it) {
+  for (int it = 0; it < settings_.max_projection_iterations; ++it) {
     double worst = 0.0;
     for (size_t k = 0; k < constraints_.size(); ++k) {
-      const Constraint& c = constraints_[k];
+      Constraint& c = constraints_[k];
       steps_[k] = 0.0;
       const double scale = constraint_gradient(c, s.x, grads_[k].data());
       const double gap = separation_ * scale - constraint_value(c, s.x);
@@ -181,6 +244,7 @@ void DcrContact::project_positions(State& s) {
       if (gap <= 0.0 || !(W > 0.0)) continue;
       worst = std::max(worst, gap / scale);
       steps_[k] = gap / W;
+      c.projected = true;
     }
     if (worst <= 1e-3 * separation_) break;
     apply_relaxed(s.x);
@@ -208,59 +272,73 @@ void DcrContact::project_positions(State& s) {
 void DcrContact::correct(State& s, double dt) {
   detect(s);
   last_impulse_ = 0.0;
+  active_ = sweeps_ = 0;
+  pair_impulses_.clear();
+  near_.clear();
   if (constraints_.empty()) {
     residual_ = 0.0;
-    return;
+  } else {
+    project_positions(s);
+    exchange_momentum(s, dt);
+    collect_pair_impulses(s.x);
   }
-  project_positions(s);
-  exchange_momentum(s, dt);
+  work_ += restitution_.after_solve(pair_impulses_, near_, s, dt);
 }
 
-// Normal momentum exchange on the end-of-step velocity v_end = v* + dt/2 a_{n+1}: each
-// approaching constraint (dg/dt = grad g . v < 0) is driven to dg/dt = -e (dg/dt)_0 (eq. 2.26
-// for e = 1; e = 0 removes the approach) with non-negative accumulated multipliers, by relaxed
-// Jacobi sweeps; then friction; the change is added to v* so the velocity correction lands on it.
+// The velocity row of a contact (contact_impulses.hpp): the approach it may still make in the
+// next step without closing the kept separation, its contact-point weights and tangents.
+ContactRow DcrContact::make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const {
+  ContactRow r;
+  r.nodes = c.nodes;
+  const double scale = constraint_gradient(c, x, r.grad.data());
+  r.target = -std::max(0.0, constraint_value(c, x) - separation_ * scale) / dt;
+  // All four gradients are parallel to the contact normal n at g = 0. The contact points are
+  // sum beta_a x_a with beta_a = grad_a g . n / S, S normalising the first side's weights to 1
+  // (node-face: the node; edge-edge: the first edge); the normal impulse is S lambda_n.
+  int biggest = 0;
+  for (int a = 1; a < 4; ++a)
+    if (r.grad[a].squaredNorm() > r.grad[biggest].squaredNorm()) biggest = a;
+  const Vec3 n = r.grad[biggest].normalized();
+  for (int a = 0; a < (c.node_face ? 1 : 2); ++a) r.S += std::abs(r.grad[a].dot(n));
+  if (!(r.S > 0.0) || !n.allFinite()) return r;  // W_n = 0: the row is inert
+  r.W_n = mobility(c, r.grad);
+  for (int a = 0; a < 4; ++a) {
+    r.beta[a] = r.grad[a].dot(n) / r.S;
+    r.W_t += r.beta[a] * r.beta[a] * inv_m_[static_cast<size_t>(c.nodes[a])];
+  }
+  std::tie(r.t1, r.t2) = tangent_basis(n);
+  return r;
+}
+
+// Normal and friction impulses on the end-of-step velocity v_end = v* + dt/2 a_{n+1}, solved
+// together (contact_impulses.hpp); the change is added to v* so the velocity correction lands on
+// it, and its kinetic energy change is the contact's work.
 void DcrContact::exchange_momentum(State& s, double dt) {
   std::vector<Vec3>& v_end = v_end_;  // only the constrained nodes are read or written
   v_before_.clear();
-  for (const Constraint& c : constraints_)
+  near_.clear();
+  rows_.clear();
+  for (const Constraint& c : constraints_) {
     for (int n : c.nodes) {
       const auto i = static_cast<size_t>(n);
       v_end[i] = s.v[i] + 0.5 * dt * s.a[i];
       v_before_.push_back(v_end[i]);
     }
-  for (size_t k = 0; k < constraints_.size(); ++k) {
-    Constraint& c = constraints_[k];
-    constraint_gradient(c, s.x, grads_[k].data());
-    c.approach_rate = rate_of(c, grads_[k], v_end);
-    c.impulse = 0.0;
+    rows_.push_back(make_row(c, s.x, dt));
+    const int a = body_of(c.nodes[0]), b = body_of(c.nodes[3]);
+    if (a != b) near_.emplace_back(std::min(a, b), std::max(a, b));
   }
-  const double e = settings_.restitution;
-  for (int it = 0; it < settings_.max_iterations; ++it) {
-    double worst = 0.0, scale = 0.0;
-    for (size_t k = 0; k < constraints_.size(); ++k) {
-      Constraint& c = constraints_[k];
-      steps_[k] = 0.0;
-      if (c.approach_rate >= 0.0) continue;
-      const double W = mobility(c, grads_[k]);
-      if (!(W > 0.0)) continue;
-      const double target = -e * c.approach_rate, rate = rate_of(c, grads_[k], v_end);
-      const double new_impulse = std::max(0.0, c.impulse + (target - rate) / W);
-      steps_[k] = new_impulse - c.impulse;
-      if (rate < target || c.impulse > 0.0) worst = std::max(worst, std::abs(target - rate));
-      scale = std::max(scale, -c.approach_rate);
-    }
-    if (worst <= 1e-9 * scale) break;
-    apply_relaxed(v_end);
-    for (size_t k = 0; k < constraints_.size(); ++k) constraints_[k].impulse += steps_[k];
-  }
-  if (settings_.friction > 0.0) apply_friction(s, v_end);
+  std::sort(near_.begin(), near_.end());
+  near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
+  restitution_.before_solve(near_, s, dt);
+  sweeps_ = impulses_.solve(rows_, inv_m_, v_end,
+                            {settings_.friction, settings_.max_iterations, kVelocityTolerance});
 
-  // Kinetic energy change of the jump = work of the contact impulses; then v* += dv.
   size_t k = 0;
-  for (const Constraint& c : constraints_) {
-    last_impulse_ += c.impulse;
-    for (int n : c.nodes) {
+  for (size_t j = 0; j < constraints_.size(); ++j) {
+    last_impulse_ += rows_[j].lambda_n * rows_[j].S;
+    if (constraints_[j].projected || rows_[j].lambda_n > 0.0) ++active_;
+    for (int n : constraints_[j].nodes) {
       const auto i = static_cast<size_t>(n);
       const Vec3& before = v_before_[k++];
       if (count_[i] != 0) continue;  // a node shared by constraints is applied once
@@ -273,51 +351,21 @@ void DcrContact::exchange_momentum(State& s, double dt) {
     for (int n : c.nodes) count_[static_cast<size_t>(n)] = 0;
 }
 
-double DcrContact::rate_of(const Constraint& c, const std::array<Vec3, 4>& grad,
-                           const std::vector<Vec3>& v) const {
-  double rate = 0.0;  // dg/dt = grad g . v
-  for (int a = 0; a < 4; ++a) rate += grad[a].dot(v[static_cast<size_t>(c.nodes[a])]);
-  return rate;
-}
-
-// Pairwise Coulomb friction in the contact frame (contact-method.md 1.3): the tangential
-// relative velocity u_t of the two contact points is reduced by j_t = min(mu j_n, m_eff |u_t|),
-// one relaxed Jacobi sweep, applied whole to both sides (momentum exact).
-void DcrContact::apply_friction(const State& s, std::vector<Vec3>& v_end) {
-  tangent_.assign(constraints_.size(), Vec3::Zero());
+// This step's normal impulses between two bodies, for the restitution: the impulse on the body
+// with the larger index, acting at the mean of the contact's four nodes.
+void DcrContact::collect_pair_impulses(const std::vector<Vec3>& x) {
   for (size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = constraints_[k];
-    steps_[k] = 0.0;
-    if (c.impulse <= 0.0) continue;
-    // All four gradients are parallel to the contact normal n. The contact points are
-    // sum beta_a x_a with beta_a = grad_a g . n / S, S normalising the first side's weights to
-    // 1 (node-face: the node; edge-edge: the first edge); j_n = impulse * S.
-    std::array<Vec3, 4> grad;
-    constraint_gradient(c, s.x, grad.data());
-    int biggest = 0;
-    for (int a = 1; a < 4; ++a)
-      if (grad[a].squaredNorm() > grad[biggest].squaredNorm()) biggest = a;
-    const Vec3 n = grad[biggest].normalized();
-    double S = 0.0;
-    for (int a = 0; a < (c.node_face ? 1 : 2); ++a) S += std::abs(grad[a].dot(n));
-    if (!(S > 0.0)) continue;
-    double inv_m_eff = 0.0;
-    Vec3 u = Vec3::Zero();
-    for (int a = 0; a < 4; ++a) {
-      const auto i = static_cast<size_t>(c.nodes[a]);
-      const double beta = grad[a].dot(n) / S;
-      inv_m_eff += beta * beta * inv_m_[i];
-      u += beta * v_end[i];
-      grads_[k][a] = beta * n;  // reused below as the tangential direction's weights
+    const ContactRow& r = rows_[k];
+    const int a = body_of(c.nodes[0]), b = body_of(c.nodes[3]);
+    if (a == b || !(r.lambda_n > 0.0)) continue;
+    PairImpulse p{std::min(a, b), std::max(a, b), Vec3::Zero(), Vec3::Zero()};
+    for (int j = 0; j < 4; ++j) {
+      if (body_of(c.nodes[j]) == p.body_b) p.impulse_on_b += r.lambda_n * r.grad[j];
+      p.point += 0.25 * x[static_cast<size_t>(c.nodes[j])];
     }
-    const Vec3 u_t = u - u.dot(n) * n;
-    const double speed = u_t.norm();
-    if (!(speed > 0.0) || !(inv_m_eff > 0.0)) continue;
-    tangent_[k] = u_t / speed;
-    steps_[k] = -std::min(settings_.friction * c.impulse * S, speed / inv_m_eff);
-    for (int a = 0; a < 4; ++a) grads_[k][a] = grads_[k][a].dot(n) * tangent_[k];
+    pair_impulses_.push_back(p);
   }
-  apply_relaxed(v_end);
 }
 
 // No surface may move, relative to another, more than step_fraction of the shortest surface

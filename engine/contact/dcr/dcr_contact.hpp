@@ -1,26 +1,35 @@
 // Explicit Decomposition Contact Response (DCR; Cirak & West 2005; thesis 2.4, eq. 2.10-2.26),
-// node-face and edge-edge, external and self-contact.
+// node-face and edge-edge, external and self-contact (docs/contact-persistent.md).
 //
 // Each step, after the internal forces are evaluated (thesis 2.5.2):
-//   1. detect: swept-box broad phase over [x_n, x*] and continuous collision detection of every
-//      candidate pair; each hit becomes a constraint g(x) >= 0, g the signed volume of the
-//      node and face (or the two edges), oriented so that the start of the step is admissible;
-//   2. impenetrability: a mass-weighted projection along grad g (linear and angular momentum
-//      conserved exactly, contact-method.md 1.2), iterated Jacobi-style with per-node averaging
-//      until every constraint holds, so the result does not depend on the order of contacts;
-//   3. momentum decomposition: the normal part of the end-of-step velocity along grad g is
-//      reversed and scaled by the restitution e (e = 1: eq. 2.26; e = 0: removed), again by
-//      Jacobi iterations on non-negative impulses; then Coulomb friction reduces the tangential
-//      relative velocity of each contact by at most mu times its normal impulse.
+//   1. detect: swept-box broad phase over [x_n, x*] inflated by the proximity distance, and
+//      (a) continuous collision detection of every candidate pair: each hit is a contact;
+//      (b) persistent contacts: a node that is on the outward side of a face at both ends of
+//      the step, within the proximity distance of it at the end, with its projection inside
+//      the face. Each contact is a constraint g(x) >= 0, g the signed volume of the node and
+//      face (or the two edges), oriented so that the start of the step is admissible;
+//   2. impenetrability: a mass-weighted projection along grad g onto g >= g_sep (linear and
+//      angular momentum conserved exactly, contact-method.md 1.2), iterated Jacobi-style with
+//      per-node averaging until every constraint holds, so the result does not depend on the
+//      order of contacts;
+//   3. momentum decomposition (contact_impulses.hpp): on the end-of-step velocity v* + dt/2 a,
+//      each contact may approach at most by its remaining gap in the next step
+//      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, contact-method.md 1.5),
+//      with Coulomb friction iterated together with the normal impulses;
+//   4. restitution (pair_restitution.hpp): the user's coefficient e acts on the rigid motions
+//      of the two bodies when a contact episode ends.
 // The velocity change is applied to v* so that v_{n+1} = v* + dt/2 a_{n+1} satisfies it.
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/contact/contact_model.hpp"
 #include "engine/contact/dcr/broad_phase.hpp"
+#include "engine/contact/dcr/contact_impulses.hpp"
 #include "engine/contact/dcr/contact_surface.hpp"
+#include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/observe/history.hpp"
 
 namespace ccm::dcr {
@@ -28,10 +37,15 @@ namespace ccm::dcr {
 struct DcrSettings {
   std::vector<std::string> surfaces;  // named surfaces that take part, e.g. "ball/boundary"
   bool self_contact = false;          // contacts within one body too (adjacent pairs excluded)
-  double restitution = 0.0;           // e in [0, 1]
+  double restitution = 0.0;           // e in [0, 1], per pair of bodies (pair_restitution.hpp)
   double friction = 0.0;              // Coulomb mu >= 0
-  int max_iterations = 100;           // Jacobi sweeps for positions and for velocities
-  double step_fraction = 0.5;         // dt limit: relative motion per step <= this x min edge
+  int max_iterations = 100;           // Jacobi sweeps of the velocity solve
+  // Jacobi sweeps of the position projection: persistent contacts share nodes with the crossing
+  // ones, so the relaxed sweeps need more of them (scenes/stress/fast_impact: 100 left 3.9e-6 m,
+  // 2.6x the failure tolerance, at the first contact at 186 m/s; 400 converge).
+  int max_projection_iterations = 400;
+  double step_fraction = 0.5;  // dt limit: relative motion per step <= this x min edge
+  double proximity = 0.1;      // persistent contacts: gap <= this x min edge
 };
 
 // One active contact: g(x) = sign * volume(nodes) >= target.
@@ -39,8 +53,7 @@ struct Constraint {
   std::array<int, 4> nodes;  // node-face: p, a, b, c; edge-edge: a, b, c, d (global ids)
   bool node_face = true;
   double sign = 1.0;
-  double approach_rate = 0.0;  // dg/dt when detected (< 0 when approaching)
-  double impulse = 0.0;        // accumulated normal multiplier of the velocity solve
+  bool projected = false;  // moved by the position projection in this step
 };
 
 class DcrContact : public ContactModel, public HistorySource {
@@ -61,43 +74,57 @@ class DcrContact : public ContactModel, public HistorySource {
   std::vector<std::string> history_columns() const override;
   void append_history(const State& s, std::vector<double>& row) const override;
 
-  // Diagnostics of the last step.
-  int active_contacts() const { return static_cast<int>(constraints_.size()); }
+  // Diagnostics of the last step: contacts that acted (projected or carried a normal impulse),
+  // and all contacts held (acting or within the proximity distance).
+  int active_contacts() const { return active_; }
+  int held_contacts() const { return static_cast<int>(constraints_.size()); }
+  int solver_sweeps() const { return sweeps_; }  // Jacobi sweeps of the velocity solve
+  const PairRestitution& restitution() const { return restitution_; }
   double residual_penetration() const { return residual_; }  // max -g/|grad_p g| [m], >= 0
   const SurfaceFeatures& features() const { return features_; }
   double min_edge() const { return min_edge_; }  // shortest surface edge, reference [m]
 
  private:
   void detect(const State& s);
+  void add_node_face(const State& s, int p, const Triangle& t);
+  void add_edge_edge(const State& s, const std::array<int, 2>& ea, const std::array<int, 2>& eb);
   bool bodies_may_touch(const State& s) const;
   void project_positions(State& s);
   void exchange_momentum(State& s, double dt);
-  void apply_friction(const State& s, std::vector<Vec3>& v_end);
+  ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const;
+  void collect_pair_impulses(const std::vector<Vec3>& x);
   void apply_relaxed(std::vector<Vec3>& target);
   double mobility(const Constraint& c, const std::array<Vec3, 4>& grad) const;
-  double rate_of(const Constraint& c, const std::array<Vec3, 4>& grad,
-                 const std::vector<Vec3>& v) const;
   double constraint_value(const Constraint& c, const std::vector<Vec3>& x) const;
   double constraint_gradient(const Constraint& c, const std::vector<Vec3>& x, Vec3 grad[4]) const;
+  int body_of(int node) const { return node_body_[static_cast<size_t>(node)]; }
 
   DcrSettings settings_;
   SurfaceFeatures features_;
   BroadPhase broad_phase_;
   Candidates candidates_;
-  std::vector<double> inv_m_;  // 1/m of every node; 0 for fixed nodes
-  std::vector<Vec3> x_n_;      // positions at the start of the step
-  double min_edge_ = 0.0;      // shortest surface edge in the reference configuration
-  double separation_ = 0.0;    // distance kept between a node and a face after projection
+  std::vector<double> inv_m_;   // 1/m of every node; 0 for fixed nodes
+  std::vector<int> node_body_;  // body of every node
+  std::vector<Vec3> x_n_;       // positions at the start of the step
+  double min_edge_ = 0.0;       // shortest surface edge in the reference configuration
+  double separation_ = 0.0;     // distance kept between a node and a face after projection
+  double proximity_ = 0.0;      // distance within which a node-face contact persists
   std::vector<Constraint> constraints_;
+  std::vector<ContactRow> rows_;
+  ContactImpulses impulses_;
+  PairRestitution restitution_;
+  std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
+  std::vector<std::pair<int, int>> near_;   // scratch: body pairs holding contacts
   std::vector<int> count_;                  // scratch: constraints per node in a sweep
   std::vector<double> steps_;               // scratch: proposed multiplier step per constraint
   std::vector<std::array<Vec3, 4>> grads_;  // scratch: grad g per constraint
-  std::vector<Vec3> tangent_;               // scratch: friction directions
   std::vector<Vec3> x_start_, v_before_;    // scratch: state before the correction
   std::vector<Vec3> v_end_;                 // scratch: end-of-step velocities of constrained nodes
   double work_ = 0.0;
   double residual_ = 0.0;
-  double last_impulse_ = 0.0;  // total normal impulse magnitude of the last step
+  double last_impulse_ = 0.0;  // total normal impulse of the last step [N s]
+  int active_ = 0;
+  int sweeps_ = 0;
 };
 
 }  // namespace ccm::dcr

@@ -1,0 +1,62 @@
+// Velocity-level contact solve of the DCR (contact-method.md 1.3-1.4): non-negative normal
+// impulses and Coulomb friction impulses of all contacts of a step, iterated together.
+//
+// Each contact k has a normal row and two tangential rows on its four nodes a:
+//   normal:     rate_n = sum_a grad_a g . v_a >= target  (target <= 0: the approach allowed by
+//               the remaining gap, -(g - g_sep) / dt; 0 for a contact that is closed),
+//               impulse lambda_n >= 0 along M^-1 grad g;
+//   tangential: u_t = sum_a beta_a (t_i . v_a), the relative tangential velocity of the two
+//               contact points (beta_a: the contact-point weights, sum_a beta_a = 0), driven to 0
+//               by lambda_t (2 components) inside the Coulomb disc |lambda_t| <= mu S lambda_n
+//               (S lambda_n is the normal impulse in N s).
+// Sweeps are projected Jacobi: every row proposes its update from the same velocities, so the
+// result does not depend on the order of the contacts; each proposal is divided by the largest
+// number of proposing contacts at any of its nodes (so shared nodes are not over-corrected) and
+// applied to all four nodes. Every update is along a direction whose mass-weighted sum vanishes,
+// so linear momentum is exact; friction opposes the tangential velocity it acts on, so it only
+// dissipates.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "engine/core/types.hpp"
+
+namespace ccm::dcr {
+
+struct ContactRow {
+  std::array<int, 4> nodes{};                 // global node ids
+  std::array<Vec3, 4> grad{};                 // grad g on each node (normal row)
+  std::array<double, 4> beta{};               // contact-point weights for the tangential rows
+  Vec3 t1 = Vec3::Zero(), t2 = Vec3::Zero();  // orthonormal tangents
+  double S = 0.0;                             // normal impulse in N s per unit lambda_n
+  double target = 0.0;                        // lower bound of rate_n (<= 0)
+  double W_n = 0.0, W_t = 0.0;                // mobilities grad^T M^-1 grad and sum beta^2 / m
+  double lambda_n = 0.0;                      // accumulated normal multiplier
+  double lambda_t1 = 0.0, lambda_t2 = 0.0;    // accumulated tangential impulses [N s]
+};
+
+struct ImpulseSettings {
+  double friction = 0.0;     // Coulomb mu
+  int max_iterations = 100;  // Jacobi sweeps
+  double tolerance = 1e-9;   // stop when no row changes a velocity by more than this x v_ref
+};
+
+class ContactImpulses {
+ public:
+  // Solves the rows against the velocities v (indexed by global node id; only the rows' nodes
+  // are read and written) and returns the number of sweeps made.
+  int solve(std::vector<ContactRow>& rows, const std::vector<double>& inv_m, std::vector<Vec3>& v,
+            const ImpulseSettings& settings);
+
+ private:
+  // One row's proposed multiplier changes; returns the largest velocity change they cause.
+  double propose(ContactRow& r, const std::vector<Vec3>& v, double mu, size_t k);
+  void apply(const std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
+             std::vector<Vec3>& v);
+
+  std::vector<std::array<double, 3>> step_;  // proposed (d lambda_n, d lambda_t1, d lambda_t2)
+  std::vector<int> count_;                   // proposing rows per node (scratch, all zero)
+};
+
+}  // namespace ccm::dcr

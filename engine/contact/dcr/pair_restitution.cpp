@@ -1,0 +1,127 @@
+#include "engine/contact/dcr/pair_restitution.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ccm::dcr {
+namespace {
+
+Vec3 end_velocity(const State& s, double dt, size_t i) { return s.v[i] + 0.5 * dt * s.a[i]; }
+
+}  // namespace
+
+PairRestitution::PairRestitution(const ModelMesh& mesh, double restitution,
+                                 std::vector<bool> anchored)
+    : e_(restitution), anchored_(std::move(anchored)) {
+  for (const Body& b : mesh.bodies) bodies_.push_back({b.first_node, b.n_nodes});
+}
+
+// Mass, centre, linear and angular velocity of one body (angular: omega = I^-1 L about the
+// centre, I = sum m (|r|^2 1 - r r^T)).
+RigidMotion PairRestitution::motion_of(int body, const State& s, double dt) const {
+  const NodeRange& b = bodies_[static_cast<size_t>(body)];
+  RigidMotion r;
+  Vec3 p = Vec3::Zero(), mx = Vec3::Zero();
+  for (int n = b.first; n < b.first + b.count; ++n) {
+    const auto i = static_cast<size_t>(n);
+    r.mass += s.m_lumped[i];
+    mx += s.m_lumped[i] * s.x[i];
+    p += s.m_lumped[i] * end_velocity(s, dt, i);
+  }
+  r.centre = mx / r.mass;
+  r.velocity = p / r.mass;
+  Mat3 inertia = Mat3::Zero();
+  Vec3 L = Vec3::Zero();
+  for (int n = b.first; n < b.first + b.count; ++n) {
+    const auto i = static_cast<size_t>(n);
+    const Vec3 d = s.x[i] - r.centre;
+    inertia += s.m_lumped[i] * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+    L += s.m_lumped[i] * d.cross(end_velocity(s, dt, i) - r.velocity);
+  }
+  r.inv_inertia = inertia.inverse();
+  r.omega = r.inv_inertia * L;
+  return r;
+}
+
+void PairRestitution::before_solve(const std::vector<std::pair<int, int>>& near, const State& s,
+                                   double dt) {
+  if (e_ >= 1.0) return;  // e = 1: the elastic result is kept, nothing to record
+  for (const auto& [a, b] : near) {
+    Episode& ep = episodes_[{a, b}];
+    if (ep.started) continue;
+    ep.a_in = motion_of(a, s, dt);
+    ep.b_in = motion_of(b, s, dt);
+  }
+}
+
+double PairRestitution::apply_rigid_impulse(int body, const RigidMotion& motion,
+                                            const Vec3& impulse, const Vec3& point, State& s,
+                                            double dt) const {
+  const NodeRange& b = bodies_[static_cast<size_t>(body)];
+  const Vec3 dv_centre = impulse / motion.mass;
+  const Vec3 d_omega = motion.inv_inertia * (point - motion.centre).cross(impulse);
+  double energy = 0.0;
+  for (int n = b.first; n < b.first + b.count; ++n) {
+    const auto i = static_cast<size_t>(n);
+    const Vec3 dv = dv_centre + d_omega.cross(s.x[i] - motion.centre);
+    const Vec3 v = end_velocity(s, dt, i);
+    energy += 0.5 * s.m_lumped[i] * ((v + dv).squaredNorm() - v.squaredNorm());
+    s.v[i] += dv;
+  }
+  return energy;
+}
+
+// Newton's law for the episode on the rigid motions (eq. R1, R2 of the note).
+bool PairRestitution::close(const Episode& ep, int a, int b, State& s, double dt,
+                            double& energy_change) {
+  if (!(ep.weight > 0.0) || !(ep.impulse.norm() > 0.0)) return true;
+  const Vec3 n = ep.impulse.normalized(), P = ep.weighted_point / ep.weight;
+  const RigidMotion A = motion_of(a, s, dt), B = motion_of(b, s, dt);
+  const double u_out = n.dot(B.velocity_at(P) - A.velocity_at(P));
+  if (u_out < 0.0) return false;  // still approaching: the episode goes on
+  const double u_in = n.dot(ep.b_in.velocity_at(P) - ep.a_in.velocity_at(P));
+  const double target = e_ * std::max(0.0, -u_in);
+  if (u_out <= target) return true;
+  double K = 0.0;  // n . (relative velocity at P) per unit impulse along n
+  for (const auto& [X, anchored] : {std::pair{&A, anchored_[static_cast<size_t>(a)]},
+                                    std::pair{&B, anchored_[static_cast<size_t>(b)]}}) {
+    if (anchored) continue;
+    const Vec3 r = P - X->centre;
+    K += 1.0 / X->mass + n.dot((X->inv_inertia * r.cross(n)).cross(r));
+  }
+  if (!(K > 0.0)) return true;
+  const double j = (u_out - target) / K;
+  if (!anchored_[static_cast<size_t>(a)])
+    energy_change += apply_rigid_impulse(a, A, j * n, P, s, dt);
+  if (!anchored_[static_cast<size_t>(b)])
+    energy_change += apply_rigid_impulse(b, B, -j * n, P, s, dt);
+  ++corrections_;
+  return true;
+}
+
+double PairRestitution::after_solve(const std::vector<PairImpulse>& touching,
+                                    const std::vector<std::pair<int, int>>& near, State& s,
+                                    double dt) {
+  if (e_ >= 1.0) return 0.0;
+  for (auto& [key, ep] : episodes_) ep.touched = false;
+  for (const PairImpulse& t : touching) {
+    Episode& ep = episodes_[{t.body_a, t.body_b}];
+    const double w = t.impulse_on_b.norm();
+    ep.started = ep.touched = true;
+    ep.impulse += t.impulse_on_b;
+    ep.weighted_point += w * t.point;
+    ep.weight += w;
+  }
+  double energy_change = 0.0;
+  for (auto it = episodes_.begin(); it != episodes_.end();) {
+    const Episode& ep = it->second;
+    const bool held = std::binary_search(near.begin(), near.end(), it->first);
+    const bool ended =
+        !ep.touched && (!ep.started || (!held && close(ep, it->first.first, it->first.second, s, dt,
+                                                       energy_change)));
+    it = ended ? episodes_.erase(it) : std::next(it);
+  }
+  return energy_change;
+}
+
+}  // namespace ccm::dcr
