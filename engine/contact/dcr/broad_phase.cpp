@@ -48,7 +48,7 @@ bool BroadPhase::cache_holds(const SurfaceFeatures& f, double inflation, bool se
   if (features_ != &f || n_nodes_ != f.nodes.size() || n_edges_ != f.edges.size() ||
       n_faces_ != f.faces.size() || inflation_ != inflation || self_contact_ != self_contact)
     return false;
-  bool inside = true;  // no early exit: the loop vectorizes
+  bool inside = true;  // branch-free over all nodes
   for (size_t i = 0; i < node_box_.size(); ++i) inside &= contains(allowance_[i], node_box_[i]);
   return inside;
 }
