@@ -8,107 +8,22 @@
 namespace ccm::dcr {
 namespace {
 
-// Cell coordinates beyond this magnitude are not representable exactly; such boxes are outliers.
-constexpr double kMaxCellCoordinate = 4.5e15;  // ~2^52
-
-bool overlap(const std::array<double, 3>& lo_a, const std::array<double, 3>& hi_a,
-             const std::array<double, 3>& lo_b, const std::array<double, 3>& hi_b) {
-  return lo_a[0] <= hi_b[0] && lo_b[0] <= hi_a[0] && lo_a[1] <= hi_b[1] && lo_b[1] <= hi_a[1] &&
-         lo_a[2] <= hi_b[2] && lo_b[2] <= hi_a[2];
-}
-
-bool shares_node(const std::array<int, 2>& e, const std::array<int, 2>& g) {
-  return e[0] == g[0] || e[0] == g[1] || e[1] == g[0] || e[1] == g[1];
-}
-
-void sort_unique(std::vector<int>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
+// Median over the faces of the largest side of the face box.
+double median_face_extent(const std::vector<Box>& faces, std::vector<double>& scratch) {
+  if (faces.empty()) return 0.0;
+  scratch.clear();
+  for (const Box& b : faces)
+    scratch.push_back(std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]}));
+  const auto mid = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
+  std::nth_element(scratch.begin(), mid, scratch.end());
+  return *mid;
 }
 
 }  // namespace
 
-bool BroadPhase::cells_of(const Box& b, CellRange& r) const {
-  std::int64_t count = 1;
-  for (size_t d = 0; d < 3; ++d) {
-    const double lo = std::floor((b.lo[d] - origin_[d]) * inv_cell_);
-    const double hi = std::floor((b.hi[d] - origin_[d]) * inv_cell_);
-    if (!(std::abs(lo) < kMaxCellCoordinate && std::abs(hi) < kMaxCellCoordinate)) return false;
-    if (hi - lo >= static_cast<double>(kMaxCellsPerFeature)) return false;
-    r.lo[d] = static_cast<std::int64_t>(lo);
-    r.hi[d] = static_cast<std::int64_t>(hi);
-    count *= r.hi[d] - r.lo[d] + 1;
-    if (count > kMaxCellsPerFeature) return false;
-  }
-  return true;
-}
-
-std::size_t BroadPhase::bucket(std::int64_t i, std::int64_t j, std::int64_t k, int bits) {
-  // Teschner et al. 2003, then Fibonacci hashing to spread the XOR over the top `bits` bits.
-  const std::uint64_t h = (static_cast<std::uint64_t>(i) * 73856093u) ^
-                          (static_cast<std::uint64_t>(j) * 19349663u) ^
-                          (static_cast<std::uint64_t>(k) * 83492791u);
-  return static_cast<std::size_t>((h * 0x9E3779B97F4A7C15ull) >> (64 - bits));
-}
-
-template <typename Record>
-void BroadPhase::build(const std::vector<Record>& records, Table& table) {
-  // Pass 1: cell ranges and the number of entries.
-  range_.resize(records.size());
-  table.outliers.clear();
-  std::size_t n_entries = 0;
-  for (size_t e = 0; e < records.size(); ++e) {
-    CellRange& r = range_[e];
-    if (!cells_of(records[e].box, r)) {
-      table.outliers.push_back(static_cast<int>(e));
-      r.lo[0] = 1;  // empty range: not in the grid
-      r.hi[0] = 0;
-      continue;
-    }
-    n_entries += static_cast<std::size_t>((r.hi[0] - r.lo[0] + 1) * (r.hi[1] - r.lo[1] + 1) *
-                                          (r.hi[2] - r.lo[2] + 1));
-  }
-  // A cell holds ~10 entries on a surface, so n_entries / 2 buckets keep collisions rare while
-  // the table stays small enough for the cache.
-  if (n_entries >= std::size_t{1} << 31)
-    throw std::length_error("broad phase: too many grid entries (" + std::to_string(n_entries) +
-                            ")");
-  table.bits = 4;
-  while ((std::size_t{1} << table.bits) < n_entries / 2) ++table.bits;
-  const std::size_t n_buckets = std::size_t{1} << table.bits;
-
-  // Pass 2: the bucket of every (feature, cell) entry, counted per bucket.
-  keys_.clear();
-  table.start.assign(n_buckets + 1, 0);
-  for (size_t e = 0; e < records.size(); ++e) {
-    const CellRange& r = range_[e];
-    if (r.lo[0] > r.hi[0]) continue;
-    for (std::int64_t k = r.lo[2]; k <= r.hi[2]; ++k)
-      for (std::int64_t j = r.lo[1]; j <= r.hi[1]; ++j)
-        for (std::int64_t i = r.lo[0]; i <= r.hi[0]; ++i) {
-          const std::uint32_t h = static_cast<std::uint32_t>(bucket(i, j, k, table.bits));
-          keys_.push_back(h);
-          ++table.start[h];
-        }
-  }
-  // Inclusive prefix sum: start[h] = end of bucket h; then filling backwards leaves start[h] at
-  // the beginning of bucket h, and start[T] = number of entries.
-  for (size_t h = 0; h < n_buckets; ++h) table.start[h + 1] += table.start[h];
-  table.entries.resize(n_entries);
-  std::size_t key = n_entries;
-  for (size_t e = records.size(); e-- > 0;) {
-    const CellRange& r = range_[e];
-    if (r.lo[0] > r.hi[0]) continue;
-    const std::size_t n_cells = static_cast<std::size_t>(
-        (r.hi[0] - r.lo[0] + 1) * (r.hi[1] - r.lo[1] + 1) * (r.hi[2] - r.lo[2] + 1));
-    for (size_t c = 0; c < n_cells; ++c) {
-      const std::uint32_t h = keys_[--key];
-      table.entries[--table.start[h]] = static_cast<int>(e);
-    }
-  }
-  stats_.grid_entries += n_entries;
-  stats_.table_size += n_buckets;
-  stats_.outliers += table.outliers.size();
+void BroadPhase::reset() {
+  features_ = nullptr;
+  stats_ = {};
 }
 
 void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
@@ -116,165 +31,114 @@ void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
                       Candidates& out) {
   out.node_face.clear();
   out.edge_edge.clear();
-  stats_ = {};
-  if (f.nodes.empty()) return;
   if (!(inflation >= 0) || !std::isfinite(inflation))
     throw std::invalid_argument("broad phase: inflation must be finite and >= 0, got " +
                                 std::to_string(inflation));
-  const std::size_t n_global = std::min(x_start.size(), x_end.size());
-  for (int n : f.nodes) {
-    if (n < 0 || static_cast<std::size_t>(n) >= n_global)
-      throw std::invalid_argument("broad phase: surface node " + std::to_string(n) +
-                                  " has no position");
-    if (!x_start[n].allFinite() || !x_end[n].allFinite())
-      throw std::domain_error("broad phase: non-finite position at node " + std::to_string(n));
-  }
+  if (f.nodes.empty()) return;
+  sweep_node_boxes(f, x_start, x_end, node_box_);
+  ++stats_.calls;
+  stats_.rebuilt = !cache_holds(f, inflation, self_contact);
+  if (stats_.rebuilt) rebuild(f, inflation, self_contact);
+  current_boxes(inflation);
+  filter(out);
+}
 
-  // Swept, inflated boxes of all features.
-  auto node_box = [&](int n) {
-    Box b;
+// Same surface, inflation and self_contact, and every node's swept box inside its allowance.
+bool BroadPhase::cache_holds(const SurfaceFeatures& f, double inflation, bool self_contact) const {
+  if (features_ != &f || n_nodes_ != f.nodes.size() || n_edges_ != f.edges.size() ||
+      n_faces_ != f.faces.size() || inflation_ != inflation || self_contact_ != self_contact)
+    return false;
+  bool inside = true;  // branch-free over all nodes
+  for (size_t i = 0; i < node_box_.size(); ++i) inside &= contains(allowance_[i], node_box_[i]);
+  return inside;
+}
+
+void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_contact) {
+  if (features_ != &f || n_nodes_ != f.nodes.size() || n_edges_ != f.edges.size() ||
+      n_faces_ != f.faces.size())
+    topology_ = local_topology(f);
+  features_ = &f;
+  n_nodes_ = f.nodes.size();
+  n_edges_ = f.edges.size();
+  n_faces_ = f.faces.size();
+  inflation_ = inflation;
+  self_contact_ = self_contact;
+
+  feature_boxes(topology_, node_box_, 0.0, cached_);
+  const double h = kHalfSkinFraction * median_face_extent(cached_.face, extent_);
+  allowance_ = node_box_;
+  for (Box& b : allowance_)
     for (size_t d = 0; d < 3; ++d) {
-      const double a = x_start[n][static_cast<Eigen::Index>(d)];
-      const double c = x_end[n][static_cast<Eigen::Index>(d)];
-      b.lo[d] = std::min(a, c);
-      b.hi[d] = std::max(a, c);
+      b.lo[d] -= h;
+      b.hi[d] += h;
     }
-    return b;
+  feature_boxes(topology_, allowance_, inflation, cached_);
+  hash_.find(f, cached_, self_contact, cache_);
+
+  static_cast<SearchStats&>(stats_) = hash_.stats();
+  ++stats_.rebuilds;
+  stats_.cached_pairs = cache_.node_face.size() + cache_.edge_edge.size();
+  stats_.half_skin = h;
+  list_active();
+}
+
+// Sorted lists of the nodes, edges and faces that occur in the cache.
+void BroadPhase::list_active() {
+  auto collect = [this](std::size_t n, auto&& each, std::vector<int>& out) {
+    mark_.assign(n, 0);
+    each([this](int i) { mark_[static_cast<size_t>(i)] = 1; });
+    out.clear();
+    for (size_t i = 0; i < n; ++i)
+      if (mark_[i]) out.push_back(static_cast<int>(i));
   };
-  auto merge = [](Box& b, const Box& o) {
-    for (size_t d = 0; d < 3; ++d) {
-      b.lo[d] = std::min(b.lo[d], o.lo[d]);
-      b.hi[d] = std::max(b.hi[d], o.hi[d]);
-    }
-  };
-  auto inflate = [inflation](Box& b) {
-    for (size_t d = 0; d < 3; ++d) {
-      b.lo[d] -= inflation;
-      b.hi[d] += inflation;
-    }
-  };
-  node_box_.resize(f.nodes.size());
-  for (size_t i = 0; i < f.nodes.size(); ++i) {
-    node_box_[i] = node_box(f.nodes[i]);
-    inflate(node_box_[i]);
-  }
-  edge_.resize(f.edges.size());
-  for (size_t i = 0; i < f.edges.size(); ++i) {
-    Box b = node_box(f.edges[i][0]);
-    merge(b, node_box(f.edges[i][1]));
-    inflate(b);
-    edge_[i] = {b, f.edges[i], f.edge_body[i]};
-  }
-  face_.resize(f.faces.size());
-  for (size_t i = 0; i < f.faces.size(); ++i) {
-    Box b = node_box(f.faces[i][0]);
-    merge(b, node_box(f.faces[i][1]));
-    merge(b, node_box(f.faces[i][2]));
-    inflate(b);
-    face_[i] = {b, f.faces[i], f.face_body[i]};
-  }
-
-  // Grid: origin at the lowest face corner, cell = median largest extent of the face boxes.
-  origin_ = face_.empty() ? node_box_[0].lo : face_[0].box.lo;
-  extent_.clear();
-  double largest = 0;
-  for (const FaceRecord& rec : face_) {
-    const Box& b = rec.box;
-    double e = 0;
-    for (size_t d = 0; d < 3; ++d) {
-      origin_[d] = std::min(origin_[d], b.lo[d]);
-      e = std::max(e, b.hi[d] - b.lo[d]);
-    }
-    extent_.push_back(e);
-    largest = std::max(largest, e);
-  }
-  double cell = 0;
-  if (!extent_.empty()) {
-    const auto mid = extent_.begin() + static_cast<std::ptrdiff_t>(extent_.size() / 2);
-    std::nth_element(extent_.begin(), mid, extent_.end());
-    cell = *mid;
-  }
-  if (!(cell > 0)) cell = largest;
-  if (!(cell > 0)) cell = 1;  // every face is a point: any cell size works
-  inv_cell_ = 1.0 / cell;
-  stats_.cell_size = cell;
-
-  build(face_, faces_);
-  build(edge_, edges_);
-
-  // Visits the grid cells r of table t, calling test(entry) for every entry above `after` found
-  // there. A bucket lists its entries in ascending order (build() fills it backwards), so it is
-  // read from the top down to the first entry <= after.
-  std::size_t visits = 0, tests = 0;
-  auto visit = [&visits, &tests](const CellRange& r, const Table& t, int after, auto&& test) {
-    for (std::int64_t k = r.lo[2]; k <= r.hi[2]; ++k)
-      for (std::int64_t j = r.lo[1]; j <= r.hi[1]; ++j)
-        for (std::int64_t i = r.lo[0]; i <= r.hi[0]; ++i) {
-          const std::size_t h = bucket(i, j, k, t.bits);
-          const std::uint32_t begin = t.start[h];
-          ++visits;
-          for (std::uint32_t e = t.start[h + 1]; e > begin;) {
-            const int entry = t.entries[--e];
-            if (entry <= after) break;
-            ++tests;
-            test(entry);
-          }
+  collect(
+      n_nodes_,
+      [this](auto&& mark) {
+        for (const auto& p : cache_.node_face) mark(p.node);
+      },
+      active_nodes_);
+  collect(
+      n_faces_,
+      [this](auto&& mark) {
+        for (const auto& p : cache_.node_face) mark(p.face);
+      },
+      active_faces_);
+  collect(
+      n_edges_,
+      [this](auto&& mark) {
+        for (const auto& p : cache_.edge_edge) {
+          mark(p.edge_a);
+          mark(p.edge_b);
         }
-  };
-  CellRange cells;
+      },
+      active_edges_);
+}
 
-  // Node-face pairs.
-  for (size_t i = 0; i < f.nodes.size(); ++i) {
-    const int node = f.nodes[i];
-    const int body = self_contact ? -1 : f.node_body[i];
-    const Box q = node_box_[i];
-    found_.clear();
-    auto test = [&](int face) {
-      const FaceRecord& rec = face_[static_cast<size_t>(face)];
-      if (!overlap(q.lo, q.hi, rec.box.lo, rec.box.hi) || rec.body == body) return;
-      if (rec.nodes[0] == node || rec.nodes[1] == node || rec.nodes[2] == node) return;
-      found_.push_back(face);
-    };
-    if (cells_of(q, cells)) {
-      visit(cells, faces_, -1, test);
-      for (int face : faces_.outliers) test(face);
-      tests += faces_.outliers.size();
-    } else {
-      ++stats_.outliers;
-      for (int face = 0; face < f.n_faces(); ++face) test(face);
-      tests += f.faces.size();
-    }
-    sort_unique(found_);
-    for (int face : found_) out.node_face.push_back({static_cast<int>(i), face});
-  }
+// The step's boxes of the active features, by the functions the grid search used.
+void BroadPhase::current_boxes(double inflation) {
+  current_.node.resize(n_nodes_);
+  current_.edge.resize(n_edges_);
+  current_.face.resize(n_faces_);
+  for (int i : active_nodes_)
+    current_.node[static_cast<size_t>(i)] = inflated(node_box_[static_cast<size_t>(i)], inflation);
+  for (int i : active_edges_)
+    current_.edge[static_cast<size_t>(i)] =
+        edge_box(topology_.edges[static_cast<size_t>(i)], node_box_, inflation);
+  for (int i : active_faces_)
+    current_.face[static_cast<size_t>(i)] =
+        face_box(topology_.faces[static_cast<size_t>(i)], node_box_, inflation);
+}
 
-  // Edge-edge pairs, each (a, b) once with a < b.
-  for (size_t a = 0; a < f.edges.size(); ++a) {
-    const std::array<int, 2> ea = f.edges[a];
-    const int body = self_contact ? -1 : f.edge_body[a];
-    const int ia = static_cast<int>(a);
-    const Box q = edge_[a].box;
-    found_.clear();
-    auto test = [&](int b) {  // b > ia
-      const EdgeRecord& rec = edge_[static_cast<size_t>(b)];
-      if (!overlap(q.lo, q.hi, rec.box.lo, rec.box.hi) || rec.body == body) return;
-      if (shares_node(ea, rec.nodes)) return;
-      found_.push_back(b);
-    };
-    if (cells_of(q, cells)) {
-      visit(cells, edges_, ia, test);
-      for (int b : edges_.outliers)
-        if (b > ia) test(b);
-      tests += edges_.outliers.size();
-    } else {
-      for (int b = ia + 1; b < f.n_edges(); ++b) test(b);
-      tests += f.edges.size() - a - 1;
-    }
-    sort_unique(found_);
-    for (int b : found_) out.edge_edge.push_back({ia, b});
-  }
-  stats_.cell_visits = visits;
-  stats_.box_tests = tests;
+// The fresh search's test (closed box overlap) on the current boxes, over the cached pairs.
+void BroadPhase::filter(Candidates& out) const {
+  for (const NodeFaceCandidate& p : cache_.node_face)
+    if (overlap(current_.node[static_cast<size_t>(p.node)],
+                current_.face[static_cast<size_t>(p.face)]))
+      out.node_face.push_back(p);
+  for (const EdgeEdgeCandidate& p : cache_.edge_edge)
+    if (overlap(current_.edge[static_cast<size_t>(p.edge_a)],
+                current_.edge[static_cast<size_t>(p.edge_b)]))
+      out.edge_edge.push_back(p);
 }
 
 }  // namespace ccm::dcr

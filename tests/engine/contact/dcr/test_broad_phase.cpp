@@ -295,3 +295,55 @@ TEST_CASE("broad phase: cost grows linearly with the surface", "[dcr]") {
   CHECK(static_cast<double>(large.pairs) / static_cast<double>(small.pairs) ==
         Approx(ratio).epsilon(0.1));
 }
+
+TEST_CASE("broad phase: the cached search equals brute force over a moving sequence",
+          "[dcr][broad_phase]") {
+  // The right sphere approaches the left one by 0.004 per step (the half skin is about 0.1 here,
+  // a quarter of a face box), every node wobbles by up to 0.002 along its own random direction,
+  // and at step 30 the right sphere jumps 0.3 towards the left one within a single step: the
+  // cache must be reused across steps, rebuilt when a node leaves its allowance, and every step's
+  // candidates must equal the all-pairs filter of that step exactly.
+  const ModelMesh& mesh = two_spheres();
+  const SurfaceFeatures f =
+      ccm::dcr::make_surface_features(mesh, {"left/boundary", "right/boundary"});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> wobble;
+  for (size_t i = 0; i < mesh.X.size(); ++i) wobble.push_back(Vec3(u(rng), u(rng), u(rng)));
+  auto positions = [&](int k) {
+    const double shift = 0.4 - 0.004 * k - (k > 30 ? 0.3 : 0.0);
+    std::vector<Vec3> x = mesh.X;
+    for (size_t i = 0; i < x.size(); ++i) {
+      x[i] += 0.002 * std::sin(0.3 * k) * wobble[i];
+      if (static_cast<int>(i) >= mesh.bodies[1].first_node) x[i].x() += shift;
+    }
+    return x;
+  };
+
+  for (bool self_contact : {false, true}) {
+    CAPTURE(self_contact);
+    BroadPhase bp;
+    Candidates got;
+    std::size_t pairs = 0;
+    for (int k = 0; k < 60; ++k) {
+      CAPTURE(k);
+      const Step step{positions(k), positions(k + 1)};
+      bp.find(f, step.x_start, step.x_end, 0.01, self_contact, got);
+      const Candidates want = brute_force(f, step, 0.01, self_contact);
+      REQUIRE(same(got, want));
+      pairs += got.node_face.size() + got.edge_edge.size();
+      if (k == 30) CHECK(bp.stats().rebuilt);  // the jump leaves every allowance box
+    }
+    CHECK(pairs > 1000);  // the spheres do interact: the comparison is not between empty lists
+    CHECK(bp.stats().calls == 60);
+    CHECK(bp.stats().rebuilds >= 3);   // the approach outruns the skin more than once
+    CHECK(bp.stats().rebuilds <= 20);  // and yet most steps reuse the cache
+    // A fresh object on the last step gives the same answer as the warm one.
+    BroadPhase fresh;
+    Candidates again;
+    const Step last{positions(59), positions(60)};
+    fresh.find(f, last.x_start, last.x_end, 0.01, self_contact, again);
+    bp.find(f, last.x_start, last.x_end, 0.01, self_contact, got);
+    CHECK(same(got, again));
+  }
+}

@@ -1,0 +1,229 @@
+#include "engine/contact/dcr/swept_box_hash.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ccm::dcr {
+namespace {
+
+// Cell coordinates beyond this magnitude are not representable exactly; such boxes are outliers.
+constexpr double kMaxCellCoordinate = 4.5e15;  // ~2^52
+
+bool shares_node(const std::array<int, 2>& e, const std::array<int, 2>& g) {
+  return e[0] == g[0] || e[0] == g[1] || e[1] == g[0] || e[1] == g[1];
+}
+
+void sort_unique(std::vector<int>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+}  // namespace
+
+bool SweptBoxHash::cells_of(const Box& b, CellRange& r) const {
+  std::int64_t count = 1;
+  for (size_t d = 0; d < 3; ++d) {
+    const double lo = std::floor((b.lo[d] - origin_[d]) * inv_cell_);
+    const double hi = std::floor((b.hi[d] - origin_[d]) * inv_cell_);
+    if (!(std::abs(lo) < kMaxCellCoordinate && std::abs(hi) < kMaxCellCoordinate)) return false;
+    if (hi - lo >= static_cast<double>(kMaxCellsPerFeature)) return false;
+    r.lo[d] = static_cast<std::int64_t>(lo);
+    r.hi[d] = static_cast<std::int64_t>(hi);
+    count *= r.hi[d] - r.lo[d] + 1;
+    if (count > kMaxCellsPerFeature) return false;
+  }
+  return true;
+}
+
+std::size_t SweptBoxHash::bucket(std::int64_t i, std::int64_t j, std::int64_t k, int bits) {
+  // Teschner et al. 2003, then Fibonacci hashing to spread the XOR over the top `bits` bits.
+  const std::uint64_t h = (static_cast<std::uint64_t>(i) * 73856093u) ^
+                          (static_cast<std::uint64_t>(j) * 19349663u) ^
+                          (static_cast<std::uint64_t>(k) * 83492791u);
+  return static_cast<std::size_t>((h * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+}
+
+template <typename Record>
+void SweptBoxHash::build(const std::vector<Record>& records, Table& table) {
+  // Pass 1: cell ranges and the number of entries.
+  range_.resize(records.size());
+  table.outliers.clear();
+  std::size_t n_entries = 0;
+  for (size_t e = 0; e < records.size(); ++e) {
+    CellRange& r = range_[e];
+    if (!cells_of(records[e].box, r)) {
+      table.outliers.push_back(static_cast<int>(e));
+      r.lo[0] = 1;  // empty range: not in the grid
+      r.hi[0] = 0;
+      continue;
+    }
+    n_entries += static_cast<std::size_t>((r.hi[0] - r.lo[0] + 1) * (r.hi[1] - r.lo[1] + 1) *
+                                          (r.hi[2] - r.lo[2] + 1));
+  }
+  // A cell holds ~10 entries on a surface, so n_entries / 2 buckets keep collisions rare while
+  // the table stays small enough for the cache.
+  if (n_entries >= std::size_t{1} << 31)
+    throw std::length_error("broad phase: too many grid entries (" + std::to_string(n_entries) +
+                            ")");
+  table.bits = 4;
+  while ((std::size_t{1} << table.bits) < n_entries / 2) ++table.bits;
+  const std::size_t n_buckets = std::size_t{1} << table.bits;
+
+  // Pass 2: the bucket of every (feature, cell) entry, counted per bucket.
+  keys_.clear();
+  table.start.assign(n_buckets + 1, 0);
+  for (size_t e = 0; e < records.size(); ++e) {
+    const CellRange& r = range_[e];
+    if (r.lo[0] > r.hi[0]) continue;
+    for (std::int64_t k = r.lo[2]; k <= r.hi[2]; ++k)
+      for (std::int64_t j = r.lo[1]; j <= r.hi[1]; ++j)
+        for (std::int64_t i = r.lo[0]; i <= r.hi[0]; ++i) {
+          const std::uint32_t h = static_cast<std::uint32_t>(bucket(i, j, k, table.bits));
+          keys_.push_back(h);
+          ++table.start[h];
+        }
+  }
+  // Inclusive prefix sum: start[h] = end of bucket h; then filling backwards leaves start[h] at
+  // the beginning of bucket h, and start[T] = number of entries.
+  for (size_t h = 0; h < n_buckets; ++h) table.start[h + 1] += table.start[h];
+  table.entries.resize(n_entries);
+  std::size_t key = n_entries;
+  for (size_t e = records.size(); e-- > 0;) {
+    const CellRange& r = range_[e];
+    if (r.lo[0] > r.hi[0]) continue;
+    const std::size_t n_cells = static_cast<std::size_t>(
+        (r.hi[0] - r.lo[0] + 1) * (r.hi[1] - r.lo[1] + 1) * (r.hi[2] - r.lo[2] + 1));
+    for (size_t c = 0; c < n_cells; ++c) {
+      const std::uint32_t h = keys_[--key];
+      table.entries[--table.start[h]] = static_cast<int>(e);
+    }
+  }
+  stats_.grid_entries += n_entries;
+  stats_.table_size += n_buckets;
+  stats_.outliers += table.outliers.size();
+}
+
+// A bucket lists its entries in ascending order (build() fills it backwards), so it is read from
+// the top down to the first entry <= after.
+template <typename Test>
+void SweptBoxHash::visit(const CellRange& r, const Table& t, int after, Test&& test) {
+  for (std::int64_t k = r.lo[2]; k <= r.hi[2]; ++k)
+    for (std::int64_t j = r.lo[1]; j <= r.hi[1]; ++j)
+      for (std::int64_t i = r.lo[0]; i <= r.hi[0]; ++i) {
+        const std::size_t h = bucket(i, j, k, t.bits);
+        const std::uint32_t begin = t.start[h];
+        ++stats_.cell_visits;
+        for (std::uint32_t e = t.start[h + 1]; e > begin;) {
+          const int entry = t.entries[--e];
+          if (entry <= after) break;
+          ++stats_.box_tests;
+          test(entry);
+        }
+      }
+}
+
+// Grid origin at the lowest face corner, cell = median largest extent of the face boxes.
+void SweptBoxHash::choose_grid(const FeatureBoxes& boxes) {
+  origin_ = boxes.face.empty() ? boxes.node[0].lo : boxes.face[0].lo;
+  extent_.clear();
+  double largest = 0;
+  for (const Box& b : boxes.face) {
+    double e = 0;
+    for (size_t d = 0; d < 3; ++d) {
+      origin_[d] = std::min(origin_[d], b.lo[d]);
+      e = std::max(e, b.hi[d] - b.lo[d]);
+    }
+    extent_.push_back(e);
+    largest = std::max(largest, e);
+  }
+  double cell = 0;
+  if (!extent_.empty()) {
+    const auto mid = extent_.begin() + static_cast<std::ptrdiff_t>(extent_.size() / 2);
+    std::nth_element(extent_.begin(), mid, extent_.end());
+    cell = *mid;
+  }
+  if (!(cell > 0)) cell = largest;
+  if (!(cell > 0)) cell = 1;  // every face is a point: any cell size works
+  inv_cell_ = 1.0 / cell;
+  stats_.cell_size = cell;
+}
+
+void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact,
+                        Candidates& out) {
+  out.node_face.clear();
+  out.edge_edge.clear();
+  stats_ = {};
+  if (f.nodes.empty()) return;
+  edge_.resize(f.edges.size());
+  for (size_t i = 0; i < f.edges.size(); ++i)
+    edge_[i] = {boxes.edge[i], f.edges[i], f.edge_body[i]};
+  face_.resize(f.faces.size());
+  for (size_t i = 0; i < f.faces.size(); ++i)
+    face_[i] = {boxes.face[i], f.faces[i], f.face_body[i]};
+  choose_grid(boxes);
+  build(face_, faces_);
+  build(edge_, edges_);
+  find_node_face(f, boxes, self_contact, out);
+  find_edge_edge(f, self_contact, out);
+}
+
+void SweptBoxHash::find_node_face(const SurfaceFeatures& f, const FeatureBoxes& boxes,
+                                  bool self_contact, Candidates& out) {
+  CellRange cells;
+  for (size_t i = 0; i < f.nodes.size(); ++i) {
+    const int node = f.nodes[i];
+    const int body = self_contact ? -1 : f.node_body[i];
+    const Box& q = boxes.node[i];
+    found_.clear();
+    auto test = [&](int face) {
+      const FaceRecord& rec = face_[static_cast<size_t>(face)];
+      if (!overlap(q, rec.box) || rec.body == body) return;
+      if (rec.nodes[0] == node || rec.nodes[1] == node || rec.nodes[2] == node) return;
+      found_.push_back(face);
+    };
+    if (cells_of(q, cells)) {
+      visit(cells, faces_, -1, test);
+      for (int face : faces_.outliers) test(face);
+      stats_.box_tests += faces_.outliers.size();
+    } else {
+      ++stats_.outliers;
+      for (int face = 0; face < f.n_faces(); ++face) test(face);
+      stats_.box_tests += f.faces.size();
+    }
+    sort_unique(found_);
+    for (int face : found_) out.node_face.push_back({static_cast<int>(i), face});
+  }
+}
+
+// Each pair (a, b) once, with a < b.
+void SweptBoxHash::find_edge_edge(const SurfaceFeatures& f, bool self_contact, Candidates& out) {
+  CellRange cells;
+  for (size_t a = 0; a < f.edges.size(); ++a) {
+    const std::array<int, 2> ea = f.edges[a];
+    const int body = self_contact ? -1 : f.edge_body[a];
+    const int ia = static_cast<int>(a);
+    const Box& q = edge_[a].box;
+    found_.clear();
+    auto test = [&](int b) {  // b > ia
+      const EdgeRecord& rec = edge_[static_cast<size_t>(b)];
+      if (!overlap(q, rec.box) || rec.body == body) return;
+      if (shares_node(ea, rec.nodes)) return;
+      found_.push_back(b);
+    };
+    if (cells_of(q, cells)) {
+      visit(cells, edges_, ia, test);
+      for (int b : edges_.outliers)
+        if (b > ia) test(b);
+      stats_.box_tests += edges_.outliers.size();
+    } else {
+      for (int b = ia + 1; b < f.n_edges(); ++b) test(b);
+      stats_.box_tests += f.edges.size() - a - 1;
+    }
+    sort_unique(found_);
+    for (int b : found_) out.edge_edge.push_back({ia, b});
+  }
+}
+
+}  // namespace ccm::dcr

@@ -1,0 +1,60 @@
+#include "engine/contact/dcr/swept_boxes.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace ccm::dcr {
+
+LocalTopology local_topology(const SurfaceFeatures& f) {
+  auto local = [&f](int global) {
+    const auto it = std::lower_bound(f.nodes.begin(), f.nodes.end(), global);
+    if (it == f.nodes.end() || *it != global)
+      throw std::invalid_argument("broad phase: node " + std::to_string(global) +
+                                  " of a surface feature is not a surface node");
+    return static_cast<int>(it - f.nodes.begin());
+  };
+  LocalTopology t;
+  t.faces.reserve(f.faces.size());
+  for (const Triangle& face : f.faces)
+    t.faces.push_back({local(face[0]), local(face[1]), local(face[2])});
+  t.edges.reserve(f.edges.size());
+  for (const auto& edge : f.edges) t.edges.push_back({local(edge[0]), local(edge[1])});
+  return t;
+}
+
+void sweep_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                      std::span<const Vec3> x_end, std::vector<Box>& node_boxes) {
+  const std::size_t n_global = std::min(x_start.size(), x_end.size());
+  node_boxes.resize(f.nodes.size());
+  for (size_t i = 0; i < f.nodes.size(); ++i) {
+    const int n = f.nodes[i];
+    if (n < 0 || static_cast<std::size_t>(n) >= n_global)
+      throw std::invalid_argument("broad phase: surface node " + std::to_string(n) +
+                                  " has no position");
+    const Vec3& a = x_start[static_cast<size_t>(n)];
+    const Vec3& c = x_end[static_cast<size_t>(n)];
+    if (!a.allFinite() || !c.allFinite())
+      throw std::domain_error("broad phase: non-finite position at node " + std::to_string(n));
+    Box& b = node_boxes[i];
+    for (size_t d = 0; d < 3; ++d) {
+      const auto k = static_cast<Eigen::Index>(d);
+      b.lo[d] = std::min(a[k], c[k]);
+      b.hi[d] = std::max(a[k], c[k]);
+    }
+  }
+}
+
+void feature_boxes(const LocalTopology& topology, const std::vector<Box>& node_boxes,
+                   double inflation, FeatureBoxes& out) {
+  out.node.resize(node_boxes.size());
+  for (size_t i = 0; i < node_boxes.size(); ++i) out.node[i] = inflated(node_boxes[i], inflation);
+  out.edge.resize(topology.edges.size());
+  for (size_t i = 0; i < topology.edges.size(); ++i)
+    out.edge[i] = edge_box(topology.edges[i], node_boxes, inflation);
+  out.face.resize(topology.faces.size());
+  for (size_t i = 0; i < topology.faces.size(); ++i)
+    out.face[i] = face_box(topology.faces[i], node_boxes, inflation);
+}
+
+}  // namespace ccm::dcr

@@ -1,0 +1,89 @@
+// Swept, inflated axis-aligned boxes of the contact surface's features over one step
+// (contact-method.md §4, thesis 2.4):
+//   node box  = [min(x_n, x_{n+1}), max(x_n, x_{n+1})]  (per coordinate),
+//   edge/face = the hull of its nodes' boxes,
+// every box then inflated by the same `inflation` on every side. The broad phase's grid search
+// and its cached filter both get their boxes from feature_boxes(), so the two see bit-identical
+// boxes and agree exactly on which pairs overlap.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "engine/contact/dcr/contact_surface.hpp"
+#include "engine/core/types.hpp"
+
+namespace ccm::dcr {
+
+struct Box {
+  std::array<double, 3> lo, hi;
+};
+
+// Closed intervals: touching boxes overlap.
+inline bool overlap(const Box& a, const Box& b) {
+  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+}
+
+// True when `inner` lies inside `outer` (closed).
+inline bool contains(const Box& outer, const Box& inner) {
+  return outer.lo[0] <= inner.lo[0] && outer.lo[1] <= inner.lo[1] && outer.lo[2] <= inner.lo[2] &&
+         inner.hi[0] <= outer.hi[0] && inner.hi[1] <= outer.hi[1] && inner.hi[2] <= outer.hi[2];
+}
+
+// The faces and edges of a surface in local node indices (into SurfaceFeatures::nodes).
+struct LocalTopology {
+  std::vector<std::array<int, 3>> faces;
+  std::vector<std::array<int, 2>> edges;
+};
+
+// Throws std::invalid_argument when a face or edge uses a node missing from f.nodes.
+LocalTopology local_topology(const SurfaceFeatures& f);
+
+// The swept box of every surface node (index i of f.nodes), not inflated. Throws
+// std::invalid_argument when a surface node has no position and std::domain_error naming the node
+// when a position is not finite.
+void sweep_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                      std::span<const Vec3> x_end, std::vector<Box>& node_boxes);
+
+// The box of one feature: the hull of its nodes' boxes, inflated. feature_boxes() and the
+// broad phase's cached filter both call these, so their boxes are bit-identical.
+inline Box inflated(Box b, double inflation) {
+  for (size_t d = 0; d < 3; ++d) {
+    b.lo[d] -= inflation;
+    b.hi[d] += inflation;
+  }
+  return b;
+}
+
+inline Box hull(Box b, const Box& o) {
+  for (size_t d = 0; d < 3; ++d) {
+    b.lo[d] = o.lo[d] < b.lo[d] ? o.lo[d] : b.lo[d];
+    b.hi[d] = o.hi[d] > b.hi[d] ? o.hi[d] : b.hi[d];
+  }
+  return b;
+}
+
+inline Box edge_box(const std::array<int, 2>& e, const std::vector<Box>& node_boxes,
+                    double inflation) {
+  return inflated(
+      hull(node_boxes[static_cast<size_t>(e[0])], node_boxes[static_cast<size_t>(e[1])]),
+      inflation);
+}
+
+inline Box face_box(const std::array<int, 3>& t, const std::vector<Box>& node_boxes,
+                    double inflation) {
+  const Box b = hull(node_boxes[static_cast<size_t>(t[0])], node_boxes[static_cast<size_t>(t[1])]);
+  return inflated(hull(b, node_boxes[static_cast<size_t>(t[2])]), inflation);
+}
+
+struct FeatureBoxes {
+  std::vector<Box> node, edge, face;  // inflated; indexed like SurfaceFeatures
+};
+
+// Hulls of the given node boxes over each edge and face, then all boxes inflated.
+void feature_boxes(const LocalTopology& topology, const std::vector<Box>& node_boxes,
+                   double inflation, FeatureBoxes& out);
+
+}  // namespace ccm::dcr
