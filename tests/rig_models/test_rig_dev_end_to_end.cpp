@@ -1,6 +1,6 @@
 // End to end on the synthetic dev trials (../shared/data/rig-dev, 12 cases x 3 trials): every
-// file read and checked, the sensor model applied, and the trials of each case compared with
-// each other (mean and spread). Skipped with a warning when the folder is not there.
+// file read and checked (rates and deadband of cases.toml), and the trials of each case compared
+// with each other (mean and spread). Skipped with a warning when the folder is not there.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,8 +11,8 @@
 #include <map>
 
 #include "rig_models/cases/case_file.hpp"
-#include "rig_models/compare/trial_ensemble.hpp"
-#include "rig_models/measurement/trial_csv.hpp"
+#include "rig_models/compare/case_comparison.hpp"
+#include "rig_models/measurement/trial_folder.hpp"
 #include "rig_models/signal/deadband.hpp"
 
 namespace fs = std::filesystem;
@@ -22,19 +22,6 @@ namespace {
 
 const fs::path kDevData = fs::path(CCM_SOURCE_DIR) / ".." / "shared" / "data" / "rig-dev";
 const fs::path kCaseFile = fs::path(CCM_SOURCE_DIR) / "rig_models" / "cases.toml";
-
-std::map<std::string, std::vector<MeasuredTrial>> read_all_trials(const fs::path& dir) {
-  std::map<std::string, std::vector<MeasuredTrial>> by_case;
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.path().extension() == ".csv") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());  // trial order, deterministic
-  for (const fs::path& f : files) {
-    MeasuredTrial m = read_trial_csv(f);
-    by_case[m.case_code].push_back(std::move(m));
-  }
-  return by_case;
-}
 
 // Every step of the series equals 1 / rate, to 1e-6 s (timestamps are printed to 1e-7 s).
 bool sampled_at(const TimeSeries& s, double rate) {
@@ -52,11 +39,11 @@ double impact_speed(const MeasuredTrial& m, double onset) {
   return v_max;
 }
 
-template <typename F>
-std::vector<TimeSeries> channel(const std::vector<MeasuredTrial>& trials, F member) {
-  std::vector<TimeSeries> out;
-  for (const MeasuredTrial& m : trials) out.push_back(m.*member);
-  return out;
+// The pointwise mean of one channel over the trials (trial_ensemble.hpp).
+TimeSeries mean_of(const std::vector<MeasuredTrial>& trials, TimeSeries MeasuredTrial::*member) {
+  std::vector<TimeSeries> channel;
+  for (const MeasuredTrial& m : trials) channel.push_back(m.*member);
+  return channel_ensemble(channel).mean;
 }
 
 }  // namespace
@@ -69,7 +56,7 @@ TEST_CASE("rig-dev end to end: read every trial, sensor model, trials of a case 
   }
   const RigCaseTable cases = read_case_table(kCaseFile);
   const RigParameters& rig = cases.rig;
-  const auto by_case = read_all_trials(kDevData);
+  const auto by_case = read_trial_folder(kDevData);  // all read and checked first
   REQUIRE(by_case.size() == cases.cases.size());
 
   std::cout << "case  trials  impact speed [m/s]  onset [s]         first contact [s]  "
@@ -109,18 +96,20 @@ TEST_CASE("rig-dev end to end: read every trial, sensor model, trials of a case 
     // repeats of one setup: onsets within one and a half pressure samples of each other
     CHECK(onset.std_dev <= 1.5 / rig.pressure_rate.value);
 
-    // each trial's V_i and theta_a against the mean of the case's trials
-    const auto velocity = channel(trials, &MeasuredTrial::impactor_velocity_mps);
-    const ChannelEnsemble v_mean = channel_ensemble(velocity);
-    const ChannelAgainstTrials v_vs = compare_with_trials(velocity, v_mean.mean);
+    // each trial against the mean of the case's trials, channel by channel, as a simulation
+    // would be compared with them
+    const RigChannels mean{mean_of(trials, &MeasuredTrial::impactor_velocity_mps),
+                           mean_of(trials, &MeasuredTrial::artifact_angle_deg),
+                           mean_of(trials, &MeasuredTrial::pressure_kpa)};
+    const CaseComparison against_mean = compare_case(trials, mean, rig.sensor_deadband.value);
     std::vector<double> v_nrmse;
-    for (const ChannelComparison& c : v_vs.per_trial) v_nrmse.push_back(*c.nrmse);
+    for (const ChannelComparison& c : against_mean.velocity.per_trial) v_nrmse.push_back(*c.nrmse);
     const Spread v_spread = spread_of(v_nrmse);
-    // trials of one case agree: no trial further than 10 % of the range from the mean
+    // trials of one case agree: no trial's V_i further than 10 % of its range from the mean
     CHECK(v_spread.max < 0.1);
-    const auto angle = channel(trials, &MeasuredTrial::artifact_angle_deg);
-    const ChannelEnsemble a_mean = channel_ensemble(angle);
-    CHECK(a_mean.mean.t.size() == trials[0].artifact_angle_deg.t.size());
+    // the mean pressure has a contact too, within a pressure sample of the trials' mean onset
+    REQUIRE(against_mean.onset_error);
+    CHECK(std::abs(against_mean.onset_error->mean) <= 1.0 / rig.pressure_rate.value);
     std::cout << fmt::format(
         "{}  {:>6}  {:.3f} +- {:.3f}       {:.4f} +- {:.4f}  {:.4f} +- {:.4f}    {:6.1f} +- "
         "{:5.1f}  {:.3f} (max {:.3f})\n",
