@@ -46,7 +46,7 @@ CellNumber parse_number_cell(std::string_view cell) {
   if (ec == std::errc::result_out_of_range) {
     // from_chars leaves v alone on overflow and underflow alike; strtod tells them apart.
     const double huge_or_tiny = std::strtod(std::string(digits).c_str(), nullptr);
-    if (std::isfinite(huge_or_tiny) || huge_or_tiny == 0.0)
+    if (std::isfinite(huge_or_tiny))
       return {0.0, fmt::format("number '{}' is too small for a double", cell)};
     return {0.0, fmt::format("non-finite number '{}'", cell)};
   }

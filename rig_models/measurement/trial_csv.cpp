@@ -61,6 +61,11 @@ std::string column_label(const ColumnMap& columns, size_t i) {
   return fmt::format("column {} ({})", i + 1, columns.names[i]);
 }
 
+std::string delimiter_problem(char delimiter) {
+  return fmt::format("wrong delimiter '{}' (expected ',')",
+                     delimiter == '\t' ? std::string("\\t") : std::string(1, delimiter));
+}
+
 class TrialReader {
  public:
   TrialReader(std::string_view text, fs::path source) : source_(std::move(source)) {
@@ -119,9 +124,7 @@ class TrialReader {
     const std::vector<std::string_view> cells = split_cells(line.text);
     for (size_t c = 0; c < cells.size(); ++c) {
       if (const auto d = foreign_delimiter(cells[c]))
-        throw error(line.number, fmt::format("column {}", c + 1),
-                    fmt::format("wrong delimiter '{}' (expected ',')",
-                                *d == '\t' ? "\\t" : std::string(1, *d)));
+        throw error(line.number, fmt::format("column {}", c + 1), delimiter_problem(*d));
       const std::string name(cells[c]);
       if (std::find(columns.names.begin(), columns.names.end(), name) != columns.names.end())
         throw error(line.number, fmt::format("column {} ({})", c + 1, name),
@@ -149,8 +152,7 @@ class TrialReader {
     for (size_t c = 0; c < cells.size(); ++c)
       if (const auto d = foreign_delimiter(cells[c]))
         throw error(line.number, c < columns.names.size() ? column_label(columns, c) : "",
-                    fmt::format("wrong delimiter '{}' (expected ',')",
-                                *d == '\t' ? "\\t" : std::string(1, *d)));
+                    delimiter_problem(*d));
     if (cells.size() != columns.names.size())
       throw error(line.number, "",
                   fmt::format("{} cells, the header has {}", cells.size(), columns.names.size()));

@@ -111,6 +111,9 @@ TEST_CASE("trial CSV: a non-finite number", "[rig]") {
         "RX025_t2.csv:7: column 3 (artifact_angle_deg): non-finite number '-inf'");
   CHECK(error_of(with(kGood, "0.015625,,0.02,1.5", "0.015625,,0.02,1e999")) ==
         "RX025_t2.csv:7: column 4 (pressure_kpa): non-finite number '1e999'");
+  CHECK(error_of(with(kGood, "0.015625,,0.02,1.5", "0.015625,,1e-400,1.5")) ==
+        "RX025_t2.csv:7: column 3 (artifact_angle_deg): number '1e-400' is too small for a "
+        "double");
   CHECK(error_of(with(kGood, "0.000,0.10", "inf,0.10")) ==
         "RX025_t2.csv:4: column 1 (time_s): non-finite number 'inf'");
 }
