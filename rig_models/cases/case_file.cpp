@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 constexpr int kCaseCount = 12;
 
-// A { value, unit, source } parameter with the expected unit; value > 0 unless zero_ok.
+// A { value, unit, source } parameter with the expected unit and a value > 0.
 SourcedValue read_sourced(const TomlFields& parent, std::string_view key, std::string_view unit) {
   const TomlFields t = parent.need_table(key);
   t.allow_only({"value", "unit", "source"});

@@ -169,9 +169,7 @@ class TrialReader {
     }
     if (!any_sensor)
       throw error(line.number, "",
-                  fmt::format("no sensor value at {} s (every sensor cell is "
-                              "empty)",
-                              t));
+                  fmt::format("no sensor value at {} s (every sensor cell is empty)", t));
     previous_time_ = t;
     previous_line_ = line.number;
   }
