@@ -1,0 +1,177 @@
+#include "rig_models/cases/case_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "rig_models/cases/case_code.hpp"
+#include "rig_models/cases/toml_fields.hpp"
+#include "rig_models/core/rig_error.hpp"
+
+namespace ccm::rig {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kCaseCount = 12;
+
+// A { value, unit, source } parameter with the expected unit and a value > 0.
+SourcedValue read_sourced(const TomlFields& parent, std::string_view key, std::string_view unit) {
+  const TomlFields t = parent.need_table(key);
+  t.allow_only({"value", "unit", "source"});
+  SourcedValue v{t.need_number("value"), t.need_string("unit"), t.need_string("source")};
+  if (v.unit != unit) t.fail("unit", fmt::format("must be '{}' (got '{}')", unit, v.unit));
+  if (!(v.value > 0.0)) t.fail("value", fmt::format("must be > 0 (got {})", v.value));
+  return v;
+}
+
+RigParameters read_rig(const TomlFields& root) {
+  const TomlFields t = root.need_table("rig");
+  t.allow_only({"hanging_mass", "impactor_mass", "spring_stiffness", "spring_length",
+                "spring_cylinder_diameter", "artifact_mass", "artifact_inertia_pivot",
+                "pivot_to_sensor", "sensor_area", "sensor_deadband", "pressure_rate", "angle_rate",
+                "velocity_rate", "low_pass_cutoff", "trials_per_case"});
+  RigParameters r;
+  r.hanging_mass = read_sourced(t, "hanging_mass", "kg");
+  r.impactor_mass = read_sourced(t, "impactor_mass", "kg");
+  r.spring_stiffness = read_sourced(t, "spring_stiffness", "N/m");
+  r.spring_length = read_sourced(t, "spring_length", "m");
+  r.spring_cylinder_diameter = read_sourced(t, "spring_cylinder_diameter", "m");
+  r.artifact_mass = read_sourced(t, "artifact_mass", "kg");
+  r.artifact_inertia_pivot = read_sourced(t, "artifact_inertia_pivot", "kg m^2");
+  r.pivot_to_sensor = read_sourced(t, "pivot_to_sensor", "m");
+  r.sensor_area = read_sourced(t, "sensor_area", "m^2");
+  r.sensor_deadband = read_sourced(t, "sensor_deadband", "kPa");
+  r.pressure_rate = read_sourced(t, "pressure_rate", "Hz");
+  r.angle_rate = read_sourced(t, "angle_rate", "Hz");
+  r.velocity_rate = read_sourced(t, "velocity_rate", "Hz");
+  r.low_pass_cutoff = read_sourced(t, "low_pass_cutoff", "Hz");
+  r.trials_per_case = read_sourced(t, "trials_per_case", "count");
+  if (2.0 * r.low_pass_cutoff.value > r.pressure_rate.value)
+    t.fail("low_pass_cutoff", fmt::format("{} Hz is above the Nyquist frequency of the {} Hz "
+                                          "pressure sensor",
+                                          r.low_pass_cutoff.value, r.pressure_rate.value));
+  return r;
+}
+
+template <typename Kind>
+Kind read_kind(const TomlFields& t, std::string_view key, std::array<Kind, 2> kinds) {
+  const std::string name = t.need_string(key);
+  for (Kind k : kinds)
+    if (name == name_of(k)) return k;
+  t.fail(key,
+         fmt::format("'{}' is not one of: {}, {}", name, name_of(kinds[0]), name_of(kinds[1])));
+}
+
+PivotFriction read_friction(const TomlFields& c) {
+  const TomlFields t = c.need_table("pivot_friction");
+  t.allow_only({"mu_s", "mu_k", "source"});
+  PivotFriction f{t.need_number("mu_s"), t.need_number("mu_k"), t.need_string("source")};
+  if (f.mu_s < 0.0) t.fail("mu_s", fmt::format("must be >= 0 (got {})", f.mu_s));
+  if (f.mu_k < 0.0) t.fail("mu_k", fmt::format("must be >= 0 (got {})", f.mu_k));
+  return f;
+}
+
+// The code must be Table 3.2's for the number and say the same as the other fields.
+void check_code(const TomlFields& t, const RigCase& c) {
+  if (!is_case_code(c.code))
+    t.fail("code",
+           fmt::format("'{}' is not a case code of thesis Table 3.2 (RX025 ... FF100)", c.code));
+  const std::string expected = table_3_2_code(c.number);
+  if (c.code != expected)
+    t.fail("code",
+           fmt::format("case {} of Table 3.2 is '{}', not '{}'", c.number, expected, c.code));
+  if ((c.code[0] == 'R') != (c.impactor == ImpactorKind::rigid))
+    t.fail("impactor",
+           fmt::format("'{}' disagrees with the code '{}'", name_of(c.impactor), c.code));
+  if ((c.code[1] == 'X') != (c.artifact == ArtifactKind::fixed))
+    t.fail("artifact",
+           fmt::format("'{}' disagrees with the code '{}'", name_of(c.artifact), c.code));
+  const int cm_per_s = std::stoi(c.code.substr(2));
+  if (std::abs(c.target_speed.value * 100.0 - cm_per_s) > 1e-9)
+    t.fail("target_speed",
+           fmt::format("{} m/s disagrees with the code '{}'", c.target_speed.value, c.code));
+}
+
+RigCase read_case(const TomlFields& t) {
+  t.allow_only(
+      {"number", "code", "target_speed", "impactor", "artifact", "pivot_friction", "source"});
+  RigCase c;
+  const long number = t.need_integer("number");
+  if (number < 1 || number > kCaseCount)
+    t.fail("number", fmt::format("must be 1 ... {} (got {})", kCaseCount, number));
+  c.number = static_cast<int>(number);
+  c.code = t.need_string("code");
+  c.target_speed = read_sourced(t, "target_speed", "m/s");
+  c.impactor = read_kind(t, "impactor", std::array{ImpactorKind::rigid, ImpactorKind::flexible});
+  c.artifact = read_kind(t, "artifact", std::array{ArtifactKind::fixed, ArtifactKind::free});
+  c.source = t.need_string("source");
+  check_code(t, c);
+  if (c.artifact == ArtifactKind::free)
+    c.pivot_friction = read_friction(t);
+  else if (t.has("pivot_friction"))
+    t.fail("pivot_friction",
+           "a fixed artifact is constrained exactly (thesis 3.3.2); "
+           "pivot friction is for free artifacts");
+  return c;
+}
+
+std::vector<RigCase> read_cases(const TomlFields& root) {
+  std::vector<RigCase> cases;
+  std::array<bool, kCaseCount + 1> seen{};
+  for (const TomlFields& t : root.need_tables("cases")) {
+    cases.push_back(read_case(t));
+    const int n = cases.back().number;
+    if (seen[static_cast<size_t>(n)]) t.fail("number", fmt::format("case {} is given twice", n));
+    seen[static_cast<size_t>(n)] = true;
+  }
+  for (int n = 1; n <= kCaseCount; ++n)
+    if (!seen[static_cast<size_t>(n)])
+      root.fail("cases", fmt::format("case {} ({}) of Table 3.2 is missing", n, table_3_2_code(n)));
+  std::sort(cases.begin(), cases.end(),
+            [](const RigCase& a, const RigCase& b) { return a.number < b.number; });
+  return cases;
+}
+
+}  // namespace
+
+std::string table_3_2_code(int number) {
+  // Table 3.2: cases 1-3 rigid/fixed, 4-6 flexible/fixed, 7-9 rigid/free, 10-12 flexible/free,
+  // each at 0.25, 0.50, 1.00 m/s.
+  static constexpr std::array<const char*, 4> kConfig = {"RX", "FX", "RF", "FF"};
+  static constexpr std::array<const char*, 3> kSpeed = {"025", "050", "100"};
+  if (number < 1 || number > kCaseCount)
+    throw std::out_of_range(fmt::format("Table 3.2 has no case {}", number));
+  const auto i = static_cast<size_t>(number - 1);
+  return std::string(kConfig[i / 3]) + kSpeed[i % 3];
+}
+
+RigCaseTable parse_case_table(std::string_view text, const fs::path& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source.string());
+  } catch (const toml::parse_error& e) {
+    throw rig_input_error(source, static_cast<int>(e.source().begin.line), "", e.description());
+  }
+  const TomlFields fields(root, "", source);
+  fields.allow_only({"rig", "cases"});
+  RigCaseTable table;
+  table.source = source;
+  table.rig = read_rig(fields);
+  table.cases = read_cases(fields);
+  return table;
+}
+
+RigCaseTable read_case_table(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw rig_input_error(file, 0, "", "cannot open the file for reading");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_case_table(text.str(), file);
+}
+
+}  // namespace ccm::rig
