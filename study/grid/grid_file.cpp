@@ -1,0 +1,168 @@
+#include "study/grid/grid_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "study/grid/point_parameters.hpp"
+#include "study/grid/strict_table.hpp"
+#include "study/scene/scene.hpp"
+#include "study/scene/scene_file.hpp"
+
+namespace ccm::study {
+namespace {
+
+double positive(const StrictTable& t, std::string_view key) {
+  const double v = t.need_number(key);
+  if (!(v > 0.0)) t.fail(key, fmt::format("must be > 0 (got {})", v));
+  return v;
+}
+
+double in_range(const StrictTable& t, std::string_view key, double v, double lo, double hi,
+                std::string_view range) {
+  if (!(v >= lo && v <= hi)) t.fail(key, fmt::format("must lie in {} (got {})", range, v));
+  return v;
+}
+
+double poisson(const StrictTable& t, std::string_view key) {
+  const double v = t.need_number(key);
+  if (!(v > -1.0 && v < 0.5)) t.fail(key, fmt::format("must lie in (-1, 0.5) (got {})", v));
+  return v;
+}
+
+// An axis: a non-empty array of distinct allowed values, kept in the file's order.
+// `axis` names the range check (point_parameters.hpp), `key` the array.
+std::vector<double> axis_values(const StrictTable& t, std::string_view key, std::string_view axis) {
+  const std::string_view name = key;
+  const std::vector<double> values = t.number_array(name);
+  for (size_t i = 0; i < values.size(); ++i) {
+    const std::string problem = axis_value_problem(axis, values[i]);
+    if (!problem.empty()) t.fail(name, fmt::format("[{}] {}", i, problem));
+    if (std::find(values.begin(), values.begin() + static_cast<long>(i), values[i]) !=
+        values.begin() + static_cast<long>(i))
+      t.fail(name, fmt::format("[{}] repeats the value {}", i, values[i]));
+  }
+  return values;
+}
+
+void parse_axes(const StrictTable& root, GridSpec& g) {
+  const StrictTable t = root.need_table("axes");
+  std::vector<std::string_view> allowed = {"ER", "RLS", "KE"};
+  for (std::string_view n : other_axis_names()) allowed.push_back(n);
+  t.allow_only(allowed);
+  g.modulus_ratios = axis_values(t, "ER", "ER");
+  g.length_ratios = axis_values(t, "RLS", "RLS");
+  g.kinetic_energies = axis_values(t, "KE", "KE");
+  for (std::string_view n : other_axis_names())
+    if (t.has(n)) g.other_axes.emplace(std::string(n), axis_values(t, n, n));
+}
+
+void parse_time(const StrictTable& root, GridSpec& g) {
+  const StrictTable t = root.need_table("time");
+  t.allow_only({"contact_time", "end", "output_interval", "dt_safety", "max_steps"});
+  GridTime& time = g.time;
+  time.end = positive(t, "end");
+  time.contact_time = positive(t, "contact_time");
+  if (time.contact_time >= time.end)
+    t.fail("contact_time", fmt::format("must be < end = {} (got {})", time.end, time.contact_time));
+  time.output_interval = positive(t, "output_interval");
+  if (time.output_interval > time.end)
+    t.fail("output_interval", fmt::format("must be <= end = {}", time.end));
+  time.dt_safety = in_range(t, "dt_safety", t.number_or("dt_safety", 0.9), 1e-3, 1.0, "(0, 1]");
+  time.max_steps = t.integer("max_steps").value_or(0);
+  if (time.max_steps < 0) t.fail("max_steps", "must be >= 0 (0: no limit)");
+}
+
+ArtifactSupport parse_support(const StrictTable& t) {
+  const std::string s = t.string("support").value_or("base");
+  if (s == "base") return ArtifactSupport::base;
+  if (s == "edges") return ArtifactSupport::edges;
+  t.fail("support", fmt::format("must be \"base\" or \"edges\" (got \"{}\")", s));
+}
+
+void parse_artifact(const StrictTable& root, GridSpec& g) {
+  const StrictTable t = root.need_table("artifact");
+  t.allow_only({"length", "thickness", "E", "nu", "rho", "mesh_size", "support"});
+  ArtifactSpec& a = g.artifact;
+  a.length = positive(t, "length");
+  a.thickness = positive(t, "thickness");
+  a.E = positive(t, "E");
+  a.nu = poisson(t, "nu");
+  a.rho = positive(t, "rho");
+  a.mesh_size = positive(t, "mesh_size");
+  a.support = parse_support(t);
+}
+
+void parse_impactor(const StrictTable& root, GridSpec& g) {
+  const StrictTable t = root.need_table("impactor");
+  t.allow_only({"nu", "rho", "mesh_size_ratio"});
+  g.impactor.nu = poisson(t, "nu");
+  g.impactor.rho = positive(t, "rho");
+  const double ratio = t.need_number("mesh_size_ratio");
+  g.impactor.mesh_size_ratio = in_range(t, "mesh_size_ratio", ratio, 1e-6, 0.5, "(0, 0.5]");
+}
+
+void parse_contact(const StrictTable& root, GridSpec& g) {
+  const auto t = root.table("contact");
+  if (!t) return;
+  t->allow_only({"penalty", "restitution", "friction"});
+  GridContact& c = g.contact;
+  c.penalty = t->number_or("penalty", c.penalty);
+  if (!(c.penalty > 0.0)) t->fail("penalty", fmt::format("must be > 0 (got {})", c.penalty));
+  c.restitution = in_range(*t, "restitution", t->number_or("restitution", 0.0), 0.0, 1.0, "[0, 1]");
+  c.friction = t->number_or("friction", 0.0);
+  if (!(c.friction >= 0.0)) t->fail("friction", fmt::format("must be >= 0 (got {})", c.friction));
+}
+
+ConvergencePoint parse_convergence_point(const StrictTable& t) {
+  t.allow_only({"ER", "RLS", "KE"});
+  ConvergencePoint p;
+  p.modulus_ratio = positive(t, "ER");
+  p.length_ratio = positive(t, "RLS");
+  p.kinetic_energy = positive(t, "KE");
+  return p;
+}
+
+void parse_convergence(const StrictTable& root, GridSpec& g) {
+  const auto t = root.table("convergence");
+  if (!t) return;
+  t->allow_only({"points", "mesh_scales"});
+  if (g.other_axes.contains("mesh_scale")) t->fail("", "cannot be combined with a mesh_scale axis");
+  const std::vector<StrictTable> points = t->tables("points");
+  if (points.empty()) t->fail("points", "needs at least one point {ER, RLS, KE}");
+  for (const StrictTable& p : points) g.convergence.points.push_back(parse_convergence_point(p));
+  const std::vector<double> scales = axis_values(*t, "mesh_scales", "mesh_scale");
+  if (scales.size() < 2 || scales.size() > 3)
+    t->fail("mesh_scales", fmt::format("needs 2 or 3 mesh scales (got {})", scales.size()));
+  g.convergence.mesh_scales = scales;
+}
+
+}  // namespace
+
+GridSpec parse_grid(std::string_view text, const std::filesystem::path& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source.string());
+  } catch (const toml::parse_error& e) {
+    throw scene_error(source, static_cast<int>(e.source().begin.line), "",
+                      fmt::format("TOML syntax error: {}", e.description()));
+  }
+  GridSpec g;
+  g.source = source;
+  const StrictTable t(root, "", source);
+  t.allow_only({"title", "axes", "time", "artifact", "impactor", "contact", "convergence"});
+  g.title = t.string("title").value_or("");
+  parse_axes(t, g);
+  parse_time(t, g);
+  parse_artifact(t, g);
+  parse_impactor(t, g);
+  parse_contact(t, g);
+  parse_convergence(t, g);
+  return g;
+}
+
+GridSpec parse_grid_file(const std::filesystem::path& file) {
+  return parse_grid(read_scene_text(file), file);
+}
+
+}  // namespace ccm::study

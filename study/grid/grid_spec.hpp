@@ -1,0 +1,76 @@
+// A trade-study grid as read from a grid file (docs/grid-file.md): the axes swept (thesis 2.8,
+// Table 2.2) and every fixed parameter of the impact scene both models run. Plain typed
+// aggregates, validated by the parser (study/grid/grid_file.hpp).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ccm::study {
+
+// How the artifact plate is held.
+enum class ArtifactSupport {
+  base,  // the bottom face z = 0 fixed: a block on a rigid floor
+  edges  // the two faces x = 0 and x = L_A clamped: a plate spanning a gap
+};
+
+struct ArtifactSpec {
+  double length = 1.0;      // L_A [m]: the plate is L_A x L_A x thickness
+  double thickness = 0.25;  // [m]
+  double E = 1000.0;        // E_A [Pa]
+  double nu = 0.49;
+  double rho = 1000.0;     // [kg/m^3]
+  double mesh_size = 0.1;  // [m], target tet edge (Gmsh)
+  ArtifactSupport support = ArtifactSupport::base;
+};
+
+// The impactor sphere: D_I = RLS L_A (eq. 2.33), E_I = ER E_A (eq. 2.32).
+struct ImpactorSpec {
+  double nu = 0.49;
+  double rho = 1000.0;            // [kg/m^3]
+  double mesh_size_ratio = 0.25;  // tet edge / D_I, in (0, 0.5]
+};
+
+struct GridTime {
+  double contact_time = 0.1;      // t_c [s]: the gap is speed * t_c
+  double end = 0.15;              // t_f [s]
+  double output_interval = 1e-3;  // [s], the same for both models
+  double dt_safety = 0.9;
+  long max_steps = 0;  // 0: no limit
+};
+
+struct GridContact {
+  double penalty = 1e6;      // K_P [N/m] per quadrature point (rigid model, thesis 2.8)
+  double restitution = 0.0;  // e (ccm model, DCR)
+  double friction = 0.0;     // mu (ccm model, DCR)
+};
+
+// A point named in [convergence]: the three main axes, the other axes at their fixed values.
+struct ConvergencePoint {
+  double modulus_ratio = 1.0;
+  double length_ratio = 1.0;
+  double kinetic_energy = 0.0;
+};
+
+struct ConvergenceSpec {
+  std::vector<ConvergencePoint> points;
+  std::vector<double> mesh_scales;  // 2-3 distinct factors on both mesh sizes
+};
+
+struct GridSpec {
+  std::filesystem::path source;  // the grid file, as given
+  std::string title;
+  std::vector<double> modulus_ratios;                     // ER
+  std::vector<double> length_ratios;                      // RLS
+  std::vector<double> kinetic_energies;                   // KE_I [J]
+  std::map<std::string, std::vector<double>> other_axes;  // by name (kOtherAxisNames)
+  GridTime time;
+  ArtifactSpec artifact;
+  ImpactorSpec impactor;
+  GridContact contact;
+  ConvergenceSpec convergence;  // empty: no convergence runs
+};
+
+}  // namespace ccm::study

@@ -1,0 +1,55 @@
+// A small valid grid file for the grid and runner tests, and a helper to get a parse error.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "study/grid/grid_file.hpp"
+#include "study/scene/scene.hpp"
+
+namespace ccm::test {
+
+// Line numbers matter: the error tests name them (line 1 is "[axes]").
+inline constexpr std::string_view kSmallGrid = R"([axes]
+ER = [1.0, 100.0]
+RLS = [0.5, 1.0, 1.5]
+KE = [10.0, 100.0]
+
+[time]
+contact_time = 0.1
+end = 0.15
+output_interval = 1e-3
+
+[artifact]
+length = 1.0
+thickness = 0.25
+E = 1000.0
+nu = 0.49
+rho = 1000.0
+mesh_size = 0.1
+
+[impactor]
+nu = 0.49
+rho = 1000.0
+mesh_size_ratio = 0.2
+)";
+
+// The message of the SceneError that parsing `text` as "g.toml" throws ("" when it parses).
+inline std::string grid_error_of(std::string_view text) {
+  try {
+    (void)study::parse_grid(text, "g.toml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// kSmallGrid with the first occurrence of `from` replaced by `to`.
+inline std::string small_grid_with(std::string_view from, std::string_view to) {
+  std::string s(kSmallGrid);
+  const size_t at = s.find(from);
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+}  // namespace ccm::test

@@ -1,0 +1,161 @@
+// The scene of a grid point: sphere diameter D_I = RLS L_A, E_I = ER E_A, speed from KE and the
+// sphere's mass, contact starting at t_c (gap / speed = t_c); both models share the artifact.
+#include <catch2/catch.hpp>
+#include <string>
+#include <variant>
+
+#include "study/grid/grid_file.hpp"
+#include "study/grid/point_parameters.hpp"
+#include "study/grid/point_scene.hpp"
+#include "study/runner/content_hash.hpp"
+#include "tests/study/grid/grid_fixtures.hpp"
+#include "tests/support/tolerance.hpp"
+
+using ccm::test::kSmallGrid;
+using ccm::test::relative_error;
+using ccm::test::small_grid_with;
+using namespace ccm;
+using namespace ccm::study;
+
+namespace {
+
+GridPoint point(double er, double rls, double ke) {
+  GridPoint p;
+  p.modulus_ratio = er;
+  p.length_ratio = rls;
+  p.kinetic_energy = ke;
+  return p;
+}
+
+const BodySpec& body_named(const Scene& s, const std::string& name) {
+  for (const BodySpec& b : s.bodies)
+    if (b.name == name) return b;
+  FAIL("no body " << name);
+  throw;
+}
+
+// Parser round trip of a double: the scene text writes shortest round-trip numbers, so the
+// values come back bit-identical; 1e-15 only allows for the products computed on the way.
+constexpr double kExact = 1e-15;
+
+}  // namespace
+
+TEST_CASE("ccm scene of a point: meshed sphere of D_I = RLS L_A, E_I = ER E_A, v from KE",
+          "[grid]") {
+  const GridSpec g = parse_grid(kSmallGrid, "g.toml");
+  const Scene s = point_scene(g, point(1e2, 0.5, 100.0), ImpactModel::ccm);
+  REQUIRE(s.bodies.size() == 2);
+  const BodySpec& artifact = body_named(s, "artifact");
+  const BodySpec& impactor = body_named(s, "impactor");
+  CHECK(artifact.material.E == 1000.0);
+  CHECK(artifact.material.nu == 0.49);
+  CHECK(artifact.material.rho == 1000.0);
+  CHECK(artifact.geometry.primitive.size == Vec3(1.0, 1.0, 0.25));
+  CHECK(artifact.geometry.primitive.mesh_size == 0.1);
+  CHECK(impactor.geometry.shape == Shape::sphere);
+  CHECK(impactor.geometry.primitive.radius == 0.25);                            // D_I = 0.5 x 1 m
+  CHECK(impactor.geometry.primitive.mesh_size == Approx(0.1).epsilon(kExact));  // 0.2 D_I
+  CHECK(impactor.material.E == Approx(1e5).epsilon(kExact));                    // 100 x 1000 Pa
+  CHECK(impactor.material.nu == 0.49);
+  CHECK(impactor.material.rho == 1000.0);
+  // m = 1000 pi 0.5^3 / 6 = 65.4498 kg; v = sqrt(2 x 100 / m) = 1.748077 m/s (by hand).
+  const Vec3 v = impactor.initial_velocity;
+  CHECK(v.x() == 0.0);
+  CHECK(v.y() == 0.0);
+  CHECK(relative_error(-v.z(), 1.748077) < 1e-6);
+  // Lowest point of the sphere above the top face z = 0.25, reached after t_c = 0.1 s.
+  const Vec3 c = impactor.placement.translation;
+  CHECK(c.x() == 0.5);
+  CHECK(c.y() == 0.5);
+  const double gap = c.z() - 0.25 - 0.25;
+  CHECK(relative_error(gap / -v.z(), 0.1) < 1e-12);
+  CHECK(s.contact.kind == ContactKind::dcr);
+  CHECK(s.contact.surfaces == std::vector<std::string>{"impactor", "artifact"});
+  CHECK(s.time.end == 0.15);
+  CHECK(s.time.output_interval == 1e-3);
+  REQUIRE(s.fixed.size() == 1);  // support "base": the bottom face
+  const auto& plane = std::get<PlaneSpec>(s.fixed[0].selection);
+  CHECK(plane.normal == Vec3(0, 0, 1));
+  CHECK(plane.point.z() == 0.0);
+}
+
+TEST_CASE("rigid scene of a point: the same artifact, an analytic sphere with the same motion",
+          "[grid]") {
+  const GridSpec g = parse_grid(kSmallGrid, "g.toml");
+  const GridPoint p = point(1e6, 1.5, 10.0);
+  const Scene ccm_scene = point_scene(g, p, ImpactModel::ccm);
+  const Scene rigid = point_scene(g, p, ImpactModel::rigid);
+  REQUIRE(rigid.bodies.size() == 1);
+  const BodySpec& a_rigid = rigid.bodies[0];
+  const BodySpec& a_ccm = body_named(ccm_scene, "artifact");
+  CHECK(a_rigid.name == "artifact");
+  CHECK(a_rigid.material.E == a_ccm.material.E);
+  CHECK(a_rigid.geometry.primitive.size == a_ccm.geometry.primitive.size);
+  CHECK(a_rigid.geometry.primitive.mesh_size == a_ccm.geometry.primitive.mesh_size);
+  REQUIRE(rigid.contact.kind == ContactKind::rigid_penalty);
+  CHECK(rigid.contact.body == "artifact");
+  CHECK(rigid.contact.penalty == 1e6);
+  const RigidSphereSpec& sphere = rigid.contact.sphere;
+  const BodySpec& impactor = body_named(ccm_scene, "impactor");
+  CHECK(sphere.radius == 0.75);  // D_I = 1.5 x 1 m
+  CHECK(sphere.center == impactor.placement.translation);
+  CHECK(sphere.velocity == impactor.initial_velocity);
+  // m = 1000 pi 1.5^3 / 6 = 1767.146 kg (mass from density); v = sqrt(20 / m) = 0.1063846 m/s.
+  CHECK(relative_error(sphere.mass, 1767.146) < 1e-6);
+  CHECK(relative_error(-sphere.velocity.z(), 0.1063846) < 1e-6);
+  CHECK(relative_error(0.5 * sphere.mass * sphere.velocity.squaredNorm(), 10.0) < 1e-12);
+  CHECK(relative_error((sphere.center.z() - 0.75 - 0.25) / -sphere.velocity.z(), 0.1) < 1e-12);
+  CHECK(rigid.time.output_interval == ccm_scene.time.output_interval);
+  CHECK(rigid.time.end == ccm_scene.time.end);
+}
+
+TEST_CASE("other axes and support reach the scene", "[grid]") {
+  const GridSpec g = parse_grid(
+      small_grid_with("mesh_size = 0.1", "mesh_size = 0.1\nsupport = \"edges\""), "g.toml");
+  GridPoint p = point(1.0, 1.0, 50.0);
+  p.other_axes = {{"nu", 0.3}, {"mesh_scale", 0.5}, {"restitution", 0.25}};
+  const Scene s = point_scene(g, p, ImpactModel::ccm);
+  CHECK(body_named(s, "artifact").material.nu == 0.3);
+  CHECK(body_named(s, "impactor").material.nu == 0.3);
+  CHECK(body_named(s, "artifact").geometry.primitive.mesh_size == 0.05);
+  CHECK(body_named(s, "impactor").geometry.primitive.mesh_size == Approx(0.1).epsilon(kExact));
+  CHECK(s.contact.restitution == 0.25);
+  REQUIRE(s.fixed.size() == 2);  // support "edges": x = 0 and x = L_A
+  CHECK(std::get<PlaneSpec>(s.fixed[1].selection).point.x() == 1.0);
+  CHECK(std::get<PlaneSpec>(s.fixed[1].selection).normal == Vec3(1, 0, 0));
+}
+
+TEST_CASE("scene text and run keys: deterministic, independent of the index", "[grid]") {
+  const GridSpec g = parse_grid(kSmallGrid, "g.toml");
+  GridPoint p = point(1e2, 1.0, 50.0);
+  const std::string text = point_scene_text(g, p, ImpactModel::ccm);
+  const std::string key = run_key(g, p, ImpactModel::ccm);
+  CHECK(point_scene_text(g, p, ImpactModel::ccm) == text);
+  CHECK(key.size() == 16);
+  p.index = 17;
+  CHECK(point_scene_text(g, p, ImpactModel::ccm) == text);
+  CHECK(run_key(g, p, ImpactModel::ccm) == key);
+  CHECK(point_scene_name(g, p, ImpactModel::rigid) == "g.point17.rigid.toml");
+  CHECK(run_key(g, p, ImpactModel::rigid) != key);
+  GridSpec stiffer = g;
+  stiffer.artifact.E = 2000.0;  // a fixed parameter
+  CHECK(run_key(stiffer, p, ImpactModel::ccm) != key);
+  p.kinetic_energy = 50.000000000001;
+  CHECK(run_key(g, p, ImpactModel::ccm) != key);
+  // FNV-1a 64 reference values (the published test vectors).
+  CHECK(fnv1a64("") == "cbf29ce484222325");
+  CHECK(fnv1a64("a") == "af63dc4c8601ec8c");
+}
+
+TEST_CASE("point parameters: closed forms of the impact", "[grid]") {
+  const GridSpec g = parse_grid(kSmallGrid, "g.toml");
+  const PointParameters p = point_parameters(g, point(1e4, 1.0, 50.0));
+  CHECK(p.impactor_diameter == 1.0);
+  CHECK(p.impactor_E == 1e7);
+  CHECK(relative_error(p.impactor_mass, 523.5988) < 1e-6);  // 1000 pi / 6
+  CHECK(relative_error(0.5 * p.impactor_mass * p.impact_speed * p.impact_speed, 50.0) < 1e-12);
+  CHECK(relative_error(p.gap, p.impact_speed * 0.1) < 1e-15);
+  CHECK(axis_value_problem("restitution", 1.5) == "must lie in [0, 1] (got 1.5)");
+  CHECK(axis_value_problem("K", 1.0) == "unknown grid axis 'K'");
+  CHECK(axis_value_problem("friction", 0.0).empty());
+}
