@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cstdlib>
+#include <initializer_list>
 
 namespace ccm::study {
 
