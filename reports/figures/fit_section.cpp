@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -157,7 +158,8 @@ Table convergence_table(const std::vector<ConvergenceRun>& runs) {
                       std::string(study::to_string(r.model)), cell(mesh_scale(r.point)),
                       std::to_string(r.n_elements), cell(r.wall_seconds), cell(c.error_ke),
                       cell(c.error_u_max),
-                      cell(r.wall_seconds > 0 ? (1.0 - c.error_ke) / r.wall_seconds : NAN)});
+                      cell(r.wall_seconds > 0 ? (1.0 - c.error_ke) / r.wall_seconds
+                                              : std::numeric_limits<double>::quiet_NaN())});
   }
   return t;
 }

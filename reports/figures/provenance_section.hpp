@@ -11,9 +11,9 @@
 namespace ccm::reports {
 
 struct ReportStamp {
-  std::string ccm_version;   // version_string() of the ccm that wrote the report
-  std::string generated_at;  // ISO 8601 UTC
-  std::string host;          // machine that wrote the report
+  std::string ccm_version;     // version_string() of the ccm that wrote the report
+  std::string generated_at{};  // ISO 8601 UTC
+  std::string host{};          // machine that wrote the report
 };
 
 ReportStamp current_stamp();

@@ -13,15 +13,9 @@ namespace {
 
 using study::ImpactModel;
 
-// The range of (log10 ER, RLS) the fits at this KE cover.
-const study::SurfaceFit* range_fit(const study::StudyFits& fits, double ke) {
-  const auto* f = fits.find(study::Metric::final_kinetic_energy, ke);
-  return f != nullptr ? &f->fit : nullptr;
-}
-
 std::optional<Figure> map_figure(const study::StudyFits& fits, double ke, double max_error) {
-  const study::SurfaceFit* range = range_fit(fits, ke);
-  if (range == nullptr) return std::nullopt;
+  const auto cells = recommendation_cells(fits, ke, max_error);
+  if (cells.empty()) return std::nullopt;
   PlotSpec plot{.title = fmt::format("Recommended model, KE {:g} J, max error {:g}", ke, max_error),
                 .x_label = "ER = E_impactor / E_artifact [-]",
                 .y_label = "RLS = D_impactor / L_artifact [-]",
@@ -32,15 +26,11 @@ std::optional<Figure> map_figure(const study::StudyFits& fits, double ke, double
                  Series{.title = "use " + model_label(ImpactModel::rigid),
                         .style = SeriesStyle::squares,
                         .color = 1}};
-  for (int i = 0; i < kMapCells; ++i)
-    for (int j = 0; j < kMapCells; ++j) {
-      const double x = range->x_min + (range->x_max - range->x_min) * i / (kMapCells - 1);
-      const double y = range->y_min + (range->y_max - range->y_min) * j / (kMapCells - 1);
-      const auto r = study::recommend(fits, {std::pow(10.0, x), y, ke, max_error});
-      Series& s = plot.series[r.model == ImpactModel::ccm ? 0 : 1];
-      s.x.push_back(std::pow(10.0, x));
-      s.y.push_back(y);
-    }
+  for (const MapCell& c : cells) {
+    Series& s = plot.series[c.model == ImpactModel::ccm ? 0 : 1];
+    s.x.push_back(c.modulus_ratio);
+    s.y.push_back(c.length_ratio);
+  }
   return make_figure(
       fmt::format("fig-recommendation-ke-{:g}", ke),
       fmt::format("Model recommended at KE {:g} J: rigid where all three predicted final-state "
@@ -51,6 +41,28 @@ std::optional<Figure> map_figure(const study::StudyFits& fits, double ke, double
 }
 
 }  // namespace
+
+std::vector<MapCell> recommendation_cells(const study::StudyFits& fits, double kinetic_energy,
+                                          double max_error) {
+  const auto* range_fit = fits.find(study::Metric::final_kinetic_energy, kinetic_energy);
+  if (range_fit == nullptr) return {};
+  const study::SurfaceFit& range = range_fit->fit;
+  std::vector<MapCell> cells;
+  for (int i = 0; i < kMapCells; ++i)
+    for (int j = 0; j < kMapCells; ++j) {
+      const double x = range.x_min + (range.x_max - range.x_min) * i / (kMapCells - 1);
+      const double y = range.y_min + (range.y_max - range.y_min) * j / (kMapCells - 1);
+      const double er = std::pow(10.0, x);
+      study::RecommendQuery query;
+      query.modulus_ratio = er;
+      query.length_ratio = y;
+      query.kinetic_energy = kinetic_energy;
+      query.max_error = max_error;
+      const auto r = study::recommend(fits, query);
+      cells.push_back({er, y, r.model});
+    }
+  return cells;
+}
 
 Section recommendation_section(const ReportData& data, double max_error) {
   Section s{.id = "recommendation", .title = "Recommendation map"};

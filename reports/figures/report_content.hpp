@@ -11,21 +11,21 @@
 namespace ccm::reports {
 
 struct Figure {
-  std::string id;       // file stem (DIR/<id>.svg) and HTML anchor
-  std::string caption;  // what is plotted, with the thesis figure it reproduces
-  std::string svg;      // the SVG document
+  std::string id;         // file stem (DIR/<id>.svg) and HTML anchor
+  std::string caption{};  // what is plotted, with the thesis figure it reproduces
+  std::string svg{};      // the SVG document
 };
 
 struct Section {
-  std::string id, title;
-  std::vector<std::string> paragraphs;  // plain text, escaped on output
-  std::vector<Figure> figures;
-  std::vector<Table> tables;
+  std::string id{}, title{};
+  std::vector<std::string> paragraphs{};  // plain text, escaped on output
+  std::vector<Figure> figures{};
+  std::vector<Table> tables{};
 };
 
 struct ReportContent {
-  std::string title;
-  std::vector<Section> sections;
+  std::string title{};
+  std::vector<Section> sections{};
 };
 
 // Renders `plot` (reports/plot/gnuplot.hpp) into a figure.

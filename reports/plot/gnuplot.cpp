@@ -42,7 +42,7 @@ struct ScratchDir {
 };
 
 // A double-quoted gnuplot string.
-std::string quoted(std::string_view text) {
+std::string gnuplot_string(std::string_view text) {
   std::string out = "\"";
   for (char c : text) {
     if (c == '"' || c == '\\') out += '\\';
@@ -124,13 +124,13 @@ std::string gnuplot_script(const PlotSpec& plot, const std::string& svg_file) {
       "set terminal svg size {},{} noenhanced font 'DejaVu Sans,11' background rgb 'white'\n"
       "set output {}\nset title {}\nset xlabel {}\nset ylabel {}\nset grid\n"
       "set key outside right top box opaque\nset datafile missing 'nan'\n",
-      plot.width, plot.height, quoted(svg_file), quoted(plot.title), quoted(plot.x_label),
-      quoted(plot.y_label));
+      plot.width, plot.height, gnuplot_string(svg_file), gnuplot_string(plot.title),
+      gnuplot_string(plot.x_label), gnuplot_string(plot.y_label));
   if (plot.log_x) s += "set logscale x\nset format x '%.0e'\n";
   if (plot.log_y) s += "set logscale y\nset format y '%.0e'\n";
   if (plot.three_d) {
     s += fmt::format("set zlabel {} rotate parallel\nset view 60,35\nset ticslevel 0\n",
-                     quoted(plot.z_label));
+                     gnuplot_string(plot.z_label));
     if (plot.log_z) s += "set logscale z\nset format z '%.0e'\n";
   }
   std::string command = plot.three_d ? "splot" : "plot";
@@ -140,7 +140,7 @@ std::string gnuplot_script(const PlotSpec& plot, const std::string& svg_file) {
     const Series& series = plot.series[i];
     if (series.empty()) continue;
     command += fmt::format("{} 'series-{}.dat' using {} {} title {}", first ? " " : ", \\\n  ", i,
-                           columns, style_clause(series), quoted(series.title));
+                           columns, style_clause(series), gnuplot_string(series.title));
     first = false;
   }
   return s + command + "\n";
@@ -157,7 +157,7 @@ std::string render_svg(const PlotSpec& plot) {
       write_series(plot.series[i], plot.three_d, scratch.path / fmt::format("series-{}.dat", i));
   const fs::path svg = scratch.path / "figure.svg";
   const fs::path script = scratch.path / "figure.gp";
-  std::ofstream(script) << "cd " << quoted(scratch.path.string()) << "\n"
+  std::ofstream(script) << "cd " << gnuplot_string(scratch.path.string()) << "\n"
                         << gnuplot_script(plot, svg.string());
   const fs::path log = scratch.path / "gnuplot.log";
   if (run_gnuplot(gnuplot, script, log) != 0 || !fs::exists(svg))

@@ -17,20 +17,20 @@ enum class SeriesStyle {
 };
 
 struct Series {
-  std::string title;  // legend entry: names the model and the case
+  std::string title{};  // legend entry: names the model and the case
   SeriesStyle style = SeriesStyle::points;
-  std::vector<double> x, y, z;      // z only for 3-D plots
-  std::size_t surface_columns = 0;  // points per mesh row (SeriesStyle::surface)
+  std::vector<double> x{}, y{}, z{};  // z only for 3-D plots
+  std::size_t surface_columns = 0;    // points per mesh row (SeriesStyle::surface)
   int color = 0;  // index into the colour-blind-safe palette of reports/plot/gnuplot.cpp
   bool empty() const { return x.empty(); }
 };
 
 struct PlotSpec {
-  std::string title;
-  std::string x_label, y_label, z_label;  // with units, e.g. "wall time [s]"
+  std::string title{};
+  std::string x_label{}, y_label{}, z_label{};  // with units, e.g. "wall time [s]"
   bool log_x = false, log_y = false, log_z = false;
   bool three_d = false;
-  std::vector<Series> series;
+  std::vector<Series> series{};
   int width = 720, height = 440;  // SVG size [px]
 };
 

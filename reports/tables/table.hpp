@@ -7,10 +7,10 @@
 namespace ccm::reports {
 
 struct Table {
-  std::string id;                   // file stem and HTML anchor, e.g. "stability"
-  std::string caption;              // one sentence: what a row is
-  std::vector<std::string> header;  // column names with units
-  std::vector<std::vector<std::string>> rows;
+  std::string id{};                   // file stem and HTML anchor, e.g. "stability"
+  std::string caption{};              // one sentence: what a row is
+  std::vector<std::string> header{};  // column names with units
+  std::vector<std::vector<std::string>> rows{};
 };
 
 // RFC 4180 CSV: fields with a comma, quote or line break are quoted, quotes doubled.

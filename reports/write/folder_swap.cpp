@@ -14,8 +14,13 @@ namespace fs = std::filesystem;
 fs::path sibling(const fs::path& target, const std::string& tag) {
   const fs::path absolute = fs::absolute(target).lexically_normal();
   const fs::path dir = absolute.has_filename() ? absolute : absolute.parent_path();
-  return dir.parent_path() /
-         ("." + dir.filename().string() + "." + tag + "-" + std::to_string(getpid()));
+  std::string name(1, '.');
+  name += dir.filename().string();
+  name += '.';
+  name += tag;
+  name += '-';
+  name += std::to_string(getpid());
+  return dir.parent_path() / name;
 }
 
 }  // namespace

@@ -45,12 +45,12 @@ void write_report(const ReportContent& content, const fs::path& out_dir) {
       for (const Table& t : s.tables) write_text(staging / (t.id + ".csv"), to_csv(t));
     }
     write_text(staging / "index.html", html_page(content));
+    swap_in_folder(staging, out_dir);
   } catch (...) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);
     throw;
   }
-  swap_in_folder(staging, out_dir);
 }
 
 }  // namespace ccm::reports
