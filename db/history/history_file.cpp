@@ -1,0 +1,111 @@
+#include "db/history/history_file.hpp"
+
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "db/sqlite/connection.hpp"
+
+namespace ccm::db {
+
+namespace {
+
+// Owns one HDF5 identifier and closes it with the matching H5*close function.
+class H5Handle {
+ public:
+  H5Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~H5Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  H5Handle(const H5Handle&) = delete;
+  H5Handle& operator=(const H5Handle&) = delete;
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
+  throw StoreError(file.string() + ": " + what);
+}
+
+void write_dataset(hid_t group, const std::filesystem::path& file, const char* name,
+                   const std::vector<double>& values) {
+  const hsize_t n = values.size();
+  H5Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  H5Handle dataset(
+      H5Dcreate2(group, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      H5Dclose);
+  if (!space.valid() || !dataset.valid()) fail(file, std::string("cannot create dataset ") + name);
+  if (n > 0 &&
+      H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    fail(file, std::string("cannot write dataset ") + name);
+}
+
+std::vector<double> read_dataset(hid_t group, const std::filesystem::path& file,
+                                 const std::string& path) {
+  H5Handle dataset(H5Dopen2(group, path.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid()) fail(file, "missing dataset " + path);
+  H5Handle space(H5Dget_space(dataset.get()), H5Sclose);
+  hsize_t n = 0;
+  if (!space.valid() || H5Sget_simple_extent_ndims(space.get()) != 1 ||
+      H5Sget_simple_extent_dims(space.get(), &n, nullptr) < 0)
+    fail(file, "dataset " + path + " is not one-dimensional");
+  std::vector<double> values(n);
+  if (n > 0 &&
+      H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    fail(file, "cannot read dataset " + path);
+  return values;
+}
+
+void write_file(const std::filesystem::path& tmp, const study::ArtifactHistory& history) {
+  H5Handle h5(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!h5.valid()) fail(tmp, "cannot create HDF5 file");
+  H5Handle group(H5Gcreate2(h5.get(), kArtifactGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                 H5Gclose);
+  if (!group.valid()) fail(tmp, std::string("cannot create group ") + kArtifactGroup);
+  write_dataset(group.get(), tmp, "time", history.time);
+  write_dataset(group.get(), tmp, "u_mean", history.u_mean);
+  write_dataset(group.get(), tmp, "u_max", history.u_max);
+  write_dataset(group.get(), tmp, "kinetic_energy", history.kinetic_energy);
+  if (H5Fflush(h5.get(), H5F_SCOPE_GLOBAL) < 0) fail(tmp, "cannot flush HDF5 file");
+}
+
+}  // namespace
+
+void write_history_file(const std::filesystem::path& file, const study::ArtifactHistory& history) {
+  // The pid keeps two processes writing the same run from sharing a temporary file.
+  const std::filesystem::path tmp = file.string() + ".tmp" + std::to_string(::getpid());
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by our messages
+  try {
+    write_file(tmp, history);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw;
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) fail(file, "cannot rename the history file into place: " + ec.message());
+}
+
+study::ArtifactHistory read_history_file(const std::filesystem::path& file, const char* group) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  if (!std::filesystem::exists(file)) fail(file, "history file is missing");
+  H5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!h5.valid()) fail(file, "cannot open HDF5 file");
+  const std::string prefix = std::string(group) + "/";
+  study::ArtifactHistory history;
+  history.time = read_dataset(h5.get(), file, prefix + "time");
+  history.u_mean = read_dataset(h5.get(), file, prefix + "u_mean");
+  history.u_max = read_dataset(h5.get(), file, prefix + "u_max");
+  history.kinetic_energy = read_dataset(h5.get(), file, prefix + "kinetic_energy");
+  return history;
+}
+
+}  // namespace ccm::db

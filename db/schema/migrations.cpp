@@ -1,0 +1,167 @@
+#include "db/schema/migrations.hpp"
+
+#include <array>
+#include <string>
+
+#include "db/sqlite/statement.hpp"
+#include "db/sqlite/transaction.hpp"
+
+namespace ccm::db {
+
+namespace {
+
+// Step 1: the run ledger (studies, grid points, one row per simulation with provenance).
+constexpr const char* kStep1 = R"sql(
+CREATE TABLE studies (
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL,
+  grid_hash TEXT NOT NULL,
+  created_at TEXT NOT NULL,
+  ccm_version TEXT NOT NULL,
+  git_hash TEXT NOT NULL
+);
+CREATE TABLE grid_points (
+  id INTEGER PRIMARY KEY,
+  study_id INTEGER NOT NULL REFERENCES studies(id),
+  point_index INTEGER NOT NULL,
+  content_hash TEXT NOT NULL,
+  modulus_ratio REAL NOT NULL,
+  length_ratio REAL NOT NULL,
+  kinetic_energy REAL NOT NULL,
+  other_axes TEXT NOT NULL DEFAULT '',
+  UNIQUE (study_id, content_hash)
+);
+CREATE TABLE runs (
+  id INTEGER PRIMARY KEY,
+  grid_point_id INTEGER NOT NULL REFERENCES grid_points(id),
+  model TEXT NOT NULL CHECK (model IN ('ccm', 'rigid')),
+  status TEXT NOT NULL CHECK (status IN ('running', 'completed', 'unstable', 'failed')),
+  reason TEXT NOT NULL DEFAULT '',
+  unstable_time REAL,
+  steps INTEGER,
+  wall_seconds REAL,
+  initial_stable_dt REAL,
+  average_iteration_seconds REAL,
+  dt_min REAL,
+  dt_max REAL,
+  max_energy_error REAL,
+  n_elements INTEGER,
+  n_nodes INTEGER,
+  history_file TEXT,
+  history_dataset TEXT,
+  scene_hash TEXT NOT NULL DEFAULT '',
+  grid_hash TEXT NOT NULL,
+  ccm_version TEXT NOT NULL,
+  git_hash TEXT NOT NULL,
+  host TEXT NOT NULL CHECK (length(host) > 0),
+  pid INTEGER NOT NULL,
+  ranks INTEGER NOT NULL CHECK (ranks > 0),
+  jobs INTEGER NOT NULL CHECK (jobs > 0),
+  started_at TEXT NOT NULL,
+  ended_at TEXT,
+  UNIQUE (grid_point_id, model)
+);
+)sql";
+
+// Step 2: derived results (metrics per point, surface fits with their terms and points).
+constexpr const char* kStep2 = R"sql(
+CREATE TABLE metrics (
+  grid_point_id INTEGER PRIMARY KEY REFERENCES grid_points(id),
+  usable INTEGER NOT NULL CHECK (usable IN (0, 1)),
+  excluded_reason TEXT NOT NULL DEFAULT '',
+  cumulative_u_mean REAL, cumulative_u_max REAL, cumulative_kinetic_energy REAL,
+  final_u_mean REAL, final_u_max REAL, final_kinetic_energy REAL,
+  nt_ccm REAL, nt_rigid REAL, tr_ccm REAL, tr_rigid REAL, rtr REAL,
+  w_u_mean REAL, w_u_max REAL, w_kinetic_energy REAL,
+  t_final REAL,
+  computed_at TEXT NOT NULL
+);
+CREATE TABLE fits (
+  id INTEGER PRIMARY KEY,
+  study_id INTEGER NOT NULL REFERENCES studies(id),
+  metric TEXT NOT NULL,
+  kinetic_energy REAL NOT NULL,
+  degree_log_er INTEGER NOT NULL,
+  degree_rls INTEGER NOT NULL,
+  r_squared REAL NOT NULL,
+  loo_rmse REAL NOT NULL,
+  n_points INTEGER NOT NULL,
+  fitted_at TEXT NOT NULL,
+  UNIQUE (study_id, metric, kinetic_energy)
+);
+CREATE TABLE fit_terms (
+  fit_id INTEGER NOT NULL REFERENCES fits(id) ON DELETE CASCADE,
+  power_log_er INTEGER NOT NULL,
+  power_rls INTEGER NOT NULL,
+  coefficient REAL NOT NULL,
+  PRIMARY KEY (fit_id, power_log_er, power_rls)
+);
+CREATE TABLE fit_points (
+  fit_id INTEGER NOT NULL REFERENCES fits(id) ON DELETE CASCADE,
+  grid_point_id INTEGER NOT NULL REFERENCES grid_points(id),
+  log10_er REAL NOT NULL,
+  rls REAL NOT NULL,
+  value REAL NOT NULL,
+  PRIMARY KEY (fit_id, grid_point_id)
+);
+)sql";
+
+constexpr std::array<const char*, 2> kSteps = {kStep1, kStep2};
+
+int pragma_int(Connection& connection, const char* pragma) {
+  Statement query(connection, std::string("PRAGMA ") + pragma);
+  return query.step() ? static_cast<int>(query.column_int(0)) : 0;
+}
+
+int count_tables(Connection& connection) {
+  Statement query(connection, "SELECT count(*) FROM sqlite_schema WHERE type = 'table'");
+  query.step();
+  return static_cast<int>(query.column_int(0));
+}
+
+void refuse_foreign_or_newer(Connection& connection, int version, int application_id) {
+  const std::string file = connection.file().string();
+  if (application_id != 0 && application_id != kApplicationId)
+    throw StoreError(file + ": not a ccm study store (application_id " +
+                     std::to_string(application_id) + ", expected " +
+                     std::to_string(kApplicationId) + "); refusing to touch it");
+  if (application_id == 0 && count_tables(connection) > 0)
+    throw StoreError(file +
+                     ": an SQLite file with tables but no ccm application_id is not a "
+                     "ccm study store; refusing to touch it");
+  if (version > latest_schema_version())
+    throw StoreError(file + ": schema version " + std::to_string(version) +
+                     " was written by a newer ccm (this build knows up to " +
+                     std::to_string(latest_schema_version()) + "); upgrade ccm to open it");
+}
+
+}  // namespace
+
+int latest_schema_version() { return static_cast<int>(kSteps.size()); }
+
+int schema_version(Connection& connection) { return pragma_int(connection, "user_version"); }
+
+void migrate(Connection& connection, int target_version) {
+  // Reading the header also makes SQLite reject a file that is not a database at all.
+  int version = 0;
+  int application_id = 0;
+  try {
+    version = schema_version(connection);
+    application_id = pragma_int(connection, "application_id");
+  } catch (const StoreError& e) {
+    throw StoreError(std::string(e.what()) + " (not a ccm study store)");
+  }
+  refuse_foreign_or_newer(connection, version, application_id);
+  for (int step = version; step < target_version; ++step) {
+    Transaction transaction(connection);
+    // Re-read under the write lock: another process may have migrated meanwhile.
+    if (schema_version(connection) > step) continue;
+    connection.exec(kSteps[static_cast<std::size_t>(step)],
+                    "schema migration step " + std::to_string(step + 1));
+    connection.exec("PRAGMA application_id = " + std::to_string(kApplicationId));
+    connection.exec("PRAGMA user_version = " + std::to_string(step + 1));
+    transaction.commit();
+  }
+}
+
+}  // namespace ccm::db

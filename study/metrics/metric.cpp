@@ -1,0 +1,63 @@
+#include "study/metrics/metric.hpp"
+
+namespace ccm::study {
+
+std::string_view to_string(Metric metric) {
+  switch (metric) {
+    case Metric::w_u_mean:
+      return "w_u_mean";
+    case Metric::w_u_max:
+      return "w_u_max";
+    case Metric::w_kinetic_energy:
+      return "w_kinetic_energy";
+    case Metric::runtime_ratio:
+      return "rtr";
+    case Metric::final_u_mean:
+      return "final_u_mean";
+    case Metric::final_u_max:
+      return "final_u_max";
+    case Metric::final_kinetic_energy:
+      return "final_kinetic_energy";
+    case Metric::cumulative_u_mean:
+      return "cumulative_u_mean";
+    case Metric::cumulative_u_max:
+      return "cumulative_u_max";
+    case Metric::cumulative_kinetic_energy:
+      return "cumulative_kinetic_energy";
+  }
+  return "unknown";
+}
+
+std::optional<Metric> metric_from_string(std::string_view name) {
+  for (const Metric m : kAllMetrics)
+    if (to_string(m) == name) return m;
+  return std::nullopt;
+}
+
+double metric_value(const PointMetrics& p, Metric metric) {
+  switch (metric) {
+    case Metric::w_u_mean:
+      return p.weighting.u_mean;
+    case Metric::w_u_max:
+      return p.weighting.u_max;
+    case Metric::w_kinetic_energy:
+      return p.weighting.kinetic_energy;
+    case Metric::runtime_ratio:
+      return p.runtime_ratio;
+    case Metric::final_u_mean:
+      return p.final_state.u_mean;
+    case Metric::final_u_max:
+      return p.final_state.u_max;
+    case Metric::final_kinetic_energy:
+      return p.final_state.kinetic_energy;
+    case Metric::cumulative_u_mean:
+      return p.cumulative.u_mean;
+    case Metric::cumulative_u_max:
+      return p.cumulative.u_max;
+    case Metric::cumulative_kinetic_energy:
+      return p.cumulative.kinetic_energy;
+  }
+  return 0.0;
+}
+
+}  // namespace ccm::study

@@ -1,0 +1,67 @@
+// All metrics of one grid point from two synthetic runs, against values worked out by hand.
+#include <catch2/catch.hpp>
+
+#include "study/metrics/point_metrics.hpp"
+#include "tests/study/metrics/synthetic_runs.hpp"
+#include "tests/support/tolerance.hpp"
+
+using namespace ccm::study;
+using ccm::test::relative_error;
+using ccm::test::synthetic_run;
+
+constexpr double kRounding = 1e-14;  // a few flops per figure
+
+TEST_CASE("point metrics of two synthetic runs match the hand computation", "[metrics]") {
+  const PointMetrics m =
+      compute_point_metrics(synthetic_run(ImpactModel::ccm), synthetic_run(ImpactModel::rigid));
+  REQUIRE(m.usable);
+  CHECK(m.t_final == 0.15);
+  // u_mean: diffs 0,0,1,2 -> 5; means 1.25, 2 -> 1.625        (2.34)
+  CHECK(relative_error(m.cumulative.u_mean, 5.0 / 1.625) < kRounding);
+  // u_max: diffs 0,0,1,3 -> 10; means 2.25, 3.25 -> 2.75       (2.35)
+  CHECK(relative_error(m.cumulative.u_max, 10.0 / 2.75) < kRounding);
+  // KE: diffs 0,0,2,3 -> 13; means 1.75, 3 -> 2.375            (2.36)
+  CHECK(relative_error(m.cumulative.kinetic_energy, 13.0 / 2.375) < kRounding);
+  // final: |2-4|/4, |3-6|/6, |1-4|/4                          (2.37-2.39)
+  CHECK(relative_error(m.final_state.u_mean, 0.5) < kRounding);
+  CHECK(relative_error(m.final_state.u_max, 0.5) < kRounding);
+  CHECK(relative_error(m.final_state.kinetic_energy, 0.75) < kRounding);
+  // NT 4e-3/1e-6 = 4000, 1e-3/2e-6 = 500; RTR 8; TR 600 s and 75 s (2.40-2.43)
+  CHECK(relative_error(m.ccm.normalised_runtime, 4000.0) < kRounding);
+  CHECK(relative_error(m.rigid.normalised_runtime, 500.0) < kRounding);
+  CHECK(relative_error(m.ccm.total_runtime, 600.0) < kRounding);
+  CHECK(relative_error(m.rigid.total_runtime, 75.0) < kRounding);
+  CHECK(relative_error(m.runtime_ratio, 8.0) < kRounding);
+  // w = final-state error / RTR
+  CHECK(relative_error(m.weighting.u_mean, 0.0625) < kRounding);
+  CHECK(relative_error(m.weighting.u_max, 0.0625) < kRounding);
+  CHECK(relative_error(m.weighting.kinetic_energy, 0.09375) < kRounding);
+  // Measured timings are carried along.
+  CHECK(m.ccm.steps == 150000);
+  CHECK(m.rigid.wall_seconds == Approx(75.0).epsilon(1e-14));
+}
+
+TEST_CASE("a point with an unstable run is kept but marked unusable, with the reason",
+          "[metrics]") {
+  RunRecord ccm_run = synthetic_run(ImpactModel::ccm);
+  ccm_run.verdict = "unstable";
+  ccm_run.reason = "energy balance error 27.7 % exceeds 5 %";
+  const PointMetrics m = compute_point_metrics(ccm_run, synthetic_run(ImpactModel::rigid));
+  CHECK_FALSE(m.usable);
+  CHECK(m.excluded_reason == "ccm run unstable: energy balance error 27.7 % exceeds 5 %");
+  CHECK(m.ccm.verdict == "unstable");
+  CHECK(m.rigid.verdict == "completed");
+}
+
+TEST_CASE("runs sampled at different times are not compared", "[metrics]") {
+  RunRecord rigid = synthetic_run(ImpactModel::rigid);
+  rigid.artifact.time[2] = 0.11;
+  const PointMetrics m = compute_point_metrics(synthetic_run(ImpactModel::ccm), rigid);
+  CHECK_FALSE(m.usable);
+  CHECK(m.excluded_reason == "sample 2 is at different times in the two runs");
+  // Swapped models or different points are a programming error.
+  CHECK_THROWS(
+      compute_point_metrics(synthetic_run(ImpactModel::rigid), synthetic_run(ImpactModel::ccm)));
+  CHECK_THROWS(compute_point_metrics(synthetic_run(ImpactModel::ccm, 1),
+                                     synthetic_run(ImpactModel::rigid, 2)));
+}
