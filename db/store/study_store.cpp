@@ -79,6 +79,13 @@ std::string StudyStore::study_name() const {
   return query.step() ? query.column_text(0) : std::string();
 }
 
+bool StudyStore::open_existing_study() {
+  Statement existing(*connection_, "SELECT id FROM studies ORDER BY id LIMIT 1");
+  if (!existing.step()) return false;
+  study_id_ = existing.column_int(0);
+  return true;
+}
+
 long long StudyStore::study_id() const {
   if (!study_id_) throw StoreError(file_.string() + ": no study opened in this store yet");
   return *study_id_;

@@ -57,6 +57,9 @@ class StudyStore {
   // already holds a study of another name or grid hash (the grid file changed).
   void open_study(const std::string& name, const std::string& grid_hash);
   std::string study_name() const;
+  // Binds the store to the study the file already holds, for reading commands (status,
+  // recommend, report); false when it holds none. Never creates one.
+  bool open_existing_study();
 
   // Adds the point (idempotent by content hash); returns its row id.
   long long add_grid_point(const study::GridPoint& point);
