@@ -123,7 +123,7 @@ std::string gnuplot_script(const PlotSpec& plot, const std::string& svg_file) {
   std::string s = fmt::format(
       "set terminal svg size {},{} noenhanced font 'DejaVu Sans,11' background rgb 'white'\n"
       "set output {}\nset title {}\nset xlabel {}\nset ylabel {}\nset grid\n"
-      "set key outside right top box opaque\nset datafile missing 'nan'\n",
+      "set key below Left reverse box\nset datafile missing 'nan'\n",
       plot.width, plot.height, gnuplot_string(svg_file), gnuplot_string(plot.title),
       gnuplot_string(plot.x_label), gnuplot_string(plot.y_label));
   if (plot.log_x) s += "set logscale x\nset format x '%.0e'\n";
