@@ -9,6 +9,7 @@ packages=(
   libsqlite3-dev sqlite3 libhdf5-dev hdf5-tools
   libfmt-dev libspdlog-dev catch2 libgmsh-dev
   libcli11-dev libtomlplusplus-dev libnlopt-cxx-dev gnuplot-nox nlohmann-json3-dev
+  chromium
 )
 
 missing=()

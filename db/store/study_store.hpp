@@ -57,8 +57,8 @@ class StudyStore {
   // already holds a study of another name or grid hash (the grid file changed).
   void open_study(const std::string& name, const std::string& grid_hash);
   std::string study_name() const;
-  // Binds the store to the study it already holds (for reading commands: status, recommend,
-  // report); false when the file holds no study yet.
+  // Binds the store to the study the file already holds, for reading commands (status,
+  // recommend, report); false when it holds none. Never creates one.
   bool open_existing_study();
 
   // Adds the point (idempotent by content hash); returns its row id.

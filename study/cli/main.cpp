@@ -1,6 +1,7 @@
 // The ccm command line: `ccm --version`, `ccm run SCENE --out DIR [--quiet]`,
 // `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE`,
-// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`.
+// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`,
+// `ccm report --db FILE --out DIR [--max-error E]`.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -61,6 +62,17 @@ int main(int argc, char** argv) {
                         "Use rigid when all its predicted final-state errors are below this");
   recommend->add_flag("--json", rec.json, "Print the recommendation as JSON");
 
+  ccm::ReportArgs report_args;
+  CLI::App* report = app.add_subcommand(
+      "report", "Write a study's self-contained HTML report (figures as SVG, tables as CSV)");
+  report->add_option("--db", report_args.db, "Study store (SQLite)")->required();
+  report->add_option("--out,-o", report_args.out, "Report folder (replaced whole)")->required();
+  report
+      ->add_option("--max-error", report_args.max_error,
+                   "Error threshold of the recommendation map")
+      ->default_val(0.1);
+  report->footer("Exit codes: 0 written, 1 internal error (e.g. gnuplot missing), 2 bad input.");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -71,5 +83,6 @@ int main(int argc, char** argv) {
   if (*study_run) return ccm::study_run_command(study_run_args);
   if (*study_status) return ccm::study_status_command(study_status_args);
   if (*recommend) return ccm::recommend_command(rec);
+  if (*report) return ccm::report_command(report_args);
   return ccm::run_command(args);
 }

@@ -1,5 +1,6 @@
 // `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE` and
-// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`.
+// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]` and
+// `ccm report --db FILE --out DIR [--max-error E]`.
 #pragma once
 
 #include <filesystem>
@@ -25,9 +26,16 @@ struct RecommendArgs {
   bool json = false;
 };
 
+struct ReportArgs {
+  std::filesystem::path db;
+  std::filesystem::path out;
+  double max_error = 0.1;  // error threshold of the recommendation map
+};
+
 // Each returns the process exit code (study/cli/run_command.hpp exit_code).
 int study_run_command(const StudyRunArgs& args);
 int study_status_command(const StudyStatusArgs& args);
 int recommend_command(const RecommendArgs& args);
+int report_command(const ReportArgs& args);
 
 }  // namespace ccm

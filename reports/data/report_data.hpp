@@ -1,0 +1,39 @@
+// Everything a report shows, as plain structs read once from the study store
+// (reports/data/report_loader.hpp): rendering never touches the database.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "db/store/study_store.hpp"
+#include "study/fit/study_fits.hpp"
+#include "study/metrics/point_metrics.hpp"
+#include "study/runner/run_record.hpp"
+
+namespace ccm::reports {
+
+// Where the study's results came from (the runs rows) and where the report was made.
+struct StudyProvenance {
+  std::string study_name{};
+  std::string grid_hash{};
+  std::string created_at;                 // when the study was created (UTC)
+  std::vector<std::string> ccm_versions;  // distinct "version (git hash)" of the runs
+  std::vector<std::string> hosts{};       // distinct hosts that ran them
+  std::string first_run_started_at{}, last_run_ended_at{};
+  std::vector<std::string> scene_hashes{};  // distinct scene content hashes of the runs
+};
+
+struct ReportData {
+  std::string database{};  // path of the store, as given
+  StudyProvenance provenance{};
+  std::vector<db::PointStatus> status{};         // every grid point, in index order
+  std::vector<study::RunRecord> runs{};          // every completed or unstable run, with histories
+  std::vector<study::PointMetrics> grid{};       // metrics of the main grid's points
+  std::vector<study::PointMetrics> convergence;  // metrics of convergence points (mesh_scale)
+  study::StudyFits fits{};
+};
+
+// True for the points of the convergence mode (they carry other_axes["mesh_scale"]).
+bool is_convergence_point(const study::GridPoint& point);
+
+}  // namespace ccm::reports

@@ -1,0 +1,54 @@
+#include "reports/figures/labels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace ccm::reports {
+
+std::string model_label(study::ImpactModel model) {
+  return model == study::ImpactModel::ccm ? "CCM (meshed sphere, DCR)"
+                                          : "rigid (analytic sphere, penalty)";
+}
+
+std::string case_label(const study::GridPoint& p) {
+  return fmt::format("ER {:g}, RLS {:g}, KE {:g} J", p.modulus_ratio, p.length_ratio,
+                     p.kinetic_energy);
+}
+
+std::string metric_label(study::Metric metric) {
+  using study::Metric;
+  switch (metric) {
+    case Metric::w_u_mean:
+      return "w = final-state error in u_mean / RTR [-]";
+    case Metric::w_u_max:
+      return "w = final-state error in u_max / RTR [-]";
+    case Metric::w_kinetic_energy:
+      return "w = final-state error in artifact KE / RTR [-]";
+    case Metric::runtime_ratio:
+      return "RTR = NT_CCM / NT_rigid [-]";
+    case Metric::final_u_mean:
+      return "final-state error in u_mean [-]";
+    case Metric::final_u_max:
+      return "final-state error in u_max [-]";
+    case Metric::final_kinetic_energy:
+      return "final-state error in artifact KE [-]";
+    case Metric::cumulative_u_mean:
+      return "cumulative error in u_mean [m]";
+    case Metric::cumulative_u_max:
+      return "cumulative error in u_max [m]";
+    case Metric::cumulative_kinetic_energy:
+      return "cumulative error in artifact KE [J]";
+  }
+  return std::string(study::to_string(metric));
+}
+
+std::vector<double> kinetic_energy_levels(const std::vector<study::GridPoint>& points) {
+  std::vector<double> levels;
+  for (const auto& p : points) levels.push_back(p.kinetic_energy);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  return levels;
+}
+
+}  // namespace ccm::reports

@@ -1,0 +1,44 @@
+// What one figure shows, independent of the plotting program: 2-D series (points, lines) or
+// 3-D series (scatter points, surface meshes), axis labels with units, log axes.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace ccm::reports {
+
+enum class SeriesStyle {
+  points,       // markers only
+  lines,        // a polyline in data order
+  linespoints,  // both
+  squares,      // large filled squares (maps)
+  surface,      // 3-D: a mesh of `surface_columns` points per row, rows in data order
+};
+
+struct Series {
+  std::string title{};  // legend entry: names the model and the case
+  SeriesStyle style = SeriesStyle::points;
+  std::vector<double> x{}, y{}, z{};  // z only for 3-D plots
+  std::size_t surface_columns = 0;    // points per mesh row (SeriesStyle::surface)
+  int color = 0;  // index into the colour-blind-safe palette of reports/plot/gnuplot.cpp
+  bool empty() const { return x.empty(); }
+};
+
+struct PlotSpec {
+  std::string title{};
+  std::string x_label{}, y_label{}, z_label{};  // with units, e.g. "wall time [s]"
+  bool log_x = false, log_y = false, log_z = false;
+  bool three_d = false;
+  std::vector<Series> series{};
+  int width = 720, height = 440;  // SVG size [px]
+};
+
+// True when every value is positive and the largest is at least 100 times the smallest, so
+// the axis should be logarithmic.
+bool spans_decades(std::span<const double> values);
+
+// All the values of one coordinate over every series of a plot (0 = x, 1 = y, 2 = z).
+std::vector<double> all_values(const PlotSpec& plot, int axis);
+
+}  // namespace ccm::reports

@@ -1,0 +1,57 @@
+// `ccm report --db FILE --out DIR [--max-error E]`: the study's self-contained HTML report.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "reports/data/report_loader.hpp"
+#include "reports/report_error.hpp"
+#include "reports/write/report_writer.hpp"
+#include "study/cli/run_command.hpp"
+#include "study/cli/study_commands.hpp"
+#include "study/cli/study_store_open.hpp"
+
+namespace ccm {
+namespace {
+
+reports::ReportData load_study(const std::filesystem::path& file) {
+  auto store = open_study_store(file);
+  reports::ReportData data = reports::load_report_data(*store);
+  if (data.status.empty())
+    throw StudyInputError(file.string() + ": study \"" + data.provenance.study_name +
+                          "\" has no grid points yet (an empty study): run `ccm study run` "
+                          "first");
+  return data;
+}
+
+std::size_t count_figures(const reports::ReportContent& content) {
+  std::size_t n = 0;
+  for (const auto& s : content.sections) n += s.figures.size();
+  return n;
+}
+
+}  // namespace
+
+int report_command(const ReportArgs& args) {
+  try {
+    if (!(std::isfinite(args.max_error) && args.max_error > 0.0))
+      throw StudyInputError(
+          fmt::format("--max-error {}: must be a positive number", args.max_error));
+    const reports::ReportData data = load_study(args.db);
+    const auto content = reports::build_report(data, {args.max_error}, reports::current_stamp());
+    reports::write_report(content, args.out);
+    fmt::print("report: {} ({} figures)\n", (args.out / "index.html").string(),
+               count_figures(content));
+    return exit_code::completed;
+  } catch (const StudyInputError& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const db::StoreError& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const std::exception& e) {  // ReportError (gnuplot, output folder) and the rest
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::internal_error;
+  }
+}
+
+}  // namespace ccm

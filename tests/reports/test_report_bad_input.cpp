@@ -1,0 +1,97 @@
+// `ccm report` on bad input: each a clear message naming the file, exit code 2, nothing written.
+#include <sys/wait.h>
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "db/schema/migrations.hpp"
+#include "db/sqlite/connection.hpp"
+#include "db/store/study_store.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string error;  // its standard error
+};
+
+CommandResult run_report(const test::TempDir& dir, const fs::path& db) {
+  const fs::path err = dir.path / "stderr.txt";
+  const std::string command = std::string(CCM_BINARY) + " report --db '" + db.string() +
+                              "' --out '" + (dir.path / "report").string() + "' 2>'" +
+                              err.string() + "' >/dev/null";
+  const int status = std::system(command.c_str());
+  std::ifstream in(err);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+void check_refused(const test::TempDir& dir, const fs::path& db, const std::string& why) {
+  const CommandResult r = run_report(dir, db);
+  INFO(r.error);
+  CHECK(r.exit_code == 2);
+  CHECK(r.error.find(db.string()) != std::string::npos);
+  CHECK(r.error.find(why) != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.path / "report"));
+}
+
+TEST_CASE("ccm report refuses a missing, foreign, newer or empty database", "[reports]") {
+  test::TempDir dir;
+  SECTION("missing file") {
+    check_refused(dir, dir.path / "nope.sqlite", "no such study database");
+  }
+  SECTION("a text file") {
+    check_refused(dir, dir.write("notes.sqlite", "not a database at all, just text\n"),
+                  "not a ccm study store");
+  }
+  SECTION("an SQLite file of another application") {
+    const fs::path file = dir.path / "other.sqlite";
+    db::Connection(file).exec("CREATE TABLE customers (id INTEGER PRIMARY KEY, name TEXT)");
+    check_refused(dir, file, "not a ccm study store");
+  }
+  SECTION("a store of a newer schema") {
+    const fs::path file = dir.path / "newer.sqlite";
+    {
+      db::Connection c(file);
+      db::migrate(c);
+      c.exec("PRAGMA user_version = " + std::to_string(db::latest_schema_version() + 1));
+    }
+    check_refused(dir, file, "newer ccm");
+  }
+  SECTION("a store without a study") {
+    const fs::path file = dir.path / "fresh.sqlite";
+    db::StudyStore{file};
+    check_refused(dir, file, "holds no study");
+  }
+  SECTION("a study without grid points") {
+    const fs::path file = dir.path / "empty.sqlite";
+    db::StudyStore(file).open_study("empty-study", "hash");
+    check_refused(dir, file, "no grid points");
+  }
+}
+
+TEST_CASE("ccm report migrates a store of an older schema before reading it", "[reports]") {
+  test::TempDir dir;
+  const fs::path file = dir.path / "old.sqlite";
+  {
+    db::Connection c(file);
+    db::migrate(c, 1);  // the run ledger only, before metrics and fits existed
+    c.exec(
+        "INSERT INTO studies (name, grid_hash, created_at, ccm_version, git_hash) "
+        "VALUES ('old-study', 'h', '2026-01-01T00:00:00Z', '0.0.1', 'abc')");
+  }
+  // Migrated, then refused for what it holds (a study of no points), not for its schema.
+  check_refused(dir, file, "no grid points");
+  db::Connection c(file);
+  CHECK(db::schema_version(c) == db::latest_schema_version());
+}
+
+}  // namespace
+}  // namespace ccm

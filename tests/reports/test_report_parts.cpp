@@ -1,0 +1,124 @@
+// The report's parts on hand-made inputs: equations, CSV, log-axis choice, gnuplot scripts,
+// the stability table, the corner points and the recommendation map of the synthetic study.
+#include <catch2/catch.hpp>
+
+#include "db/store/study_store.hpp"
+#include "reports/data/report_loader.hpp"
+#include "reports/figures/fit_section.hpp"
+#include "reports/figures/recommendation_map.hpp"
+#include "reports/figures/stability_section.hpp"
+#include "reports/figures/trade_study_section.hpp"
+#include "reports/plot/gnuplot.hpp"
+#include "reports/tables/table.hpp"
+#include "tests/reports/synthetic_study.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace ccm::reports {
+namespace {
+
+TEST_CASE("surface_equation writes every term with its sign and powers", "[reports]") {
+  study::PolynomialSurface s{{1, 2},
+                             {{0, 0, 1.5}, {0, 1, 0.25}, {0, 2, -3e-5}, {1, 0, -2.0}, {1, 1, 4.0}}};
+  CHECK(surface_equation(s, "w") == "w = 1.5 + 0.25 y - 3e-05 y^2 - 2 x + 4 x y");
+  s.terms = {{0, 0, -0.5}};
+  CHECK(surface_equation(s, "z") == "z = -0.5");
+  s.terms.clear();
+  CHECK(surface_equation(s, "z") == "z = 0");
+}
+
+TEST_CASE("tables are written as RFC 4180 CSV and escaped HTML", "[reports]") {
+  const Table t{"t", "caption <b>", {"a", "b [m]"}, {{"1,5", "say \"hi\""}, {"x", "<y>"}}};
+  CHECK(to_csv(t) == "a,b [m]\n\"1,5\",\"say \"\"hi\"\"\"\nx,<y>\n");
+  const std::string html = to_html(t);
+  CHECK(html.find("caption &lt;b&gt;") != std::string::npos);
+  CHECK(html.find("<td>&lt;y&gt;</td>") != std::string::npos);
+  CHECK(html.find("<y>") == std::string::npos);
+}
+
+TEST_CASE("an axis is logarithmic when positive values span two decades", "[reports]") {
+  CHECK(spans_decades(std::vector<double>{1.0, 100.0}));
+  CHECK_FALSE(spans_decades(std::vector<double>{1.0, 99.0}));
+  CHECK_FALSE(spans_decades(std::vector<double>{0.0, 1.0, 1e6}));  // zero: no log axis
+  CHECK_FALSE(spans_decades(std::vector<double>{}));
+}
+
+TEST_CASE("gnuplot scripts label axes, name series and quote text", "[reports]") {
+  PlotSpec plot{.title = "say \"x\"", .x_label = "time [s]", .y_label = "KE [J]", .log_y = true};
+  plot.series = {Series{.title = "CCM", .x = {0, 1}, .y = {1, 2}}, Series{.title = "empty"},
+                 Series{.title = "rigid", .style = SeriesStyle::lines, .x = {0}, .y = {1}}};
+  const std::string script = gnuplot_script(plot, "/tmp/f.svg");
+  CHECK(script.find("set title \"say \\\"x\\\"\"") != std::string::npos);
+  CHECK(script.find("set xlabel \"time [s]\"") != std::string::npos);
+  CHECK(script.find("set logscale y") != std::string::npos);
+  CHECK(script.find("set logscale x") == std::string::npos);
+  CHECK(script.find("'series-0.dat' using 1:2") != std::string::npos);
+  CHECK(script.find("series-1.dat") == std::string::npos);  // empty series left out
+  CHECK(script.find("'series-2.dat' using 1:2 with lines") != std::string::npos);
+  CHECK(script.find("title \"rigid\"") != std::string::npos);
+}
+
+TEST_CASE("rendering a plot without data is an error naming the figure", "[reports]") {
+  PlotSpec plot{.title = "nothing here"};
+  plot.series = {Series{.title = "empty"}};
+  CHECK_THROWS_WITH(render_svg(plot), Catch::Contains("nothing here"));
+}
+
+TEST_CASE("corner points: lowest and highest ER by lowest and highest RLS at the highest KE",
+          "[reports]") {
+  std::vector<study::GridPoint> grid;
+  for (double ke : {10.0, 100.0})
+    for (double rls : {0.5, 1.0, 1.5})
+      for (double er : {1.0, 1e3, 1e6}) grid.push_back({int(grid.size()), er, rls, ke, {}});
+  const auto corners = corner_points(grid);
+  REQUIRE(corners.size() == 4);
+  // index = 9 KE_i + 3 RLS_i + ER_i: (1e6, 0.5), (1e6, 1.5), (1, 0.5), (1, 1.5) at KE 100.
+  CHECK(corners[0].index == 9 + 0 + 2);
+  CHECK(corners[1].index == 9 + 6 + 2);
+  CHECK(corners[2].index == 9 + 0 + 0);
+  CHECK(corners[3].index == 9 + 6 + 0);
+}
+
+TEST_CASE("synthetic study: stability table and recommendation map against closed forms",
+          "[reports]") {
+  test::TempDir dir;
+  test::write_synthetic_study(dir.path / "study.sqlite");
+  db::StudyStore store(dir.path / "study.sqlite");
+  REQUIRE(store.open_existing_study());
+  const ReportData data = load_report_data(store);
+  REQUIRE(data.status.size() == test::kSyntheticPoints);
+  REQUIRE(data.runs.size() == 2 * test::kSyntheticPoints);
+
+  SECTION("one row per run; the unstable run with its reason, time and step range") {
+    const Table t = stability_table(data);
+    REQUIRE(t.rows.size() == 2 * test::kSyntheticPoints);
+    const auto& row = t.rows[2 * test::kUnstablePointIndex + 1];  // its rigid run
+    CHECK(row[2] == "rigid");
+    CHECK(row[3] == "unstable");
+    CHECK(row[4] == test::kUnstableReason);
+    CHECK(row[5] == "9e-05");  // dt_min = 0.9 ISTS_rigid
+    CHECK(row[6] == "0.0001");
+    CHECK(row[7] == "0.2");
+    CHECK(row[8] == "1200");  // 0.12 s / 1e-4 s
+    CHECK(row[9] == "0.12");
+  }
+
+  SECTION("rigid exactly where the final-state error 0.4 (1 - log10 ER / 6) is below 0.1") {
+    // Errors are linear in log10 ER, so the fitted surfaces reproduce them (to rounding) and
+    // rigid is recommended for log10 ER > 4.5. Cells at log10 ER = 0.2 i, i = 0..30: rigid
+    // for i >= 23 (4.6, error 0.0933), CCM for i <= 22 (4.4, error 0.1067): 8 of 31 columns.
+    for (double ke : {10.0, 100.0}) {
+      const auto cells = recommendation_cells(data.fits, ke, 0.1);
+      REQUIRE(cells.size() == std::size_t(kMapCells * kMapCells));
+      int rigid = 0;
+      for (const MapCell& c : cells) {
+        const bool expect_rigid = test::synthetic_final_error(c.modulus_ratio) < 0.1;
+        CHECK((c.model == study::ImpactModel::rigid) == expect_rigid);
+        rigid += c.model == study::ImpactModel::rigid;
+      }
+      CHECK(rigid == 8 * kMapCells);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ccm::reports
