@@ -73,6 +73,12 @@ int main(int argc, char** argv) {
       ->default_val(0.1);
   report->footer("Exit codes: 0 written, 1 internal error (e.g. gnuplot missing), 2 bad input.");
 
+  ccm::RigListArgs rig_list_args;
+  CLI::App* rig = app.add_subcommand("rig", "Benchtop rig models (thesis chapter 3)");
+  rig->require_subcommand(1);
+  CLI::App* rig_list = rig->add_subcommand("list", "The 12 cases of thesis Table 3.2");
+  rig_list->add_option("--cases", rig_list_args.cases, "Case file (TOML)")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -83,6 +89,7 @@ int main(int argc, char** argv) {
   if (*study_run) return ccm::study_run_command(study_run_args);
   if (*study_status) return ccm::study_status_command(study_status_args);
   if (*recommend) return ccm::recommend_command(rec);
+  if (*rig_list) return ccm::rig_list_command(rig_list_args);
   if (*report) return ccm::report_command(report_args);
   return ccm::run_command(args);
 }

@@ -32,10 +32,15 @@ struct ReportArgs {
   double max_error = 0.1;  // error threshold of the recommendation map
 };
 
+struct RigListArgs {
+  std::filesystem::path cases = CCM_RIG_CASES;  // rig_models/cases.toml of the source tree
+};
+
 // Each returns the process exit code (study/cli/run_command.hpp exit_code).
 int study_run_command(const StudyRunArgs& args);
 int study_status_command(const StudyStatusArgs& args);
 int recommend_command(const RecommendArgs& args);
+int rig_list_command(const RigListArgs& args);
 int report_command(const ReportArgs& args);
 
 }  // namespace ccm
