@@ -4,18 +4,9 @@
 
 #include <cstdint>
 
-namespace ccm::db {
+#include "study/runner/content_hash.hpp"
 
-namespace {
-std::string fnv1a64(std::string_view data) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const char c : data) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ULL;
-  }
-  return fmt::format("{:016x}", h);
-}
-}  // namespace
+namespace ccm::db {
 
 std::string other_axes_text(const study::GridPoint& point) {
   std::string text;
@@ -25,8 +16,9 @@ std::string other_axes_text(const study::GridPoint& point) {
 }
 
 std::string grid_point_hash(const study::GridPoint& point) {
-  return fnv1a64(fmt::format("ER={};RLS={};KE={};{}", point.modulus_ratio, point.length_ratio,
-                             point.kinetic_energy, other_axes_text(point)));
+  return study::fnv1a64(fmt::format("ER={};RLS={};KE={};{}", point.modulus_ratio,
+                                    point.length_ratio, point.kinetic_energy,
+                                    other_axes_text(point)));
 }
 
 }  // namespace ccm::db

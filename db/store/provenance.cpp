@@ -7,6 +7,8 @@
 #include <chrono>
 #include <ctime>
 
+#include "study/provenance/timestamp.hpp"
+
 namespace ccm::db {
 
 RunProvenance current_provenance(const std::string& grid_hash, int ranks, int jobs) {
@@ -23,15 +25,6 @@ RunProvenance current_provenance(const std::string& grid_hash, int ranks, int jo
   return p;
 }
 
-std::string utc_now() {
-  const auto now = std::chrono::system_clock::now();
-  const std::time_t secs = std::chrono::system_clock::to_time_t(now);
-  std::tm tm{};
-  gmtime_r(&secs, &tm);
-  const auto ms =
-      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
-  return fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}.{:03}Z", tm.tm_year + 1900, tm.tm_mon + 1,
-                     tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, ms);
-}
+std::string utc_now() { return utc_timestamp_now(); }
 
 }  // namespace ccm::db

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/cli/command_errors.hpp"
 #include "study/cli/run_command.hpp"
 #include "study/cli/study_commands.hpp"
 #include "study/cli/study_store_open.hpp"
@@ -46,7 +47,7 @@ void print_recommendation(const RecommendArgs& q, const study::Recommendation& r
 }  // namespace
 
 int recommend_command(const RecommendArgs& args) {
-  try {
+  return run_reporting_errors([&] {
     auto store = open_study_store(args.db);
     const study::StudyFits fits = store->load_fits();
     if (fits.fits.empty())
@@ -64,19 +65,7 @@ int recommend_command(const RecommendArgs& args) {
     else
       print_recommendation(args, r);
     return exit_code::completed;
-  } catch (const std::invalid_argument& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const StudyInputError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const db::StoreError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::internal_error;
-  }
+  });
 }
 
 }  // namespace ccm

@@ -6,6 +6,7 @@
 #include "reports/data/report_loader.hpp"
 #include "reports/report_error.hpp"
 #include "reports/write/report_writer.hpp"
+#include "study/cli/command_errors.hpp"
 #include "study/cli/run_command.hpp"
 #include "study/cli/study_commands.hpp"
 #include "study/cli/study_store_open.hpp"
@@ -32,7 +33,7 @@ std::size_t count_figures(const reports::ReportContent& content) {
 }  // namespace
 
 int report_command(const ReportArgs& args) {
-  try {
+  return run_reporting_errors([&] {
     if (!(std::isfinite(args.max_error) && args.max_error > 0.0))
       throw StudyInputError(
           fmt::format("--max-error {}: must be a positive number", args.max_error));
@@ -42,16 +43,7 @@ int report_command(const ReportArgs& args) {
     fmt::print("report: {} ({} figures)\n", (args.out / "index.html").string(),
                count_figures(content));
     return exit_code::completed;
-  } catch (const StudyInputError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const db::StoreError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const std::exception& e) {  // ReportError (gnuplot, output folder) and the rest
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::internal_error;
-  }
+  });
 }
 
 }  // namespace ccm

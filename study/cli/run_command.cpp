@@ -15,7 +15,9 @@
 
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
+#include "study/provenance/timestamp.hpp"
 #include "study/provenance/version.hpp"
+#include "study/runner/content_hash.hpp"
 #include "study/scene/scene_builder.hpp"
 #include "study/scene/scene_file.hpp"
 
@@ -32,26 +34,6 @@ struct UsageError : std::runtime_error {
 
 // ---------------------------------------------------------------------------------------------
 // Small helpers: hashing, time stamps, TOML values, atomic files
-
-std::string fnv1a64(std::string_view data) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const char c : data) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ULL;
-  }
-  return fmt::format("{:016x}", h);
-}
-
-// RFC 3339 UTC with milliseconds, which is also a TOML offset date-time.
-std::string utc_timestamp(SystemClock::time_point t) {
-  const std::time_t secs = SystemClock::to_time_t(t);
-  std::tm tm{};
-  gmtime_r(&secs, &tm);
-  const auto ms =
-      std::chrono::duration_cast<std::chrono::milliseconds>(t.time_since_epoch()).count() % 1000;
-  return fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}.{:03}Z", tm.tm_year + 1900, tm.tm_mon + 1,
-                     tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, ms);
-}
 
 std::string toml_string(std::string_view s) {
   std::string out = "\"";
@@ -189,7 +171,7 @@ std::string summary_toml(const RunRecord& r) {
   t += fmt::format("ccm_version = {}\n", toml_string(version_string()));
   t += fmt::format("scene = {}\n",
                    toml_string(fs::absolute(scene.source).lexically_normal().string()));
-  t += fmt::format("scene_fnv1a64 = {}\n", toml_string(fnv1a64(r.prepared.text)));
+  t += fmt::format("scene_fnv1a64 = {}\n", toml_string(study::fnv1a64(r.prepared.text)));
   t += fmt::format("title = {}\n", toml_string(scene.title));
   t += fmt::format("started = {}\nfinished = {}\n", r.started, r.finished);
   t +=

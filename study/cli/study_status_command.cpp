@@ -4,6 +4,7 @@
 #include <map>
 
 #include "db/store/study_store.hpp"
+#include "study/cli/command_errors.hpp"
 #include "study/cli/run_command.hpp"
 #include "study/cli/study_commands.hpp"
 #include "study/cli/study_store_open.hpp"
@@ -37,20 +38,11 @@ void print_status(const std::vector<db::PointStatus>& points) {
 }  // namespace
 
 int study_status_command(const StudyStatusArgs& args) {
-  try {
+  return run_reporting_errors([&] {
     auto store = open_study_store(args.db);
     print_status(store->status());
     return exit_code::completed;
-  } catch (const StudyInputError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const db::StoreError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::internal_error;
-  }
+  });
 }
 
 }  // namespace ccm

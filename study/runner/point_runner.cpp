@@ -11,6 +11,7 @@
 
 #include "engine/observe/history.hpp"
 #include "study/grid/point_scene.hpp"
+#include "study/provenance/timestamp.hpp"
 #include "study/runner/content_hash.hpp"
 #include "study/scene/scene_builder.hpp"
 #include "study/scene/scene_file.hpp"
@@ -19,17 +20,6 @@ namespace ccm::study {
 namespace {
 
 using SystemClock = std::chrono::system_clock;
-
-// RFC 3339 UTC with milliseconds (the stamps of `ccm run`'s summary.toml).
-std::string utc_timestamp(SystemClock::time_point t) {
-  const std::time_t secs = SystemClock::to_time_t(t);
-  std::tm tm{};
-  gmtime_r(&secs, &tm);
-  const auto ms =
-      std::chrono::duration_cast<std::chrono::milliseconds>(t.time_since_epoch()).count() % 1000;
-  return fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}.{:03}Z", tm.tm_year + 1900, tm.tm_mon + 1,
-                     tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, ms);
-}
 
 size_t column_index(const HistoryRecorder& history, const std::string& name) {
   const std::vector<std::string>& cols = history.columns();
