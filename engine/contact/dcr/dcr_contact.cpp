@@ -64,7 +64,8 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
                        const std::vector<int>& fixed_nodes)
     : settings_(std::move(settings)),
       features_(make_surface_features(mesh, settings_.surfaces)),
-      restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)) {
+      restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)),
+      projection_update_(mesh, features_.nodes) {
   if (settings_.restitution < 0.0 || settings_.restitution > 1.0)
     throw std::invalid_argument("dcr: restitution must lie in [0, 1]");
   if (settings_.friction < 0.0) throw std::invalid_argument("dcr: friction must be >= 0");
@@ -83,6 +84,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   proximity_ = settings_.proximity * min_edge_;
   v_end_.assign(mesh.X.size(), Vec3::Zero());
   count_.assign(mesh.X.size(), 0);
+  touched_.assign(mesh.X.size(), 0);
 }
 
 std::string DcrContact::failure() const {
@@ -153,14 +155,61 @@ bool DcrContact::bodies_may_touch(const State& s) const {
 
 void DcrContact::detect(const State& s) {
   constraints_.clear();
+  candidate_is_constraint_.clear();
   if (!bodies_may_touch(s)) return;
   broad_phase_.find(features_, x_n_, s.x, proximity_, settings_.self_contact, candidates_);
-  for (const NodeFaceCandidate& nf : candidates_.node_face)
+  candidate_is_constraint_.assign(candidates_.node_face.size() + candidates_.edge_edge.size(), 0);
+  for (size_t k = 0; k < candidate_is_constraint_.size(); ++k) try_candidate(s, k);
+}
+
+// Candidate k (node-face pairs first, then edge-edge pairs) becomes a constraint if it is a
+// contact at the current positions; returns whether it did.
+bool DcrContact::try_candidate(const State& s, size_t k) {
+  const size_t n_nf = candidates_.node_face.size();
+  const size_t before = constraints_.size();
+  if (k < n_nf) {
+    const NodeFaceCandidate& nf = candidates_.node_face[k];
     add_node_face(s, features_.nodes[static_cast<size_t>(nf.node)],
                   features_.faces[static_cast<size_t>(nf.face)]);
-  for (const EdgeEdgeCandidate& ee : candidates_.edge_edge)
+  } else {
+    const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
     add_edge_edge(s, features_.edges[static_cast<size_t>(ee.edge_a)],
                   features_.edges[static_cast<size_t>(ee.edge_b)]);
+  }
+  candidate_is_constraint_[k] = constraints_.size() > before ? 1 : 0;
+  return candidate_is_constraint_[k] != 0;
+}
+
+// The projection moves nodes after detection, so it can push a node through a face (or an edge
+// through an edge) that was no contact before: every candidate with a node the projection moved
+// is tested again on [x_n, x~]. Returns how many became constraints.
+int DcrContact::redetect(const State& s) {
+  for (size_t k = 0; k < moved_.size(); ++k)
+    if (s.x[static_cast<size_t>(moved_[k])] != x_start_[k])
+      touched_[static_cast<size_t>(moved_[k])] = 1;
+  auto touched = [&](int a, int b, int c, int d) {
+    return touched_[static_cast<size_t>(a)] || touched_[static_cast<size_t>(b)] ||
+           touched_[static_cast<size_t>(c)] || touched_[static_cast<size_t>(d)];
+  };
+  int added = 0;
+  const size_t n_nf = candidates_.node_face.size();
+  for (size_t k = 0; k < candidate_is_constraint_.size(); ++k) {
+    if (candidate_is_constraint_[k]) continue;
+    bool moved;
+    if (k < n_nf) {
+      const NodeFaceCandidate& nf = candidates_.node_face[k];
+      const Triangle& t = features_.faces[static_cast<size_t>(nf.face)];
+      moved = touched(features_.nodes[static_cast<size_t>(nf.node)], t[0], t[1], t[2]);
+    } else {
+      const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
+      const auto& a = features_.edges[static_cast<size_t>(ee.edge_a)];
+      const auto& b = features_.edges[static_cast<size_t>(ee.edge_b)];
+      moved = touched(a[0], a[1], b[0], b[1]);
+    }
+    if (moved && try_candidate(s, k)) ++added;
+  }
+  for (int n : moved_) touched_[static_cast<size_t>(n)] = 0;
+  return added;
 }
 
 // A node and a face are a contact when the node, arriving from the outward side (g(x_n) >= 0),
@@ -225,12 +274,22 @@ double DcrContact::mobility(const Constraint& c, const std::array<Vec3, 4>& grad
   return W;
 }
 
+// The positions before the projection of the nodes of constraints [first, end) not seen yet.
+void DcrContact::remember_start(const State& s, size_t first) {
+  for (size_t k = first; k < constraints_.size(); ++k)
+    for (int n : constraints_[k].nodes) {
+      const auto i = static_cast<size_t>(n);
+      if (count_[i] != 0) continue;
+      count_[i] = 1;
+      moved_.push_back(n);
+      x_start_.push_back(s.x[i]);
+    }
+  for (int n : moved_) count_[static_cast<size_t>(n)] = 0;
+}
+
 // Mass-weighted projection onto g >= separation * k (contact-method.md 1.2): Newton steps
 // lambda = (target - g) / W, relaxed Jacobi sweeps until every constraint holds.
 void DcrContact::project_positions(State& s) {
-  x_start_.clear();
-  for (const Constraint& c : constraints_)
-    for (int n : c.nodes) x_start_.push_back(s.x[static_cast<size_t>(n)]);
   steps_.assign(constraints_.size(), 0.0);
   grads_.resize(constraints_.size());
   for (int it = 0; it < settings_.max_projection_iterations; ++it) {
@@ -249,21 +308,37 @@ void DcrContact::project_positions(State& s) {
     if (worst <= 1e-3 * separation_) break;
     apply_relaxed(s.x);
   }
-  // Work of the projection against the current forces f = m a (thesis eq. 2.21), each moved
-  // node counted once.
-  size_t k = 0;
-  for (const Constraint& c : constraints_)
-    for (int n : c.nodes) {
-      const auto i = static_cast<size_t>(n);
-      const Vec3& before = x_start_[k++];
-      if (count_[i] != 0) continue;
-      count_[i] = 1;
-      work_ -= s.m_lumped[i] * s.a[i].dot(s.x[i] - before);
+}
+
+// Projection, re-detection of what it pushed through, projection again, ... (at most
+// kDetectionRounds rounds); then the forces and stored energy of the elements around the moved
+// nodes are brought to the new positions (projection_update.hpp) and the residual is measured.
+void DcrContact::enforce_positions(State& s, double dt) {
+  moved_.clear();
+  x_start_.clear();
+  remember_start(s, 0);
+  for (int round = 1;; ++round) {
+    project_positions(s);
+    if (round == kDetectionRounds) break;
+    const size_t first_new = constraints_.size();
+    if (redetect(s) == 0) break;
+    remember_start(s, first_new);
+  }
+  size_t kept = 0;  // the constraint nodes that actually moved
+  for (size_t k = 0; k < moved_.size(); ++k)
+    if (s.x[static_cast<size_t>(moved_[k])] != x_start_[k]) {
+      moved_[kept] = moved_[k];
+      x_start_[kept++] = x_start_[k];
     }
+  moved_.resize(kept);
+  x_start_.resize(kept);
+  if (kept > 0) {
+    projection_work_ = projection_update_.apply(moved_, x_start_, s, inv_m_, dt);
+    work_ += projection_work_;
+  }
   residual_ = 0.0;
   Vec3 grad[4];
   for (const Constraint& c : constraints_) {
-    for (int n : c.nodes) count_[static_cast<size_t>(n)] = 0;
     const double scale = constraint_gradient(c, s.x, grad);
     residual_ = std::max(residual_, -constraint_value(c, s.x) / scale);
   }
@@ -271,14 +346,14 @@ void DcrContact::project_positions(State& s) {
 
 void DcrContact::correct(State& s, double dt) {
   detect(s);
-  last_impulse_ = 0.0;
+  last_impulse_ = projection_work_ = 0.0;
   active_ = sweeps_ = 0;
   pair_impulses_.clear();
   near_.clear();
   if (constraints_.empty()) {
     residual_ = 0.0;
   } else {
-    project_positions(s);
+    enforce_positions(s, dt);
     exchange_momentum(s, dt);
     collect_pair_impulses(s.x);
   }

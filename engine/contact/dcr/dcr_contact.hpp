@@ -11,7 +11,8 @@
 //   2. impenetrability: a mass-weighted projection along grad g onto g >= g_sep (linear and
 //      angular momentum conserved exactly, contact-method.md 1.2), iterated Jacobi-style with
 //      per-node averaging until every constraint holds, so the result does not depend on the
-//      order of contacts;
+//      order of contacts; then the forces of the elements around the moved nodes are
+//      re-evaluated and the stored energy they gained is booked (projection_update.hpp);
 //   3. momentum decomposition (contact_impulses.hpp): on the end-of-step velocity v* + dt/2 a,
 //      each contact may approach at most by its remaining gap in the next step
 //      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, contact-method.md 1.5),
@@ -30,6 +31,7 @@
 #include "engine/contact/dcr/contact_impulses.hpp"
 #include "engine/contact/dcr/contact_surface.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
+#include "engine/contact/dcr/projection_update.hpp"
 #include "engine/observe/history.hpp"
 
 namespace ccm::dcr {
@@ -65,11 +67,16 @@ class DcrContact : public ContactModel, public HistorySource {
   void begin_step(const State& state, double dt) override;
   void correct(State& state, double dt) override;
   double stable_dt_limit(const State& state) const override;
-  double work() const override { return work_; }
+  // Work on the bodies so far, but for this step's projection: the integrator measured the
+  // stored energy before the contact moved any node, so this step's projection energy enters
+  // its balance with the next evaluation (the history column contact.work has it all).
+  double work() const override { return work_ - projection_work_; }
   // Non-empty when the projection left a penetration deeper than kFailurePenetration times the
   // shortest surface edge (the iterations did not converge: the contact no longer holds).
   std::string failure() const override;
   static constexpr double kFailurePenetration = 1e-3;
+  // Rounds of projection and re-detection of what the projection pushed through.
+  static constexpr int kDetectionRounds = 4;
 
   std::vector<std::string> history_columns() const override;
   void append_history(const State& s, std::vector<double>& row) const override;
@@ -86,6 +93,10 @@ class DcrContact : public ContactModel, public HistorySource {
 
  private:
   void detect(const State& s);
+  bool try_candidate(const State& s, size_t k);
+  int redetect(const State& s);
+  void remember_start(const State& s, size_t first);
+  void enforce_positions(State& s, double dt);
   void add_node_face(const State& s, int p, const Triangle& t);
   void add_edge_edge(const State& s, const std::array<int, 2>& ea, const std::array<int, 2>& eb);
   bool bodies_may_touch(const State& s) const;
@@ -103,24 +114,29 @@ class DcrContact : public ContactModel, public HistorySource {
   SurfaceFeatures features_;
   BroadPhase broad_phase_;
   Candidates candidates_;
-  std::vector<double> inv_m_;   // 1/m of every node; 0 for fixed nodes
-  std::vector<int> node_body_;  // body of every node
-  std::vector<Vec3> x_n_;       // positions at the start of the step
-  double min_edge_ = 0.0;       // shortest surface edge in the reference configuration
-  double separation_ = 0.0;     // distance kept between a node and a face after projection
-  double proximity_ = 0.0;      // distance within which a node-face contact persists
+  std::vector<char> candidate_is_constraint_;  // per candidate (node-face, then edge-edge)
+  std::vector<double> inv_m_;                  // 1/m of every node; 0 for fixed nodes
+  std::vector<int> node_body_;                 // body of every node
+  std::vector<Vec3> x_n_;                      // positions at the start of the step
+  double min_edge_ = 0.0;    // shortest surface edge in the reference configuration
+  double separation_ = 0.0;  // distance kept between a node and a face after projection
+  double proximity_ = 0.0;   // distance within which a node-face contact persists
   std::vector<Constraint> constraints_;
   std::vector<ContactRow> rows_;
   ContactImpulses impulses_;
   PairRestitution restitution_;
+  ProjectionUpdate projection_update_;
   std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
   std::vector<std::pair<int, int>> near_;   // scratch: body pairs holding contacts
   std::vector<int> count_;                  // scratch: constraints per node in a sweep
   std::vector<double> steps_;               // scratch: proposed multiplier step per constraint
   std::vector<std::array<Vec3, 4>> grads_;  // scratch: grad g per constraint
   std::vector<Vec3> x_start_, v_before_;    // scratch: state before the correction
+  std::vector<int> moved_;                  // scratch: nodes of the constraints of the step
+  std::vector<char> touched_;               // scratch: per node, moved by the projection
   std::vector<Vec3> v_end_;                 // scratch: end-of-step velocities of constrained nodes
   double work_ = 0.0;
+  double projection_work_ = 0.0;  // dQ of this step's projection (included in work_)
   double residual_ = 0.0;
   double last_impulse_ = 0.0;  // total normal impulse of the last step [N s]
   int active_ = 0;

@@ -1,0 +1,112 @@
+#include "engine/contact/dcr/projection_update.hpp"
+
+#include <stdexcept>
+
+#include "engine/material/linear_elastic.hpp"
+#include "engine/material/neo_hookean.hpp"
+
+namespace ccm::dcr {
+namespace {
+
+// W(F) and P(F) of the body's material (eq. 2.1; eq. 2.2-2.3).
+double energy_density(MaterialModel model, const Mat3& F, const Lame& lame) {
+  switch (model) {
+    case MaterialModel::neo_hookean:
+      return neo_hookean::strain_energy_density(F, lame);
+    case MaterialModel::linear_elastic:
+      return linear_elastic::strain_energy_density(F, lame);
+  }
+  throw std::logic_error("projection update: unknown material model");
+}
+
+Mat3 first_piola(MaterialModel model, const Mat3& F, const Lame& lame) {
+  switch (model) {
+    case MaterialModel::neo_hookean: {
+      const double J = F.determinant();
+      return neo_hookean::first_piola(F, J * F.inverse().transpose(), J, lame);
+    }
+    case MaterialModel::linear_elastic:
+      return linear_elastic::stress(F, lame);  // P = sigma at small strain
+  }
+  throw std::logic_error("projection update: unknown material model");
+}
+
+}  // namespace
+
+ProjectionUpdate::ProjectionUpdate(const ModelMesh& mesh, std::span<const int> movable) {
+  const auto n_nodes = static_cast<size_t>(mesh.n_nodes());
+  std::vector<bool> is_movable(n_nodes, false);
+  for (int n : movable) is_movable[static_cast<size_t>(n)] = true;
+  std::vector<int> count(n_nodes, 0);
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    const Tet& t = mesh.tets[static_cast<size_t>(e)];
+    bool touches = false;
+    for (int n : t) touches = touches || is_movable[static_cast<size_t>(n)];
+    if (!touches) continue;
+    const auto& X = mesh.X;
+    const auto reference = make_tet_reference(X[t[0]], X[t[1]], X[t[2]], X[t[3]]);
+    if (!reference) throw std::invalid_argument("projection update: degenerate reference tet");
+    const MaterialParams& m =
+        mesh.bodies[static_cast<size_t>(mesh.element_body[static_cast<size_t>(e)])].material;
+    elements_.push_back({t, *reference, m.model, lame_from(m)});
+    for (int n : t)
+      if (is_movable[static_cast<size_t>(n)]) ++count[static_cast<size_t>(n)];
+  }
+  first_.assign(n_nodes + 1, 0);
+  for (size_t i = 0; i < n_nodes; ++i) first_[i + 1] = first_[i] + count[i];
+  adjacent_.resize(static_cast<size_t>(first_[n_nodes]));
+  std::vector<int> next(first_.begin(), first_.end() - 1);
+  for (size_t k = 0; k < elements_.size(); ++k)
+    for (int n : elements_[k].nodes)
+      if (is_movable[static_cast<size_t>(n)])
+        adjacent_[static_cast<size_t>(next[static_cast<size_t>(n)]++)] = static_cast<int>(k);
+  stamp_.assign(elements_.size(), -1);
+  before_index_.assign(n_nodes, -1);
+}
+
+// F = Ds Dm^-1; f_a = -V0 P grad N_a: columns of -V0 P Dm^-T for a = 1..3, f_0 = -(f_1+f_2+f_3).
+double ProjectionUpdate::evaluate(const Element& e, const Vec3 (&x)[4], double sign,
+                                  Vec3 (&f)[4]) const {
+  const Mat3 F = edge_matrix(x[0], x[1], x[2], x[3]) * e.reference.Dm_inv;
+  const Mat3 H = -e.reference.V0 * first_piola(e.model, F, e.lame) * e.reference.Dm_inv.transpose();
+  for (int a = 1; a < 4; ++a) {
+    f[a] += sign * H.col(a - 1);
+    f[0] -= sign * H.col(a - 1);
+  }
+  return e.reference.V0 * energy_density(e.model, F, e.lame);
+}
+
+double ProjectionUpdate::apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
+                               std::span<const double> inv_m, double dt) {
+  const std::vector<Vec3>& x = s.x;
+  ++epoch_;
+  for (size_t k = 0; k < moved.size(); ++k)
+    before_index_[static_cast<size_t>(moved[k])] = static_cast<int>(k);
+  double dE = 0.0;
+  for (int n : moved)
+    for (int j = first_[static_cast<size_t>(n)]; j < first_[static_cast<size_t>(n) + 1]; ++j) {
+      const auto k = static_cast<size_t>(adjacent_[static_cast<size_t>(j)]);
+      if (stamp_[k] == epoch_) continue;
+      stamp_[k] = epoch_;
+      const Element& e = elements_[k];
+      Vec3 x_new[4], x_old[4], df[4];
+      for (int c = 0; c < 4; ++c) {
+        const auto i = static_cast<size_t>(e.nodes[c]);
+        x_new[c] = x[i];
+        const int b = before_index_[i];
+        x_old[c] = b >= 0 ? before[static_cast<size_t>(b)] : x[i];
+        df[c].setZero();
+      }
+      dE += evaluate(e, x_new, 1.0, df) - evaluate(e, x_old, -1.0, df);
+      for (int c = 0; c < 4; ++c) {
+        const auto i = static_cast<size_t>(e.nodes[c]);
+        if (inv_m[i] == 0.0) continue;  // fixed: the boundary condition keeps it at rest
+        s.a[i] += inv_m[i] * df[c];
+        dE += 0.5 * dt * s.v[i].dot(df[c]);
+      }
+    }
+  for (int n : moved) before_index_[static_cast<size_t>(n)] = -1;
+  return dE;
+}
+
+}  // namespace ccm::dcr

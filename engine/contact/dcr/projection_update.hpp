@@ -1,0 +1,59 @@
+// What a position projection changes in the elements around the moved nodes: the stored energy
+// (thesis eq. 2.21, made exact) and the nodal forces, so the step goes on from a consistent
+// state.
+//
+// The DCR projection moves contact nodes from x to x~ after the internal forces were evaluated
+// at x. Left alone, the velocity correction v_{n+1} = v* + dt/2 a and the next predictor would
+// use forces of a configuration the body is no longer in, and the energy the projection puts in
+// would be known only to first order, (f_int - f_ex) . (x - x~) (eq. 2.21), which is wrong where
+// the moved node belongs to a stiff body: its 1/2 dx^T K dx dominates (a sphere 1e6 times
+// stiffer than what it hits is locally deformed by the mass-weighted push-back). So, over the
+// elements e around the moved nodes,
+//   dQ = sum_e V0_e [W(F_e(x~)) - W(F_e(x))],    df_i = sum_e [f_e,i(x~) - f_e,i(x)],
+// with f_e,a = -V0 P(F_e) grad N_a (eq. 2.1 / 2.3), the same element force as the kernel's, and
+// a_i += df_i / m_i. The energy the step then carries changes by
+//   dE = dQ + dt/2 sum_i v*_i . df_i,
+// the second term being the change of the leapfrog kinetic energy 1/2 m (v_{n+1}^2 - dt^2/4 a^2)
+// = 1/2 m v* . (v* + dt a) that the monitor measures (v_{n+1} = v* + dt/2 a).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/element/tet4.hpp"
+#include "engine/material/material.hpp"
+#include "engine/mesh/model_mesh.hpp"
+#include "engine/solver/state.hpp"
+
+namespace ccm::dcr {
+
+class ProjectionUpdate {
+ public:
+  // Only the elements around `movable` nodes (the contact surfaces) are prepared.
+  ProjectionUpdate(const ModelMesh& mesh, std::span<const int> movable);
+
+  // The nodes `moved` (unique) went from `before` (same order) to their positions in s.x: adds
+  // the force change divided by the node's mass into s.a (inv_m: 1/m, 0 for fixed nodes) and
+  // returns dE [J] for the step dt.
+  double apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
+               std::span<const double> inv_m, double dt);
+
+ private:
+  struct Element {
+    Tet nodes;
+    TetReference reference;
+    MaterialModel model;
+    Lame lame;
+  };
+  // V0 W(F) of e, and its nodal forces added into f[4] with the given sign.
+  double evaluate(const Element& e, const Vec3 (&x)[4], double sign, Vec3 (&f)[4]) const;
+
+  std::vector<int> first_, adjacent_;  // CSR: prepared elements around each node
+  std::vector<Element> elements_;
+  std::vector<int> stamp_;         // per prepared element: the last apply() that counted it
+  std::vector<int> before_index_;  // per node: its index in `before` during apply(), else -1
+  int epoch_ = 0;
+};
+
+}  // namespace ccm::dcr
