@@ -35,6 +35,12 @@ class ContactModel {
   }
   // Work done on the deformable bodies by the contact so far [J], for the energy balance.
   virtual double work() const { return 0.0; }
+  // The part of work() the model's physics does not allow [J], >= 0: a model whose contacts can
+  // only dissipate (all bodies in the model, inelastic or elastic constraints) reports its net
+  // positive work, energy its push-back injected. The monitor ends a run when it exceeds the
+  // energy tolerance. A model that exchanges energy with something outside the model (a rigid
+  // sphere's kinetic energy) reports 0.
+  virtual double injected_energy() const { return 0.0; }
   // Non-empty when the contact has failed in the last step (the reason, for the verdict): the
   // run must then end unstable. Checked by the integrator after every step.
   virtual std::string failure() const { return {}; }

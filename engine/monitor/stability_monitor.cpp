@@ -55,6 +55,16 @@ std::optional<Instability> check_energy(double relative_error, double tolerance,
                      -1, -1};
 }
 
+std::optional<Instability> check_contact_energy(std::string_view model, double injected,
+                                                double scale, double tolerance, double t) {
+  if (injected <= tolerance * scale) return std::nullopt;  // a NaN fails this test too
+  return Instability{t,
+                     fmt::format("contact ({}) put {:.4g} J into the bodies, {:.3g} % of the "
+                                 "energy scale {:.4g} J (its contacts can only dissipate)",
+                                 model, injected, 100.0 * injected / scale, scale),
+                     -1, -1};
+}
+
 std::optional<Instability> check_time_step(double dt, double dt_initial, double ratio, double t) {
   if (std::isfinite(dt) && dt >= ratio * dt_initial) return std::nullopt;
   return Instability{

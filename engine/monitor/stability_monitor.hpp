@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "engine/element/internal_force.hpp"
 #include "engine/solver/state.hpp"
@@ -33,6 +34,7 @@ class EnergyBalance {
   // Returns the relative error after this update.
   double update(double kinetic, double internal, double external_work);
   double max_relative_error() const { return max_error_; }
+  double scale() const { return scale_; }  // the largest energy seen (or the floor) [J]
   double last_relative_error() const { return last_error_; }
 
  private:
@@ -51,6 +53,9 @@ double leapfrog_kinetic_energy(const State& s, double dt);
 std::optional<Instability> check_elements(const InternalForceResult& r, double t);
 std::optional<Instability> check_finite(const State& s);
 std::optional<Instability> check_energy(double relative_error, double tolerance, double t);
+// A contact model's injected energy (ContactModel::injected_energy) beyond tolerance x scale.
+std::optional<Instability> check_contact_energy(std::string_view model, double injected,
+                                                double scale, double tolerance, double t);
 std::optional<Instability> check_time_step(double dt, double dt_initial, double ratio, double t);
 
 }  // namespace ccm

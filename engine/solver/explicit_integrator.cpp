@@ -203,7 +203,10 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   const double err =
       energy_.update(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
-  return check_energy(err, opt_.monitor.energy_tolerance, s_.t);
+  if (auto bad = check_energy(err, opt_.monitor.energy_tolerance, s_.t)) return bad;
+  if (!opt_.contact) return std::nullopt;
+  return check_contact_energy(opt_.contact->name(), opt_.contact->injected_energy(),
+                              energy_.scale(), opt_.monitor.energy_tolerance, s_.t);
 }
 
 void CentralDifference::report_progress(double dt, Clock::time_point start, double& last_report) {

@@ -9,12 +9,12 @@
 //               contact points (beta_a: the contact-point weights, sum_a beta_a = 0), driven to 0
 //               by lambda_t (2 components) inside the Coulomb disc |lambda_t| <= mu S lambda_n
 //               (S lambda_n is the normal impulse in N s).
-// Sweeps are projected Jacobi: every row proposes its update from the same velocities, so the
-// result does not depend on the order of the contacts; each proposal is divided by the largest
-// number of proposing contacts at any of its nodes (so shared nodes are not over-corrected) and
-// applied to all four nodes. Every update is along a direction whose mass-weighted sum vanishes,
-// so linear momentum is exact; friction opposes the tangential velocity it acts on, so it only
-// dissipates.
+// Sweeps are projected symmetric Gauss-Seidel: the rows are visited in a given order (the
+// caller's, fixed by the geometry so that the result does not depend on node numbering or search
+// order), forward then backward; each row's update is computed from the current velocities and
+// applied at once to its four nodes. Every update is along a direction whose mass-weighted sum
+// vanishes, so linear momentum is exact; friction opposes the tangential velocity it acts on,
+// so it only dissipates.
 #pragma once
 
 #include <array>
@@ -38,25 +38,18 @@ struct ContactRow {
 
 struct ImpulseSettings {
   double friction = 0.0;     // Coulomb mu
-  int max_iterations = 100;  // Jacobi sweeps
+  int max_iterations = 100;  // Gauss-Seidel sweeps
   double tolerance = 1e-9;   // stop when no row changes a velocity by more than this x v_ref
 };
 
 class ContactImpulses {
  public:
-  // Solves the rows against the velocities v (indexed by global node id; only the rows' nodes
-  // are read and written) and returns the number of sweeps made.
-  int solve(std::vector<ContactRow>& rows, const std::vector<double>& inv_m, std::vector<Vec3>& v,
+  // Solves the rows, visited in `order` (a permutation of their indices), against the
+  // velocities v (indexed by global node id; only the rows' nodes are read and written) and
+  // returns the number of sweeps made.
+  int solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
+            const std::vector<double>& inv_m, std::vector<Vec3>& v,
             const ImpulseSettings& settings);
-
- private:
-  // One row's proposed multiplier changes; returns the largest velocity change they cause.
-  double propose(ContactRow& r, const std::vector<Vec3>& v, double mu, size_t k);
-  void apply(const std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
-             std::vector<Vec3>& v);
-
-  std::vector<std::array<double, 3>> step_;  // proposed (d lambda_n, d lambda_t1, d lambda_t2)
-  std::vector<int> count_;                   // proposing rows per node (scratch, all zero)
 };
 
 }  // namespace ccm::dcr

@@ -19,7 +19,7 @@ constexpr double kInclusionTolerance = 1e-6;
 
 // Velocity solve converged when no contact changes a velocity by more than this x the fastest
 // contact node.
-constexpr double kVelocityTolerance = 1e-9;
+constexpr double kVelocityTolerance = 1e-6;
 
 // Tolerance of the "projection inside the face" test of a persistent contact (barycentric).
 constexpr double kPersistentTolerance = 1e-6;
@@ -82,6 +82,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   separation_ = 1e-4 * min_edge_;
   // Persistent contacts: far below an element, far above the kept separation.
   proximity_ = settings_.proximity * min_edge_;
+  X_ = mesh.X;
   v_end_.assign(mesh.X.size(), Vec3::Zero());
   count_.assign(mesh.X.size(), 0);
   touched_.assign(mesh.X.size(), 0);
@@ -244,28 +245,33 @@ void DcrContact::add_edge_edge(const State& s, const std::array<int, 2>& ea,
   constraints_.push_back({{ea[0], ea[1], eb[0], eb[1]}, false, g0 >= 0.0 ? 1.0 : -1.0, false});
 }
 
-// Relaxed Jacobi: every constraint proposes a multiplier step along M^-1 grad g from the same
-// state (so the order of the constraints does not matter); the step is scaled by 1 / (the
-// largest number of proposing constraints at any of its nodes), so shared nodes are not
-// over-corrected, and then applied whole to all four nodes, so that sum m dv = step * sum grad g
-// = 0 and linear and angular momentum are conserved exactly (contact-method.md 1.2).
-void DcrContact::apply_relaxed(std::vector<Vec3>& target) {
-  for (size_t k = 0; k < constraints_.size(); ++k)
-    if (steps_[k] != 0.0)
-      for (int n : constraints_[k].nodes) ++count_[static_cast<size_t>(n)];
+// The order in which the solves visit the constraints: by a key from the reference positions
+// of the constraint's features (node-face: the node, then the face's centroid; edge-edge: the
+// two midpoints), so that it depends on the geometry only, never on the node numbering or on
+// the order in which the search found the pairs (the thesis's DCR depended on both, 2.4.2).
+void DcrContact::order_constraints() {
+  keys_.resize(constraints_.size());
   for (size_t k = 0; k < constraints_.size(); ++k) {
-    if (steps_[k] == 0.0) continue;
     const Constraint& c = constraints_[k];
-    int shared = 1;
-    for (int n : c.nodes) shared = std::max(shared, count_[static_cast<size_t>(n)]);
-    steps_[k] /= shared;
-    for (int a = 0; a < 4; ++a) {
-      const auto n = static_cast<size_t>(c.nodes[a]);
-      target[n] += steps_[k] * inv_m_[n] * grads_[k][a];
+    auto X = [&](int j) { return X_[static_cast<size_t>(c.nodes[j])]; };
+    ConstraintKey& key = keys_[k];
+    if (c.node_face) {
+      std::array<Vec3, 3> face{X(1), X(2), X(3)};  // summed in a canonical order
+      std::sort(face.begin(), face.end(), [](const Vec3& p, const Vec3& q) {
+        return std::tie(p.x(), p.y(), p.z()) < std::tie(q.x(), q.y(), q.z());
+      });
+      const Vec3 centroid = (face[0] + face[1] + face[2]) / 3.0;
+      key = {X(0).x(), X(0).y(), X(0).z(), centroid.x(), centroid.y(), centroid.z(), 0.0};
+    } else {
+      const Vec3 ma = 0.5 * (X(0) + X(1)), mb = 0.5 * (X(2) + X(3));
+      key = {ma.x(), ma.y(), ma.z(), mb.x(), mb.y(), mb.z(), 1.0};
     }
   }
-  for (const Constraint& c : constraints_)
-    for (int n : c.nodes) count_[static_cast<size_t>(n)] = 0;
+  order_.resize(constraints_.size());
+  for (size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<int>(k);
+  std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+    return keys_[static_cast<size_t>(a)] < keys_[static_cast<size_t>(b)];
+  });
 }
 
 double DcrContact::mobility(const Constraint& c, const std::array<Vec3, 4>& grad) const {
@@ -288,25 +294,35 @@ void DcrContact::remember_start(const State& s, size_t first) {
 }
 
 // Mass-weighted projection onto g >= separation * k (contact-method.md 1.2): Newton steps
-// lambda = (target - g) / W, relaxed Jacobi sweeps until every constraint holds.
+// lambda = (target - g) / W along M^-1 grad g, one constraint after the other in the geometric
+// order, forward then backward (symmetric Gauss-Seidel), until every constraint holds. Each
+// step moves the four nodes by amounts whose mass-weighted sum and moment vanish, so linear
+// and angular momentum are conserved exactly.
 void DcrContact::project_positions(State& s) {
-  steps_.assign(constraints_.size(), 0.0);
-  grads_.resize(constraints_.size());
-  for (int it = 0; it < settings_.max_projection_iterations; ++it) {
+  order_constraints();
+  Vec3 grad[4];
+  for (int sweep = 0; sweep < settings_.max_projection_iterations; ++sweep) {
     double worst = 0.0;
-    for (size_t k = 0; k < constraints_.size(); ++k) {
-      Constraint& c = constraints_[k];
-      steps_[k] = 0.0;
-      const double scale = constraint_gradient(c, s.x, grads_[k].data());
+    const bool forward = sweep % 2 == 0;
+    for (size_t j = 0; j < order_.size(); ++j) {
+      Constraint& c =
+          constraints_[static_cast<size_t>(order_[forward ? j : order_.size() - 1 - j])];
+      const double scale = constraint_gradient(c, s.x, grad);
       const double gap = separation_ * scale - constraint_value(c, s.x);
-      const double W = mobility(c, grads_[k]);
-      if (gap <= 0.0 || !(W > 0.0)) continue;
+      if (gap <= 0.0) continue;
+      double W = 0.0;
+      for (int a = 0; a < 4; ++a)
+        W += grad[a].squaredNorm() * inv_m_[static_cast<size_t>(c.nodes[a])];
+      if (!(W > 0.0)) continue;
       worst = std::max(worst, gap / scale);
-      steps_[k] = gap / W;
+      const double lambda = gap / W;
+      for (int a = 0; a < 4; ++a) {
+        const auto n = static_cast<size_t>(c.nodes[a]);
+        s.x[n] += lambda * inv_m_[n] * grad[a];
+      }
       c.projected = true;
     }
     if (worst <= 1e-3 * separation_) break;
-    apply_relaxed(s.x);
   }
 }
 
@@ -406,7 +422,7 @@ void DcrContact::exchange_momentum(State& s, double dt) {
   std::sort(near_.begin(), near_.end());
   near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
   restitution_.before_solve(near_, s, dt);
-  sweeps_ = impulses_.solve(rows_, inv_m_, v_end,
+  sweeps_ = impulses_.solve(rows_, order_, inv_m_, v_end,
                             {settings_.friction, settings_.max_iterations, kVelocityTolerance});
 
   size_t k = 0;

@@ -9,9 +9,9 @@
 //      the face. Each contact is a constraint g(x) >= 0, g the signed volume of the node and
 //      face (or the two edges), oriented so that the start of the step is admissible;
 //   2. impenetrability: a mass-weighted projection along grad g onto g >= g_sep (linear and
-//      angular momentum conserved exactly, contact-method.md 1.2), iterated Jacobi-style with
-//      per-node averaging until every constraint holds, so the result does not depend on the
-//      order of contacts; then the forces of the elements around the moved nodes are
+//      angular momentum conserved exactly, contact-method.md 1.2), symmetric Gauss-Seidel
+//      sweeps in an order fixed by the geometry (never by node numbers or search order) until
+//      every constraint holds; then the forces of the elements around the moved nodes are
 //      re-evaluated and the stored energy they gained is booked (projection_update.hpp);
 //   3. momentum decomposition (contact_impulses.hpp): on the end-of-step velocity v* + dt/2 a,
 //      each contact may approach at most by its remaining gap in the next step
@@ -22,6 +22,7 @@
 // The velocity change is applied to v* so that v_{n+1} = v* + dt/2 a_{n+1} satisfies it.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,10 +42,8 @@ struct DcrSettings {
   bool self_contact = false;          // contacts within one body too (adjacent pairs excluded)
   double restitution = 0.0;           // e in [0, 1], per pair of bodies (pair_restitution.hpp)
   double friction = 0.0;              // Coulomb mu >= 0
-  int max_iterations = 100;           // Jacobi sweeps of the velocity solve
-  // Jacobi sweeps of the position projection: persistent contacts share nodes with the crossing
-  // ones, so the relaxed sweeps need more of them (scenes/stress/fast_impact: 100 left 3.9e-6 m,
-  // 2.6x the failure tolerance, at the first contact at 186 m/s; 400 converge).
+  int max_iterations = 100;           // Gauss-Seidel sweeps of the velocity solve
+  // Gauss-Seidel sweeps of the position projection (per round of re-detection).
   int max_projection_iterations = 400;
   double step_fraction = 0.5;  // dt limit: relative motion per step <= this x min edge
   double proximity = 0.1;      // persistent contacts: gap <= this x min edge
@@ -71,6 +70,9 @@ class DcrContact : public ContactModel, public HistorySource {
   // stored energy before the contact moved any node, so this step's projection energy enters
   // its balance with the next evaluation (the history column contact.work has it all).
   double work() const override { return work_ - projection_work_; }
+  // Every DCR contact is between bodies of the model and can only dissipate (inelastic
+  // constraints, dissipative restitution and friction): net positive work is injected.
+  double injected_energy() const override { return std::max(0.0, work()); }
   // Non-empty when the projection left a penetration deeper than kFailurePenetration times the
   // shortest surface edge (the iterations did not converge: the contact no longer holds).
   std::string failure() const override;
@@ -104,7 +106,7 @@ class DcrContact : public ContactModel, public HistorySource {
   void exchange_momentum(State& s, double dt);
   ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const;
   void collect_pair_impulses(const std::vector<Vec3>& x);
-  void apply_relaxed(std::vector<Vec3>& target);
+  void order_constraints();
   double mobility(const Constraint& c, const std::array<Vec3, 4>& grad) const;
   double constraint_value(const Constraint& c, const std::vector<Vec3>& x) const;
   double constraint_gradient(const Constraint& c, const std::vector<Vec3>& x, Vec3 grad[4]) const;
@@ -128,13 +130,15 @@ class DcrContact : public ContactModel, public HistorySource {
   ProjectionUpdate projection_update_;
   std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
   std::vector<std::pair<int, int>> near_;   // scratch: body pairs holding contacts
-  std::vector<int> count_;                  // scratch: constraints per node in a sweep
-  std::vector<double> steps_;               // scratch: proposed multiplier step per constraint
-  std::vector<std::array<Vec3, 4>> grads_;  // scratch: grad g per constraint
-  std::vector<Vec3> x_start_, v_before_;    // scratch: state before the correction
-  std::vector<int> moved_;                  // scratch: nodes of the constraints of the step
-  std::vector<char> touched_;               // scratch: per node, moved by the projection
-  std::vector<Vec3> v_end_;                 // scratch: end-of-step velocities of constrained nodes
+  std::vector<int> count_;                  // scratch: per-node marks (all zero between uses)
+  using ConstraintKey = std::array<double, 7>;
+  std::vector<ConstraintKey> keys_;       // scratch: geometric key per constraint
+  std::vector<int> order_;                // the constraints in the order of their keys
+  std::vector<Vec3> X_;                   // reference positions
+  std::vector<Vec3> x_start_, v_before_;  // scratch: state before the correction
+  std::vector<int> moved_;                // scratch: nodes of the constraints of the step
+  std::vector<char> touched_;             // scratch: per node, moved by the projection
+  std::vector<Vec3> v_end_;               // scratch: end-of-step velocities of constrained nodes
   double work_ = 0.0;
   double projection_work_ = 0.0;  // dQ of this step's projection (included in work_)
   double residual_ = 0.0;
