@@ -119,7 +119,9 @@ Model sphere_on_plate(int level) {
 }
 
 Result run(const Model& model, double end_time) {
-  dcr::DcrContact dcr(model.mesh, {{"plate/boundary", "ball/boundary"}}, model.bcs.fixed_nodes);
+  dcr::DcrSettings settings;
+  settings.surfaces = {"plate/boundary", "ball/boundary"};
+  dcr::DcrContact dcr(model.mesh, settings, model.bcs.fixed_nodes);
   TimedContact timed(dcr);
   RunOptions opt;
   opt.contact = &timed;

@@ -146,15 +146,17 @@ struct ContactSpec {
   std::string body;                    // the deformable body
   std::optional<std::string> surface;  // default "<body>/boundary"
   double penalty = 1e6;                // K_P [N/m] per quadrature point (thesis 2.8)
-  std::optional<Vec3> force_axis;      // default: the sphere's initial velocity direction
+  std::optional<Vec3> force_axis;      // rigid_penalty: default the sphere's initial velocity
+                                       // direction; dcr: pair forces are output along it
   RigidSphereSpec sphere;
   // dcr:
   std::vector<std::string> surfaces;  // as given; a name without '/' means "<name>/boundary"
   bool self_contact = false;
-  double restitution = 0.0;  // e in [0, 1]
-  double friction = 0.0;     // Coulomb mu >= 0
-  SourceRef where;           // the [contact] table
-  SourceRef sphere_where;    // [contact.sphere]
+  double restitution = 0.0;          // e in [0, 1]
+  double friction = 0.0;             // Coulomb mu >= 0
+  std::vector<std::string> sensors;  // output: named surfaces whose pressure is reported (eq. 3.8)
+  SourceRef where;                   // the [contact] table
+  SourceRef sphere_where;            // [contact.sphere]
 };
 
 struct Scene {

@@ -207,6 +207,13 @@ ContactSetup build_dcr(const Scene& scene, const Model& model) {
   settings.self_contact = c.self_contact;
   settings.restitution = c.restitution;
   settings.friction = c.friction;
+  settings.output.force_axis = c.force_axis;
+  for (const std::string& name : c.sensors) {
+    if (!mesh.surfaces.contains(name))
+      fail(scene, c.where, "sensors",
+           fmt::format("no surface named '{}' (surfaces: {})", name, known_names(mesh.surfaces)));
+    settings.output.sensors.push_back(name);
+  }
   std::unique_ptr<dcr::DcrContact> dcr;
   try {
     dcr = std::make_unique<dcr::DcrContact>(mesh, settings, model.bcs.fixed_nodes);

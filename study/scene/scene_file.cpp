@@ -591,30 +591,40 @@ RigidSphereSpec parse_sphere(const Table& t, const Scene& scene) {
 }
 
 // model = "dcr": the surfaces are checked against the meshes by the builder.
-void parse_dcr(const Table& t, ContactSpec& c) {
-  t.allow_only({"model", "surfaces", "self_contact", "restitution", "friction"});
-  c.kind = ContactKind::dcr;
-  const toml::node* n = t.node("surfaces");
-  if (!n) t.fail("surfaces", "required key is missing");
-  const toml::array* a = n->as_array();
-  const std::string path = t.key_path("surfaces");
+// An array of distinct strings (surface names) at key.
+std::vector<std::string> surface_names(const Table& t, const std::string& key) {
+  const toml::node* n = t.node(key);
+  const toml::array* a = n ? n->as_array() : nullptr;
+  const std::string path = t.key_path(key);
   if (!a) t.wrong_type(*n, path, "an array of strings");
-  if (a->empty()) t.fail("surfaces", "needs at least one surface");
+  std::vector<std::string> names;
   for (size_t i = 0; i < a->size(); ++i) {
     const toml::node& e = (*a)[i];
     if (!e.is_string()) t.wrong_type(e, fmt::format("{}[{}]", path, i), "a string");
     std::string name = e.as_string()->get();
-    if (std::find(c.surfaces.begin(), c.surfaces.end(), name) != c.surfaces.end())
+    if (std::find(names.begin(), names.end(), name) != names.end())
       t.fail_at(e, fmt::format("{}[{}]", path, i),
                 fmt::format("surface '{}' is listed twice", name));
-    c.surfaces.push_back(std::move(name));
+    names.push_back(std::move(name));
   }
+  return names;
+}
+
+void parse_dcr(const Table& t, ContactSpec& c) {
+  t.allow_only(
+      {"model", "surfaces", "self_contact", "restitution", "friction", "force_axis", "sensors"});
+  c.kind = ContactKind::dcr;
+  if (!t.node("surfaces")) t.fail("surfaces", "required key is missing");
+  c.surfaces = surface_names(t, "surfaces");
+  if (c.surfaces.empty()) t.fail("surfaces", "needs at least one surface");
   c.self_contact = t.get_or("self_contact", c.self_contact);
   c.restitution = t.get_or("restitution", c.restitution);
   if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
     t.fail("restitution", fmt::format("must lie in [0, 1] (got {})", c.restitution));
   c.friction = t.get_or("friction", c.friction);
   if (!(c.friction >= 0.0)) t.fail("friction", fmt::format("must be >= 0 (got {})", c.friction));
+  if (t.has("force_axis")) c.force_axis = non_zero(t, "force_axis", t.need<Vec3>("force_axis"));
+  if (t.has("sensors")) c.sensors = surface_names(t, "sensors");
   c.where = t.ref();
 }
 

@@ -90,7 +90,7 @@ TEST_CASE("scene [contact]: dcr errors name the file, the line and the key",
         "s.toml:28: contact.friction: must be >= 0 (got -0.1)");
   CHECK(scene_error_of(head + "surfaces = [\"a\"]\nbody = \"a\"\n") ==
         "s.toml:28: contact.body: unknown key 'body' (allowed: model, surfaces, self_contact, "
-        "restitution, friction)");
+        "restitution, friction, force_axis, sensors)");
   CHECK(scene_error_of(head) == "s.toml:25: contact.surfaces: required key is missing");
   CHECK(scene_error_of(head + "surfaces = \"a\"\n") ==
         "s.toml:27: contact.surfaces: expected an array of strings, got a string");
@@ -106,6 +106,28 @@ TEST_CASE("scene [contact]: dcr errors name the file, the line and the key",
         "b/boundary)");
   CHECK(build_error_of(head + "surfaces = [\"a\", \"a/boundary\"]\n") ==
         "s.toml:27: contact.surfaces: surface 'a/boundary' is listed twice");
+  CHECK(scene_error_of(head + "surfaces = [\"a\"]\nforce_axis = [0.0, 0.0, 0.0]\n") ==
+        "s.toml:28: contact.force_axis: must be a non-zero vector");
+  CHECK(build_error_of(head + "surfaces = [\"a\"]\nsensors = [\"a/pad\"]\n") ==
+        "s.toml:28: contact.sensors: no surface named 'a/pad' (surfaces: a/boundary, b/boundary)");
+}
+
+TEST_CASE("scene [contact]: dcr force and pressure output, when asked", "[contact][scene][dcr]") {
+  const Scene scene = parse_scene(kTwoCubes + R"([contact]
+model = "dcr"
+surfaces = ["a", "b"]
+force_axis = [0.0, 0.0, -1.0]
+sensors = ["b/boundary"]
+)",
+                                  "s.toml");
+  REQUIRE(scene.contact.force_axis);
+  CHECK(scene.contact.sensors == std::vector<std::string>{"b/boundary"});
+  const Model model = build_model(scene);
+  const ContactSetup setup = build_contact(scene, model);
+  const std::vector<std::string> cols = setup.history->history_columns();
+  for (const char* c :
+       {"contact.a.b.force", "contact.a.b.force_axis", "contact.b/boundary.pressure"})
+    CHECK(std::find(cols.begin(), cols.end(), c) != cols.end());
 }
 
 TEST_CASE("scene [contact]: the ball_on_plate_dcr example parses and builds",

@@ -30,6 +30,14 @@ double shortest_edge(const SurfaceFeatures& f, const std::vector<Vec3>& X) {
   return h;
 }
 
+// The bodies that own a feature of the contact surfaces, sorted.
+std::vector<int> contact_bodies(const SurfaceFeatures& f) {
+  std::vector<int> bodies(f.node_body.begin(), f.node_body.end());
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  return bodies;
+}
+
 // Whether each body holds a fixed node (anchored bodies get no restitution impulse).
 std::vector<bool> anchored_bodies(const ModelMesh& mesh, const std::vector<int>& fixed_nodes) {
   std::vector<bool> anchored(mesh.bodies.size(), false);
@@ -65,7 +73,8 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
     : settings_(std::move(settings)),
       features_(make_surface_features(mesh, settings_.surfaces)),
       restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)),
-      projection_update_(mesh, features_.nodes) {
+      projection_update_(mesh, features_.nodes),
+      output_(mesh, contact_bodies(features_), settings_.output) {
   if (settings_.restitution < 0.0 || settings_.restitution > 1.0)
     throw std::invalid_argument("dcr: restitution must lie in [0, 1]");
   if (settings_.friction < 0.0) throw std::invalid_argument("dcr: friction must be >= 0");
@@ -361,11 +370,14 @@ void DcrContact::enforce_positions(State& s, double dt) {
 }
 
 void DcrContact::correct(State& s, double dt) {
+  const bool report = output_.wants_anything();
+  if (report) output_.begin(s);
   detect(s);
   last_impulse_ = projection_work_ = 0.0;
   active_ = sweeps_ = 0;
   pair_impulses_.clear();
   near_.clear();
+  rows_.clear();
   if (constraints_.empty()) {
     residual_ = 0.0;
   } else {
@@ -374,6 +386,10 @@ void DcrContact::correct(State& s, double dt) {
     collect_pair_impulses(s.x);
   }
   work_ += restitution_.after_solve(pair_impulses_, near_, s, dt);
+  if (report) {
+    output_.add_impulses(rows_, restitution_.last_corrections(), node_body_);
+    output_.finish(s, dt);
+  }
 }
 
 // The velocity row of a contact (contact_impulses.hpp): the approach it may still make in the
@@ -470,13 +486,16 @@ double DcrContact::stable_dt_limit(const State& state) const {
 }
 
 std::vector<std::string> DcrContact::history_columns() const {
-  return {"contact.active", "contact.normal_impulse", "contact.work",
-          "contact.residual_penetration"};
+  std::vector<std::string> c = {"contact.active", "contact.normal_impulse", "contact.work",
+                                "contact.residual_penetration"};
+  for (std::string& name : output_.columns()) c.push_back(std::move(name));
+  return c;
 }
 
 void DcrContact::append_history(const State& /*s*/, std::vector<double>& row) const {
   row.insert(row.end(),
              {static_cast<double>(constraints_.size()), last_impulse_, work_, residual_});
+  output_.append(row);
 }
 
 }  // namespace ccm::dcr

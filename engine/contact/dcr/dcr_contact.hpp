@@ -30,6 +30,7 @@
 #include "engine/contact/contact_model.hpp"
 #include "engine/contact/dcr/broad_phase.hpp"
 #include "engine/contact/dcr/contact_impulses.hpp"
+#include "engine/contact/dcr/contact_output.hpp"
 #include "engine/contact/dcr/contact_surface.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/contact/dcr/projection_update.hpp"
@@ -45,8 +46,9 @@ struct DcrSettings {
   int max_iterations = 100;           // Gauss-Seidel sweeps of the velocity solve
   // Gauss-Seidel sweeps of the position projection (per round of re-detection).
   int max_projection_iterations = 400;
-  double step_fraction = 0.5;  // dt limit: relative motion per step <= this x min edge
-  double proximity = 0.1;      // persistent contacts: gap <= this x min edge
+  double step_fraction = 0.5;   // dt limit: relative motion per step <= this x min edge
+  double proximity = 0.1;       // persistent contacts: gap <= this x min edge
+  ContactOutputRequest output;  // pair forces and sensor pressures, when asked
 };
 
 // One active contact: g(x) = sign * volume(nodes) >= target.
@@ -128,6 +130,7 @@ class DcrContact : public ContactModel, public HistorySource {
   ContactImpulses impulses_;
   PairRestitution restitution_;
   ProjectionUpdate projection_update_;
+  ContactOutput output_;
   std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
   std::vector<std::pair<int, int>> near_;   // scratch: body pairs holding contacts
   std::vector<int> count_;                  // scratch: per-node marks (all zero between uses)

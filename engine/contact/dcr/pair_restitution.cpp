@@ -96,12 +96,14 @@ bool PairRestitution::close(const Episode& ep, int a, int b, State& s, double dt
   if (!anchored_[static_cast<size_t>(b)])
     energy_change += apply_rigid_impulse(b, B, -j * n, P, s, dt);
   ++corrections_;
+  last_.push_back({a, b, -j * n, P});
   return true;
 }
 
 double PairRestitution::after_solve(const std::vector<PairImpulse>& touching,
                                     const std::vector<std::pair<int, int>>& near, State& s,
                                     double dt) {
+  last_.clear();
   if (e_ >= 1.0) return 0.0;
   for (auto& [key, ep] : episodes_) ep.touched = false;
   for (const PairImpulse& t : touching) {

@@ -66,6 +66,8 @@ class PairRestitution {
                      const std::vector<std::pair<int, int>>& near, State& s, double dt);
 
   int corrections() const { return corrections_; }  // episodes corrected so far
+  // The corrections of the last after_solve: the impulse on B of each pair corrected.
+  const std::vector<PairImpulse>& last_corrections() const { return last_; }
 
  private:
   struct Episode {
@@ -92,6 +94,7 @@ class PairRestitution {
   std::vector<bool> anchored_;
   std::map<std::pair<int, int>, Episode> episodes_;  // ordered: deterministic
   int corrections_ = 0;
+  std::vector<PairImpulse> last_;
 };
 
 }  // namespace ccm::dcr

@@ -112,7 +112,8 @@ History dcr_run(const Resolution& r, double& sphere_mass) {
   add_body(mesh, "ball", test::neo_hookean(kModulusRatio * kArtifactE, kNu, kRho), ball);
   Model model = make_model(std::move(mesh));
   test::set_body_velocity(model, 1, Vec3(0, 0, -kSpeed));
-  dcr::DcrSettings settings{{"artifact/boundary", "ball/boundary"}};
+  dcr::DcrSettings settings;
+  settings.surfaces = {"artifact/boundary", "ball/boundary"};
   // The penalty springs of the rigid model return their energy (an elastic impact); restitution
   // is the pair's macroscopic coefficient (docs/contact-restitution.md), so the like-for-like
   // DCR run is e = 1.
