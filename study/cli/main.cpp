@@ -1,5 +1,6 @@
 // The ccm command line: `ccm --version`, `ccm run SCENE --out DIR [--quiet]`,
 // `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE`,
+// `ccm study scene GRID --point N [--model ccm|rigid]`,
 // `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`,
 // `ccm report --db FILE --out DIR [--max-error E]`.
 #include <fmt/format.h>
@@ -51,6 +52,16 @@ int main(int argc, char** argv) {
       study->add_subcommand("status", "Done / running / failed / unstable per grid point");
   study_status->add_option("--db", study_status_args.db, "Study store (SQLite)")->required();
 
+  ccm::StudySceneArgs study_scene_args;
+  CLI::App* study_scene = study->add_subcommand(
+      "scene", "Print the scene file of one run of a grid (to repeat it with `ccm run`)");
+  study_scene->add_option("GRID", study_scene_args.grid, "Grid file (TOML)")->required();
+  study_scene->add_option("--point,-p", study_scene_args.point, "Point index (as in the tables)")
+      ->required();
+  study_scene->add_option("--model,-m", study_scene_args.model, "ccm or rigid")
+      ->check(CLI::IsMember({"ccm", "rigid"}))
+      ->default_val("ccm");
+
   ccm::RecommendArgs rec;
   CLI::App* recommend = app.add_subcommand(
       "recommend", "Which impactor model to use at a design point, and why (from a study)");
@@ -88,6 +99,7 @@ int main(int argc, char** argv) {
   }
   if (*study_run) return ccm::study_run_command(study_run_args);
   if (*study_status) return ccm::study_status_command(study_status_args);
+  if (*study_scene) return ccm::study_scene_command(study_scene_args);
   if (*recommend) return ccm::recommend_command(rec);
   if (*rig_list) return ccm::rig_list_command(rig_list_args);
   if (*report) return ccm::report_command(report_args);

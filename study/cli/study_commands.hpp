@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 namespace ccm {
 
@@ -13,6 +14,12 @@ struct StudyRunArgs {
   std::filesystem::path db;
   int jobs = 1;        // local worker processes (without MPI)
   bool quiet = false;  // no progress line, no tables
+};
+
+struct StudySceneArgs {
+  std::filesystem::path grid;
+  int point = 0;              // a grid or convergence point's index (as in `ccm study run`)
+  std::string model = "ccm";  // ccm or rigid
 };
 
 struct StudyStatusArgs {
@@ -39,6 +46,7 @@ struct RigListArgs {
 // Each returns the process exit code (study/cli/run_command.hpp exit_code).
 int study_run_command(const StudyRunArgs& args);
 int study_status_command(const StudyStatusArgs& args);
+int study_scene_command(const StudySceneArgs& args);
 int recommend_command(const RecommendArgs& args);
 int rig_list_command(const RigListArgs& args);
 int report_command(const ReportArgs& args);

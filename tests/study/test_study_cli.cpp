@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <csignal>
+#include <fstream>
 #include <thread>
 
 #include "db/store/study_store.hpp"
@@ -232,4 +233,37 @@ TEST_CASE("ccm study/recommend: bad input exits 2 with a clear message and write
   CHECK(shell(study_run(bad_grid, db), tmp.path / "err", err) == 2);
   CHECK_THAT(err, Catch::StartsWith("ccm: error: " + bad_grid.string() + ":3"));
   CHECK(!fs::exists(db));  // nothing created for a grid that cannot run
+}
+
+TEST_CASE("ccm study scene: the printed scene, run alone, repeats the stored run", "[study][cli]") {
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("tiny.toml", kTinyGrid), db = tmp.path / "s.sqlite";
+  std::string err;
+  REQUIRE(shell(study_run(grid, db), tmp.path / "err", err) == 0);
+  const auto stored = stored_histories(db, grid);  // point 0 ccm, point 0 rigid, point 1 ...
+
+  const fs::path scene = tmp.path / "p1_rigid.toml", out = tmp.path / "p1_rigid";
+  REQUIRE(shell(fmt::format("'{}' study scene '{}' --point 1 --model rigid > '{}'", CCM_BINARY,
+                            grid.string(), scene.string()),
+                tmp.path / "err", err) == 0);
+  CHECK_THAT(read_file(scene), Catch::Contains("model = \"rigid_penalty\""));
+  REQUIRE(shell(fmt::format("'{}' run '{}' --out '{}' --quiet", CCM_BINARY, scene.string(),
+                            out.string()),
+                tmp.path / "err", err) == 0);
+
+  // Column 1 of history.csv is the artifact's kinetic energy; same input, same output.
+  std::ifstream csv(out / "history.csv");
+  std::string line;
+  std::getline(csv, line);
+  REQUIRE_THAT(line, Catch::StartsWith("time,artifact.kinetic_energy,"));
+  std::vector<double> ke;
+  while (std::getline(csv, line)) ke.push_back(std::stod(line.substr(line.find(',') + 1)));
+  const study::ArtifactHistory& rigid_p1 = stored[3];
+  REQUIRE(ke.size() == rigid_p1.kinetic_energy.size());
+  for (std::size_t i = 0; i < ke.size(); ++i)  // 17 significant digits in the CSV
+    CHECK(ke[i] == Approx(rigid_p1.kinetic_energy[i]).epsilon(1e-15).margin(1e-300));
+
+  CHECK(shell(fmt::format("'{}' study scene '{}' --point 9", CCM_BINARY, grid.string()),
+              tmp.path / "err", err) == 2);
+  CHECK(err == "ccm: error: " + grid.string() + ": no point 9 (the grid has points 0 to 1)\n");
 }
