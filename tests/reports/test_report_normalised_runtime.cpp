@@ -92,5 +92,24 @@ TEST_CASE(
   CHECK_THAT(f->caption, Catch::Contains("Fig. 2-28"));
 }
 
+TEST_CASE("NT figure of a store without NT fits: the data points, and the caption says why",
+          "[reports]") {
+  test::TempDir dir;
+  test::write_synthetic_study(dir.path / "study.sqlite");
+  db::StudyStore store(dir.path / "study.sqlite");
+  REQUIRE(store.open_existing_study());
+  ReportData data = load_report_data(store);
+  std::erase_if(data.fits.fits, [](const study::MetricFit& f) {
+    return f.metric == Metric::log10_nt_ccm || f.metric == Metric::log10_nt_rigid;
+  });
+  const ReportContent content = plan_report(data, {}, current_stamp());
+  const Figure* f = find_figure(content, "fig-normalised-runtime-ke-10");
+  REQUIRE(f);
+  REQUIRE(f->plot.series.size() == 2);  // the data of both models
+  CHECK(f->plot.series[0].title == "CCM (meshed sphere, DCR), KE 10 J: data");
+  CHECK(f->plot.series[0].z.size() == 11u);  // 12 points at 10 J, the unstable one left out
+  CHECK_THAT(f->caption, Catch::Contains("no fitted surface stored"));
+}
+
 }  // namespace
 }  // namespace ccm::reports
