@@ -11,9 +11,15 @@ std::string model_label(study::ImpactModel model) {
                                           : "rigid (analytic sphere, penalty)";
 }
 
-std::string case_label(const study::GridPoint& p) {
+std::string main_case_label(const study::GridPoint& p) {
   return fmt::format("ER {:g}, RLS {:g}, KE {:g} J", p.modulus_ratio, p.length_ratio,
                      p.kinetic_energy);
+}
+
+std::string case_label(const study::GridPoint& p) {
+  std::string out = main_case_label(p);
+  for (const auto& [name, value] : p.other_axes) out += fmt::format(", {} {:g}", name, value);
+  return out;
 }
 
 std::string metric_label(study::Metric metric) {
@@ -39,6 +45,10 @@ std::string metric_label(study::Metric metric) {
       return "cumulative error in u_max [m]";
     case Metric::cumulative_kinetic_energy:
       return "cumulative error in artifact KE [J]";
+    case Metric::log10_nt_ccm:
+      return "log10 NT_CCM, NT = AIR / ISTS [log10 s/s]";
+    case Metric::log10_nt_rigid:
+      return "log10 NT_rigid, NT = AIR / ISTS [log10 s/s]";
   }
   return std::string(study::to_string(metric));
 }

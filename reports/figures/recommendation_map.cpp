@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -20,11 +21,28 @@ std::optional<Figure> map_figure(const study::StudyFits& fits, double ke, double
                 .x_label = "ER = E_impactor / E_artifact [-]",
                 .y_label = "RLS = D_impactor / L_artifact [-]",
                 .log_x = true};
-  plot.series = {Series{.title = "use " + model_label(ImpactModel::ccm),
-                        .style = SeriesStyle::squares,
+  const std::string at = fmt::format(" at KE {:g} J", ke);
+  // Cells tile the plane: half the spacing of their centres (in decades of ER, and in RLS).
+  const auto [x_lo, x_hi] = std::minmax_element(cells.begin(), cells.end(), [](auto& a, auto& b) {
+    return a.modulus_ratio < b.modulus_ratio;
+  });
+  const auto [y_lo, y_hi] = std::minmax_element(
+      cells.begin(), cells.end(), [](auto& a, auto& b) { return a.length_ratio < b.length_ratio; });
+  auto half_spacing = [](double span, double fallback) {
+    return span > 0.0 ? span / (2.0 * (kMapCells - 1)) : fallback;
+  };
+  const double dx =
+      half_spacing(std::log10(x_hi->modulus_ratio / x_lo->modulus_ratio), 0.5);  // decades
+  const double dy = half_spacing(y_hi->length_ratio - y_lo->length_ratio, 0.05);
+  plot.series = {Series{.title = "use " + model_label(ImpactModel::ccm) + at,
+                        .style = SeriesStyle::cells,
+                        .cell_dx = dx,
+                        .cell_dy = dy,
                         .color = 0},
-                 Series{.title = "use " + model_label(ImpactModel::rigid),
-                        .style = SeriesStyle::squares,
+                 Series{.title = "use " + model_label(ImpactModel::rigid) + at,
+                        .style = SeriesStyle::cells,
+                        .cell_dx = dx,
+                        .cell_dy = dy,
                         .color = 1}};
   for (const MapCell& c : cells) {
     Series& s = plot.series[c.model == ImpactModel::ccm ? 0 : 1];
@@ -37,7 +55,7 @@ std::optional<Figure> map_figure(const study::StudyFits& fits, double ke, double
                   "errors (fitted surfaces, eqs. 2.37-2.39) are below {:g}, CCM elsewhere; "
                   "{}x{} cells over the studied range.",
                   ke, max_error, kMapCells, kMapCells),
-      plot);
+      std::move(plot));
 }
 
 }  // namespace

@@ -4,8 +4,13 @@
 
 namespace ccm::reports {
 
-Figure make_figure(std::string id, std::string caption, const PlotSpec& plot) {
-  return Figure{std::move(id), std::move(caption), render_svg(plot)};
+Figure make_figure(std::string id, std::string caption, PlotSpec plot) {
+  return Figure{.id = std::move(id), .caption = std::move(caption), .plot = std::move(plot)};
+}
+
+void render_figures(ReportContent& content) {
+  for (Section& s : content.sections)
+    for (Figure& f : s.figures) f.svg = render_svg(f.plot);
 }
 
 }  // namespace ccm::reports

@@ -1,5 +1,6 @@
-// The report as a document: sections of prose, figures (rendered SVG) and tables, in order.
-// Built by the section builders, written by reports/write/report_writer.
+// The report as a document: sections of prose, figures and tables, in order. Built by the
+// section builders (no rendering: each figure keeps its PlotSpec, so its axes and legends can
+// be checked), rendered by render_figures (gnuplot), written by reports/write/report_writer.
 #pragma once
 
 #include <string>
@@ -13,7 +14,8 @@ namespace ccm::reports {
 struct Figure {
   std::string id;         // file stem (DIR/<id>.svg) and HTML anchor
   std::string caption{};  // what is plotted, with the thesis figure it reproduces
-  std::string svg{};      // the SVG document
+  PlotSpec plot{};        // what is drawn
+  std::string svg{};      // the SVG document, filled by render_figures
 };
 
 struct Section {
@@ -28,7 +30,11 @@ struct ReportContent {
   std::vector<Section> sections{};
 };
 
-// Renders `plot` (reports/plot/gnuplot.hpp) into a figure.
-Figure make_figure(std::string id, std::string caption, const PlotSpec& plot);
+// A figure of `plot`, not yet rendered.
+Figure make_figure(std::string id, std::string caption, PlotSpec plot);
+
+// Renders every figure's plot to SVG (reports/plot/gnuplot.hpp). Throws ReportError when
+// gnuplot is missing or fails.
+void render_figures(ReportContent& content);
 
 }  // namespace ccm::reports

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "reports/figures/labels.hpp"
+#include "reports/figures/normalised_runtime_figures.hpp"
 
 namespace ccm::reports {
 namespace {
@@ -37,7 +38,8 @@ PlotSpec per_point_plot(const ReportData& data, std::string title, std::string y
                         const std::function<double(const RunRecord&)>& value) {
   PlotSpec plot{.title = std::move(title),
                 .x_label = "grid point (case) index [-]",
-                .y_label = std::move(y_label)};
+                .y_label = std::move(y_label),
+                .integer_x = true};
   const auto levels = kinetic_energy_levels(grid_points(data));
   for (std::size_t k = 0; k < levels.size(); ++k)
     for (std::size_t m = 0; m < kModels.size(); ++m) {
@@ -55,21 +57,31 @@ PlotSpec per_point_plot(const ReportData& data, std::string title, std::string y
 }
 
 std::vector<Figure> runtime_figures(const ReportData& data) {
-  return {
-      make_figure("fig-total-runtime",
-                  "Measured wall time of every run, both models (thesis Fig. 2-16).",
-                  per_point_plot(data, "Total runtime per grid point", "wall time of the run [s]",
-                                 [](const RunRecord& r) { return r.wall_seconds; })),
-      make_figure("fig-iteration-time",
-                  "Average wall time of one time step, AIR (eq. 2.41; thesis Fig. 2-17).",
-                  per_point_plot(data, "Average iteration time per grid point",
-                                 "AIR, wall time per step [s]",
-                                 [](const RunRecord& r) { return r.average_iteration_seconds; })),
-      make_figure("fig-initial-stable-step",
-                  "Initial stable time step, ISTS (eq. 2.42; thesis Fig. 2-18).",
-                  per_point_plot(data, "Initial stable time step per grid point", "ISTS [s]",
-                                 [](const RunRecord& r) { return r.initial_stable_dt; })),
+  struct Item {
+    const char* id;
+    const char* caption;
+    const char* title;
+    const char* y_label;
+    double (*value)(const RunRecord&);
   };
+  const Item items[] = {
+      {"fig-total-runtime", "Measured wall time of every run, both models (thesis Fig. 2-16).",
+       "Total runtime per grid point", "wall time of the run [s]",
+       [](const RunRecord& r) { return r.wall_seconds; }},
+      {"fig-iteration-time",
+       "Average wall time of one time step, AIR (eq. 2.41; thesis Fig. 2-17).",
+       "Average iteration time per grid point", "AIR, wall time per step [s]",
+       [](const RunRecord& r) { return r.average_iteration_seconds; }},
+      {"fig-initial-stable-step", "Initial stable time step, ISTS (eq. 2.42; thesis Fig. 2-18).",
+       "Initial stable time step per grid point", "ISTS [s]",
+       [](const RunRecord& r) { return r.initial_stable_dt; }}};
+  std::vector<Figure> out;
+  for (const Item& item : items) {
+    PlotSpec plot = per_point_plot(data, item.title, item.y_label, item.value);
+    if (!all_values(plot, 0).empty())  // no grid run stored yet: no figure
+      out.push_back(make_figure(item.id, item.caption, std::move(plot)));
+  }
+  return out;
 }
 
 const RunRecord* find_run(const ReportData& data, int point_index, ImpactModel model) {
@@ -86,16 +98,17 @@ std::vector<Figure> corner_history_figures(const ReportData& data) {
                   .y_label = "artifact kinetic energy [J]"};
     for (std::size_t m = 0; m < kModels.size(); ++m)
       if (const RunRecord* r = find_run(data, p.index, kModels[m]))
-        plot.series.push_back(Series{.title = model_label(kModels[m]) + " (" + r->verdict + ")",
-                                     .style = SeriesStyle::lines,
-                                     .x = r->artifact.time,
-                                     .y = r->artifact.kinetic_energy,
-                                     .color = static_cast<int>(m)});
+        plot.series.push_back(Series{
+            .title = model_label(kModels[m]) + ", " + case_label(p) + " (" + r->verdict + ")",
+            .style = SeriesStyle::lines,
+            .x = r->artifact.time,
+            .y = r->artifact.kinetic_energy,
+            .color = static_cast<int>(m)});
     if (plot.series.empty()) continue;
     out.push_back(make_figure(fmt::format("fig-ke-history-point-{}", p.index),
                               "Artifact kinetic energy of CCM against rigid at the corner point " +
                                   case_label(p) + " (thesis Fig. 2-19).",
-                              plot));
+                              std::move(plot)));
   }
   return out;
 }
@@ -158,39 +171,6 @@ std::vector<Figure> error_figures(const ReportData& data) {
   return out;
 }
 
-// NT of both models over (ER, RLS), one figure per KE level (thesis Fig. 2-28).
-std::vector<Figure> normalised_runtime_figures(const ReportData& data) {
-  std::vector<study::GridPoint> usable;
-  for (const auto& m : data.grid)
-    if (m.usable) usable.push_back(m.point);
-  std::vector<Figure> out;
-  for (double ke : kinetic_energy_levels(usable)) {
-    PlotSpec plot{.title = fmt::format("Normalised runtime NT, KE {:g} J", ke),
-                  .x_label = "log10 ER [-]",
-                  .y_label = "RLS [-]",
-                  .z_label = "NT = AIR / ISTS [s/s]",
-                  .three_d = true};
-    for (std::size_t m = 0; m < kModels.size(); ++m) {
-      Series s{.title = model_label(kModels[m]), .color = static_cast<int>(m)};
-      for (const auto& pm : data.grid) {
-        if (!pm.usable || pm.point.kinetic_energy != ke) continue;
-        s.x.push_back(std::log10(pm.point.modulus_ratio));
-        s.y.push_back(pm.point.length_ratio);
-        s.z.push_back(kModels[m] == ImpactModel::ccm ? pm.ccm.normalised_runtime
-                                                     : pm.rigid.normalised_runtime);
-      }
-      plot.series.push_back(std::move(s));
-    }
-    plot.log_z = spans_decades(all_values(plot, 2));
-    out.push_back(make_figure(fmt::format("fig-normalised-runtime-ke-{:g}", ke),
-                              fmt::format("Normalised runtime NT (eqs. 2.41-2.42) of both models "
-                                          "at KE {:g} J (thesis Fig. 2-28, data points).",
-                                          ke),
-                              plot));
-  }
-  return out;
-}
-
 }  // namespace
 
 std::vector<study::GridPoint> corner_points(const std::vector<study::GridPoint>& grid) {
@@ -215,10 +195,11 @@ std::vector<study::GridPoint> corner_points(const std::vector<study::GridPoint>&
 Section trade_study_section(const ReportData& data) {
   Section s{.id = "trade-study", .title = "Trade study: CCM against the rigid impactor"};
   s.paragraphs.push_back(fmt::format(
-      "{} grid points ({} runs stored, {} points with usable metrics). Errors are of the rigid "
-      "model against CCM (thesis 2.8, eqs. 2.34-2.39); points where either run went unstable "
-      "are left out of the error figures and listed in the stability table.",
-      grid_points(data).size(), data.runs.size(),
+      "{} grid points ({} of their runs stored, {} points with usable metrics; the "
+      "convergence runs are in their own section). Errors are of the rigid model against CCM "
+      "(thesis 2.8, eqs. 2.34-2.39); points where either run went unstable are left out of the "
+      "error figures and listed in the stability table.",
+      grid_points(data).size(), grid_runs(data).size(),
       std::count_if(data.grid.begin(), data.grid.end(), [](auto& m) { return m.usable; })));
   for (auto* group :
        {&runtime_figures, &corner_history_figures, &error_figures, &normalised_runtime_figures})

@@ -1,6 +1,7 @@
 // The trade-study section (thesis 2.8): runtime, iteration time and stable step per point
 // (Figs. 2-16..2-18), artifact kinetic-energy histories at the corner points (2-19),
-// cumulative and final-state errors (2-22..2-27) and normalised runtimes (2-28).
+// cumulative and final-state errors (2-22..2-27) and normalised runtimes with their fitted
+// surfaces (2-28, reports/figures/normalised_runtime_figures.hpp).
 #pragma once
 
 #include "reports/data/report_data.hpp"

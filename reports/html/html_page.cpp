@@ -21,6 +21,7 @@ table { border-collapse: collapse; font-size: 0.85em; }
 caption { text-align: left; font-weight: bold; padding: 0.3em 0; }
 th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: left; }
 th { background: #eef4fa; }
+td.nw { white-space: nowrap; }
 )css";
 
 std::string section_html(const Section& s) {

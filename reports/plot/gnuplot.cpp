@@ -5,7 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +63,8 @@ std::string style_clause(const Series& s) {
       return fmt::format("with linespoints lw 1.5 pt {} ps 0.8 lc rgb '{}'", point_type, colour);
     case SeriesStyle::squares:
       return fmt::format("with points pt 5 ps 1.6 lc rgb '{}'", colour);
+    case SeriesStyle::cells:
+      return fmt::format("with boxxyerror fs solid 1.0 noborder lc rgb '{}'", colour);
     case SeriesStyle::surface:
       return fmt::format("with lines lw 0.8 lc rgb '{}'", colour);
     case SeriesStyle::points:
@@ -105,6 +109,25 @@ int run_gnuplot(const std::string& gnuplot, const fs::path& script, const fs::pa
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
+// The `using` columns of one series: x y [z], or for cells x y x_low x_high y_low y_high.
+std::string using_columns(const PlotSpec& plot, const Series& series) {
+  if (plot.three_d) return "1:2:3";
+  if (series.style != SeriesStyle::cells) return "1:2";
+  const std::string x_range =
+      plot.log_x ? fmt::format("($1*10**(-{0:.17g})):($1*10**({0:.17g}))", series.cell_dx)
+                 : fmt::format("($1-{0:.17g}):($1+{0:.17g})", series.cell_dx);
+  return fmt::format("1:2:{}:($2-{:.17g}):($2+{:.17g})", x_range, series.cell_dy, series.cell_dy);
+}
+
+// Whole-number tics, about ten of them, over the x values of the plot.
+std::string integer_x_tics(const PlotSpec& plot) {
+  const auto x = all_values(plot, 0);
+  if (x.empty()) return {};
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  const double step = std::max(1.0, std::ceil((*hi - *lo) / 10.0));
+  return fmt::format("set xtics {:.0f}\nset mxtics 1\nset format x '%.0f'\n", step);
+}
+
 }  // namespace
 
 std::string find_gnuplot() {
@@ -120,27 +143,33 @@ std::string find_gnuplot() {
 }
 
 std::string gnuplot_script(const PlotSpec& plot, const std::string& svg_file) {
+  // The key below the plot, one line taller than gnuplot makes it and the x label raised a
+  // little (2-D): else the label touches the key's box.
   std::string s = fmt::format(
       "set terminal svg size {},{} noenhanced font 'DejaVu Sans,11' background rgb 'white'\n"
-      "set output {}\nset title {}\nset xlabel {}\nset ylabel {}\nset grid\n"
-      "set key below Left reverse box\nset datafile missing 'nan'\n",
+      "set output {}\nset title {}\nset xlabel {}{}\nset ylabel {}\nset grid\n"
+      "set key below Left reverse box height 1\nset datafile missing 'nan'\n",
       plot.width, plot.height, gnuplot_string(svg_file), gnuplot_string(plot.title),
-      gnuplot_string(plot.x_label), gnuplot_string(plot.y_label));
+      gnuplot_string(plot.x_label), plot.three_d ? "" : " offset 0,0.3",
+      gnuplot_string(plot.y_label));
+  if (plot.integer_x && !plot.log_x) s += integer_x_tics(plot);
   if (plot.log_x) s += "set logscale x\nset format x '%.0e'\n";
   if (plot.log_y) s += "set logscale y\nset format y '%.0e'\n";
   if (plot.three_d) {
-    s += fmt::format("set zlabel {} rotate parallel\nset view 60,35\nset ticslevel 0\n",
-                     gnuplot_string(plot.z_label));
+    // The z label moved off its tic labels; the z axis stretched a little into the free space.
+    s += fmt::format(
+        "set zlabel {} rotate parallel offset -2,0\nset view 60,35,1,1.15\nset ticslevel 0\n",
+        gnuplot_string(plot.z_label));
     if (plot.log_z) s += "set logscale z\nset format z '%.0e'\n";
   }
   std::string command = plot.three_d ? "splot" : "plot";
-  const char* columns = plot.three_d ? "1:2:3" : "1:2";
   bool first = true;
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const Series& series = plot.series[i];
     if (series.empty()) continue;
     command += fmt::format("{} 'series-{}.dat' using {} {} title {}", first ? " " : ", \\\n  ", i,
-                           columns, style_clause(series), gnuplot_string(series.title));
+                           using_columns(plot, series), style_clause(series),
+                           gnuplot_string(series.title));
     first = false;
   }
   return s + command + "\n";

@@ -12,7 +12,8 @@ enum class SeriesStyle {
   points,       // markers only
   lines,        // a polyline in data order
   linespoints,  // both
-  squares,      // large filled squares (maps)
+  squares,      // large filled squares
+  cells,        // filled rectangles centred on the points, cell_dx x cell_dy half-sizes (maps)
   surface,      // 3-D: a mesh of `surface_columns` points per row, rows in data order
 };
 
@@ -21,6 +22,9 @@ struct Series {
   SeriesStyle style = SeriesStyle::points;
   std::vector<double> x{}, y{}, z{};  // z only for 3-D plots
   std::size_t surface_columns = 0;    // points per mesh row (SeriesStyle::surface)
+  // Half-sizes of SeriesStyle::cells: cell_dx in decades when the x axis is logarithmic (the
+  // cell spans x 10^-dx .. x 10^dx), else in x units; cell_dy in y units.
+  double cell_dx = 0.0, cell_dy = 0.0;
   int color = 0;  // index into the colour-blind-safe palette of reports/plot/gnuplot.cpp
   bool empty() const { return x.empty(); }
 };
@@ -30,6 +34,7 @@ struct PlotSpec {
   std::string x_label{}, y_label{}, z_label{};  // with units, e.g. "wall time [s]"
   bool log_x = false, log_y = false, log_z = false;
   bool three_d = false;
+  bool integer_x = false;  // x is an index: tics on whole numbers only
   std::vector<Series> series{};
   int width = 720, height = 440;  // SVG size [px]
 };

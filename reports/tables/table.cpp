@@ -61,7 +61,9 @@ std::string to_html(const Table& table) {
   out += "</tr></thead>\n<tbody>\n";
   for (const auto& row : table.rows) {
     out += "<tr>";
-    for (const auto& c : row) out += "<td>" + html_escape(c) + "</td>";
+    for (const auto& c : row)
+      out +=
+          (c.size() <= kNoWrapCellLength ? "<td class=\"nw\">" : "<td>") + html_escape(c) + "</td>";
     out += "</tr>\n";
   }
   return out + "</tbody>\n</table>\n";

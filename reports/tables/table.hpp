@@ -1,6 +1,7 @@
 // A report table: written as CSV into the report folder and as HTML into index.html.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,10 @@ struct Table {
 
 // RFC 4180 CSV: fields with a comma, quote or line break are quoted, quotes doubled.
 std::string to_csv(const Table& table);
+
+// Body cells up to this many characters (labels, numbers, short equations) are kept on one line
+// (class "nw"); longer ones (reasons, lists of hashes) wrap. Headers always wrap.
+inline constexpr std::size_t kNoWrapCellLength = 32;
 
 // An HTML <table> with its caption, text escaped.
 std::string to_html(const Table& table);

@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "reports/figures/error_runtime_section.hpp"
 #include "reports/figures/fit_section.hpp"
 #include "reports/figures/recommendation_map.hpp"
 #include "reports/figures/stability_section.hpp"
@@ -24,8 +25,8 @@ void write_text(const fs::path& file, const std::string& text) {
 
 }  // namespace
 
-ReportContent build_report(const ReportData& data, const ReportOptions& options,
-                           const ReportStamp& stamp) {
+ReportContent plan_report(const ReportData& data, const ReportOptions& options,
+                          const ReportStamp& stamp) {
   ReportContent content{.title = "ccm trade study report: " + data.provenance.study_name};
   content.sections.push_back(trade_study_section(data));
   content.sections.push_back(stability_section(data));
@@ -34,6 +35,13 @@ ReportContent build_report(const ReportData& data, const ReportOptions& options,
   content.sections.push_back(recommendation_section(data, options.max_error));
   content.sections.push_back(rig_section());
   content.sections.push_back(provenance_section(data, stamp));
+  return content;
+}
+
+ReportContent build_report(const ReportData& data, const ReportOptions& options,
+                           const ReportStamp& stamp) {
+  ReportContent content = plan_report(data, options, stamp);
+  render_figures(content);
   return content;
 }
 

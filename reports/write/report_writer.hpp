@@ -15,8 +15,12 @@ struct ReportOptions {
   double max_error = 0.1;  // error threshold of the recommendation map
 };
 
-// Every section of the report, in page order. Throws ReportError when gnuplot is missing or
-// fails.
+// Every section of the report, in page order, with the figures' plots but no SVG yet (no
+// gnuplot needed).
+ReportContent plan_report(const ReportData& data, const ReportOptions& options,
+                          const ReportStamp& stamp);
+
+// plan_report with every figure rendered. Throws ReportError when gnuplot is missing or fails.
 ReportContent build_report(const ReportData& data, const ReportOptions& options,
                            const ReportStamp& stamp);
 

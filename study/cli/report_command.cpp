@@ -21,6 +21,17 @@ reports::ReportData load_study(const std::filesystem::path& file) {
     throw StudyInputError(file.string() + ": study \"" + data.provenance.study_name +
                           "\" has no grid points yet (an empty study): run `ccm study run` "
                           "first");
+  if (data.runs.empty()) {
+    long failed = 0;
+    for (const db::PointStatus& s : data.status)
+      for (const auto& run : {s.ccm, s.rigid}) failed += run == db::RunStatus::failed;
+    throw StudyInputError(fmt::format(
+        "{}: study \"{}\" has {} grid points but no completed or unstable run yet ({} of "
+        "its {} runs failed, the others are pending or running): nothing to report; run "
+        "`ccm study run` first (`ccm study status` names the failures)",
+        file.string(), data.provenance.study_name, data.status.size(), failed,
+        2 * data.status.size()));
+  }
   return data;
 }
 

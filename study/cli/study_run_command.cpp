@@ -129,7 +129,7 @@ struct DerivedResults {
   std::vector<study::PointMetrics> grid;         // the main grid's points
   std::vector<study::PointMetrics> convergence;  // the convergence points
   study::StudyFits fits;
-  std::vector<ConvergenceRow> convergence_rows;  // each run against the finest CCM run
+  std::vector<study::ConvergenceRow> convergence_rows;  // each run against the finest CCM run
 };
 
 std::vector<study::PointMetrics> point_metrics(const db::StudyStore& store,
@@ -155,7 +155,7 @@ DerivedResults derive_results(const fs::path& db, const GridSpec& spec,
   for (const GridPoint& p : study::expand_convergence(spec))
     for (ImpactModel m : {ImpactModel::ccm, ImpactModel::rigid})
       if (auto run = store.load_run(p, m)) convergence_runs.push_back(std::move(*run));
-  results.convergence_rows = compare_convergence_runs(convergence_runs);
+  results.convergence_rows = study::compare_convergence_runs(convergence_runs);
   auto transaction = store.begin();
   for (const auto* set : {&results.grid, &results.convergence})
     for (const study::PointMetrics& m : *set) store.save_metrics(m);

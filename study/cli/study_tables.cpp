@@ -2,29 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <map>
-#include <tuple>
-
-#include "study/metrics/model_errors.hpp"
 #include "study/recommend/recommendation.hpp"
 
 namespace ccm {
 namespace {
-
-using study::ImpactModel;
-
-double mesh_scale(const study::GridPoint& p) {
-  const auto it = p.other_axes.find("mesh_scale");
-  return it == p.other_axes.end() ? 1.0 : it->second;
-}
-
-study::ArtifactErrors final_state_errors(const study::ArtifactHistory& run,
-                                         const study::ArtifactHistory& reference) {
-  return {study::final_state_error(reference.u_mean, run.u_mean),
-          study::final_state_error(reference.u_max, run.u_max),
-          study::final_state_error(reference.kinetic_energy, run.kinetic_energy)};
-}
 
 // "ccm" or "rigid" with the reason when the fits cannot say.
 std::string recommended(const study::StudyFits& fits, const study::GridPoint& p) {
@@ -41,32 +22,6 @@ std::string recommended(const study::StudyFits& fits, const study::GridPoint& p)
 }
 
 }  // namespace
-
-std::vector<ConvergenceRow> compare_convergence_runs(const std::vector<study::RunRecord>& runs) {
-  using Key = std::tuple<double, double, double>;
-  std::map<Key, const study::RunRecord*> finest;
-  auto key = [](const study::RunRecord& r) {
-    return Key{r.point.modulus_ratio, r.point.length_ratio, r.point.kinetic_energy};
-  };
-  for (const auto& r : runs) {
-    if (r.model != ImpactModel::ccm || !r.completed()) continue;
-    auto& best = finest[key(r)];
-    if (best == nullptr || mesh_scale(r.point) < mesh_scale(best->point)) best = &r;
-  }
-  std::vector<ConvergenceRow> rows;
-  for (const auto& r : runs) {
-    ConvergenceRow row{r.point, r.model, false, false, {}, r.wall_seconds, r.n_elements};
-    const auto it = finest.find(key(r));
-    if (it != finest.end() && r.completed() &&
-        it->second->artifact.time.size() == r.artifact.time.size()) {
-      row.reference = it->second == &r;
-      row.usable = true;
-      row.final_state = final_state_errors(r.artifact, it->second->artifact);
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 void print_point_table(std::FILE* out, const std::vector<study::PointMetrics>& points,
                        const study::StudyFits& fits) {
@@ -90,7 +45,7 @@ void print_point_table(std::FILE* out, const std::vector<study::PointMetrics>& p
   for (const auto& note : fits.notes) fmt::print(out, "note: {}\n", note);
 }
 
-void print_convergence_table(std::FILE* out, const std::vector<ConvergenceRow>& rows) {
+void print_convergence_table(std::FILE* out, const std::vector<study::ConvergenceRow>& rows) {
   if (rows.empty()) return;
   fmt::print(out,
              "\nConvergence: final-state errors against the finest CCM run of each point, next "
@@ -100,7 +55,7 @@ void print_convergence_table(std::FILE* out, const std::vector<ConvergenceRow>& 
   for (const auto& r : rows) {
     const auto& p = r.point;
     fmt::print(out, "{:>8.0e} {:>5.2f} {:>6g} {:>6} {:>6.2f} {:>8}  ", p.modulus_ratio,
-               p.length_ratio, p.kinetic_energy, study::to_string(r.model), mesh_scale(p),
+               p.length_ratio, p.kinetic_energy, study::to_string(r.model), study::mesh_scale(p),
                r.n_elements);
     if (r.reference)
       fmt::print(out, "{:>26}  ", "(reference)");

@@ -1,5 +1,7 @@
 #include "study/metrics/metric.hpp"
 
+#include <cmath>
+
 namespace ccm::study {
 
 std::string_view to_string(Metric metric) {
@@ -24,6 +26,10 @@ std::string_view to_string(Metric metric) {
       return "cumulative_u_max";
     case Metric::cumulative_kinetic_energy:
       return "cumulative_kinetic_energy";
+    case Metric::log10_nt_ccm:
+      return "log10_nt_ccm";
+    case Metric::log10_nt_rigid:
+      return "log10_nt_rigid";
   }
   return "unknown";
 }
@@ -56,6 +62,10 @@ double metric_value(const PointMetrics& p, Metric metric) {
       return p.cumulative.u_max;
     case Metric::cumulative_kinetic_energy:
       return p.cumulative.kinetic_energy;
+    case Metric::log10_nt_ccm:
+      return std::log10(p.ccm.normalised_runtime);
+    case Metric::log10_nt_rigid:
+      return std::log10(p.rigid.normalised_runtime);
   }
   return 0.0;
 }

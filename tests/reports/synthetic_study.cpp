@@ -1,5 +1,6 @@
 #include "tests/reports/synthetic_study.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -15,6 +16,15 @@ using study::ImpactModel;
 constexpr double kContactTime = 0.1;  // [s]
 constexpr double kFinalTime = 0.15;   // [s]
 constexpr int kSamples = 31;
+
+double mesh_scale(const study::GridPoint& p) {
+  const auto it = p.other_axes.find("mesh_scale");
+  return it == p.other_axes.end() ? 1.0 : it->second;
+}
+
+double finest_scale() {
+  return *std::min_element(kConvergenceScales.begin(), kConvergenceScales.end());
+}
 
 // 0 before contact, then linear to 1 at t_f.
 double ramp(double t) {
@@ -34,28 +44,44 @@ study::ArtifactHistory history(const study::GridPoint& p, double factor, double 
   return h;
 }
 
+double initial_stable_dt(ImpactModel model, double er, double scale) {
+  return model == ImpactModel::ccm ? 1e-4 * scale / std::sqrt(er) : 1e-4 * scale;
+}
+
+double average_iteration_seconds(ImpactModel model, double rls, double scale) {
+  return (model == ImpactModel::ccm ? 2e-4 : 1e-4 * std::pow(2.0, rls)) / (scale * scale);
+}
+
+long steps_until(double t, ImpactModel model, double er, double scale) {
+  return std::lround(t / initial_stable_dt(model, er, scale));
+}
+
 study::RunRecord run(const study::GridPoint& p, ImpactModel model) {
   const bool ccm = model == ImpactModel::ccm;
   const bool unstable = !ccm && p.index == kUnstablePointIndex;
+  const double s = mesh_scale(p), er = p.modulus_ratio;
   study::RunRecord r;
   r.point = p;
   r.model = model;
   r.verdict = unstable ? "unstable" : "completed";
   r.reason = unstable ? kUnstableReason : "";
   r.unstable_time = unstable ? 0.12 : 0.0;
-  r.initial_stable_dt = ccm ? 1e-4 / std::sqrt(p.modulus_ratio) : 1e-4;
-  r.average_iteration_seconds = ccm ? 2e-4 : 1e-4;
-  r.steps = std::lround((unstable ? 0.12 : kFinalTime) / r.initial_stable_dt);
+  r.initial_stable_dt = initial_stable_dt(model, er, s);
+  r.average_iteration_seconds = average_iteration_seconds(model, p.length_ratio, s);
+  r.steps = steps_until(unstable ? 0.12 : kFinalTime, model, er, s);
   r.wall_seconds = r.average_iteration_seconds * static_cast<double>(r.steps);
   r.dt_min = 0.9 * r.initial_stable_dt;
   r.dt_max = r.initial_stable_dt;
   r.max_energy_error = unstable ? 0.2 : 1e-3;
-  r.n_elements = ccm ? 2000 : 1000;
-  r.n_nodes = ccm ? 600 : 300;
+  r.n_elements = std::lround((ccm ? 2000 : 1000) / (s * s * s));
+  r.n_nodes = std::lround((ccm ? 600 : 300) / (s * s * s));
   r.scene_hash = ccm ? "ccmscenehash" : "rigidscenehash";
   r.started_at = "2026-11-22T05:00:00.000Z";
   r.ended_at = "2026-11-22T05:01:00.000Z";
-  const double factor = ccm ? 1.0 - synthetic_final_error(p.modulus_ratio) : 1.0;
+  const double convergence_factor = p.other_axes.contains("mesh_scale") && ccm
+                                        ? 1.0 - synthetic_convergence_error(model, er, s)
+                                        : 1.0;
+  const double factor = (ccm ? 1.0 - synthetic_final_error(er) : 1.0) * convergence_factor;
   r.artifact = history(p, factor, unstable ? 0.12 : kFinalTime);
   return r;
 }
@@ -69,27 +95,57 @@ std::vector<study::GridPoint> grid() {
   return points;
 }
 
+// As study::expand_convergence: each case at each mesh scale, numbered after the grid.
+std::vector<study::GridPoint> convergence_points() {
+  std::vector<study::GridPoint> points;
+  int index = kSyntheticPoints;
+  for (const SyntheticCase& c : kConvergenceCases)
+    for (double scale : kConvergenceScales)
+      points.push_back(
+          {index++, c.modulus_ratio, c.length_ratio, c.kinetic_energy, {{"mesh_scale", scale}}});
+  return points;
+}
+
 }  // namespace
 
 double synthetic_final_error(double modulus_ratio) {
   return 0.4 * (1.0 - std::log10(modulus_ratio) / 6.0);
 }
 
+double synthetic_normalised_runtime(ImpactModel model, double modulus_ratio, double length_ratio) {
+  return average_iteration_seconds(model, length_ratio, 1.0) /
+         initial_stable_dt(model, modulus_ratio, 1.0);
+}
+
+double synthetic_wall_seconds(ImpactModel model, double modulus_ratio, double length_ratio,
+                              double scale) {
+  return average_iteration_seconds(model, length_ratio, scale) *
+         static_cast<double>(steps_until(kFinalTime, model, modulus_ratio, scale));
+}
+
+double synthetic_convergence_error(ImpactModel model, double modulus_ratio, double scale) {
+  return model == ImpactModel::ccm ? 0.1 * (scale - finest_scale())
+                                   : synthetic_final_error(modulus_ratio);
+}
+
 void write_synthetic_study(const std::filesystem::path& file) {
   db::StudyStore store(file);
   store.open_study("synthetic", "gridhash0123");
   const auto provenance = db::current_provenance("gridhash0123");
-  std::vector<study::PointMetrics> metrics;
-  for (const study::GridPoint& p : grid()) {
-    store.add_grid_point(p);
-    const auto ccm_run = run(p, ImpactModel::ccm);
-    const auto rigid_run = run(p, ImpactModel::rigid);
-    store.record_run(ccm_run, provenance);
-    store.record_run(rigid_run, provenance);
-    metrics.push_back(study::compute_point_metrics(ccm_run, rigid_run));
-    store.save_metrics(metrics.back());
-  }
-  store.save_fits(study::fit_study(metrics));
+  std::vector<study::PointMetrics> grid_metrics;
+  for (const auto& [points, is_grid] :
+       {std::pair{grid(), true}, std::pair{convergence_points(), false}})
+    for (const study::GridPoint& p : points) {
+      store.add_grid_point(p);
+      const auto ccm_run = run(p, ImpactModel::ccm);
+      const auto rigid_run = run(p, ImpactModel::rigid);
+      store.record_run(ccm_run, provenance);
+      store.record_run(rigid_run, provenance);
+      const auto metrics = study::compute_point_metrics(ccm_run, rigid_run);
+      store.save_metrics(metrics);
+      if (is_grid) grid_metrics.push_back(metrics);
+    }
+  store.save_fits(study::fit_study(grid_metrics));  // as `ccm study run`: the main grid only
 }
 
 }  // namespace ccm::test

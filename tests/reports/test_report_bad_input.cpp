@@ -1,4 +1,5 @@
-// `ccm report` on bad input: each a clear message naming the file, exit code 2, nothing written.
+// `ccm report` on bad input: each a clear message naming the file, exit code 2, nothing written;
+// and an older store, migrated and reported.
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -8,7 +9,10 @@
 
 #include "db/schema/migrations.hpp"
 #include "db/sqlite/connection.hpp"
+#include "db/store/provenance.hpp"
 #include "db/store/study_store.hpp"
+#include "tests/reports/synthetic_study.hpp"
+#include "tests/reports/text_file.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace ccm {
@@ -42,7 +46,8 @@ void check_refused(const test::TempDir& dir, const fs::path& db, const std::stri
   CHECK_FALSE(fs::exists(dir.path / "report"));
 }
 
-TEST_CASE("ccm report refuses a missing, foreign, newer or empty database", "[reports]") {
+TEST_CASE("ccm report refuses a missing, foreign, newer or empty database, or an unrun study",
+          "[reports]") {
   test::TempDir dir;
   SECTION("missing file") {
     check_refused(dir, dir.path / "nope.sqlite", "no such study database");
@@ -75,6 +80,22 @@ TEST_CASE("ccm report refuses a missing, foreign, newer or empty database", "[re
     db::StudyStore(file).open_study("empty-study", "hash");
     check_refused(dir, file, "no grid points");
   }
+  SECTION("a study whose runs are all pending, running or failed") {
+    const fs::path file = dir.path / "unrun.sqlite";
+    {
+      db::StudyStore store(file);
+      store.open_study("unrun-study", "hash");
+      const study::GridPoint a{0, 1.0, 0.5, 10.0, {}}, b{1, 1e2, 0.5, 10.0, {}};
+      store.add_grid_point(a);
+      store.add_grid_point(b);
+      const auto provenance = db::current_provenance("hash");
+      store.mark_running(a, study::ImpactModel::ccm, provenance, db::utc_now());
+      store.record_failure(a, study::ImpactModel::rigid, "mesh generation failed", provenance);
+    }
+    check_refused(dir, file,
+                  "has 2 grid points but no completed or unstable run yet (1 of its 4 "
+                  "runs failed");
+  }
 }
 
 TEST_CASE("ccm report migrates a store of an older schema before reading it", "[reports]") {
@@ -89,6 +110,34 @@ TEST_CASE("ccm report migrates a store of an older schema before reading it", "[
   }
   // Migrated, then refused for what it holds (a study of no points), not for its schema.
   check_refused(dir, file, "no grid points");
+  db::Connection c(file);
+  CHECK(db::schema_version(c) == db::latest_schema_version());
+}
+
+TEST_CASE("ccm report migrates an older store holding runs and reports them", "[reports]") {
+  test::TempDir dir;
+  const fs::path file = dir.path / "v1.sqlite";
+  test::write_synthetic_study(file);
+  {
+    // A schema-1 store: the run ledger (schema step 1) without the tables of step 2.
+    db::Connection c(file);
+    c.exec("DROP TABLE fit_points; DROP TABLE fit_terms; DROP TABLE fits; DROP TABLE metrics;");
+    c.exec("PRAGMA user_version = 1");
+  }
+  const fs::path out = dir.path / "report";
+  const std::string command = std::string(CCM_BINARY) + " report --db '" + file.string() +
+                              "' --out '" + out.string() + "' >'" +
+                              (dir.path / "stdout.txt").string() + "' 2>&1";
+  const int status = std::system(command.c_str());
+  const std::string printed = test::read_text(dir.path / "stdout.txt");
+  INFO(printed);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(printed.find((out / "index.html").string()) != std::string::npos);
+  const std::string html = test::read_text(out / "index.html");
+  CHECK(html.find("No metrics are stored for this study") != std::string::npos);
+  CHECK(fs::exists(out / "fig-total-runtime.svg"));  // the runs are reported
+  CHECK(fs::exists(out / "fig-convergence-error-vs-time.svg"));
   db::Connection c(file);
   CHECK(db::schema_version(c) == db::latest_schema_version());
 }

@@ -4,6 +4,7 @@
 
 #include "reports/report_error.hpp"
 #include "reports/write/report_writer.hpp"
+#include "tests/reports/text_file.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace ccm::reports {
@@ -13,7 +14,8 @@ namespace fs = std::filesystem;
 
 ReportContent one_figure_report(const std::string& figure_id) {
   Section s{.id = "s", .title = "S"};
-  s.figures.push_back({figure_id, "caption", "<?xml version=\"1.0\"?>\n<svg></svg>\n"});
+  s.figures.push_back(Figure{
+      .id = figure_id, .caption = "caption", .svg = "<?xml version=\"1.0\"?>\n<svg></svg>\n"});
   s.tables.push_back(Table{"t-" + figure_id, "caption", {"a"}, {{"1"}}});
   return ReportContent{.title = "T", .sections = {s}};
 }
@@ -31,8 +33,7 @@ TEST_CASE("write_report replaces the folder whole and leaves no staging folder",
   CHECK_FALSE(fs::exists(out / "first.svg"));
   CHECK_FALSE(fs::exists(out / "stale.txt"));
   // The page inlines the SVG element without its XML prolog.
-  std::ifstream page(out / "index.html");
-  const std::string html{std::istreambuf_iterator<char>(page), {}};
+  const std::string html = test::read_text(out / "index.html");
   CHECK(html.find("<svg></svg>") != std::string::npos);
   CHECK(html.find("<?xml") == std::string::npos);
   int entries = 0;

@@ -1,7 +1,9 @@
 // `ccm report` on a synthetic study: every figure and table file, a self-contained page (no URL
-// but in-page anchors), a clean re-run, and a headless-Chromium screenshot that is not blank.
+// but in-page anchors), the provenance, and a headless-Chromium screenshot that is not blank.
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <array>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
@@ -10,8 +12,10 @@
 #include <sstream>
 
 #include "study/cli/study_commands.hpp"
+#include "tests/reports/csv_reader.hpp"
 #include "tests/reports/png_size.hpp"
 #include "tests/reports/synthetic_study.hpp"
+#include "tests/reports/text_file.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace ccm {
@@ -19,12 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text;
 
 // Every value of `attribute="..."` in the page.
 std::vector<std::string> attribute_values(const std::string& html, const std::string& attribute) {
@@ -62,7 +61,7 @@ bool screenshot(const std::string& chromium, const fs::path& page, const fs::pat
 }
 
 // One report of the synthetic study through the command, shared by the tests below (it runs
-// gnuplot for 26 figures: built once per test run).
+// gnuplot for 28 figures: built once per test process).
 struct SharedReport {
   test::TempDir dir;
   fs::path out = dir.path / "report";
@@ -79,53 +78,91 @@ const SharedReport& shared_report() {
   return report;
 }
 
-TEST_CASE("ccm report: every figure of the page is also its own SVG, every table a CSV",
+// Host name as gethostname reports it (the provenance's "machine").
+std::string this_host() {
+  std::array<char, 256> name{};
+  return gethostname(name.data(), name.size() - 1) == 0 ? std::string(name.data()) : "unknown";
+}
+
+// The value column of a two-column provenance.csv row, by its item name.
+std::string provenance_value(const test::CsvRows& rows, const std::string& item) {
+  for (const auto& row : rows)
+    if (row.size() == 2 && row[0] == item) return row[1];
+  FAIL("provenance.csv has no row \"" << item << "\"");
+  return {};
+}
+
+// One test case (sections share the one report built per process).
+TEST_CASE("ccm report on the synthetic study: files, self-contained page, provenance",
           "[reports]") {
   const fs::path& out = shared_report().out;
   const std::string& html = shared_report().html;
-  const auto figure_ids = attribute_values(html, "<figure id");
-  // 3 per-point timing figures, 4 corner histories, 6 errors, 2 NT, 2 KE x 4 fits,
-  // error against RTR, 2 recommendation maps.
-  CHECK(figure_ids.size() == 3 + 4 + 6 + 2 + 8 + 1 + 2);
-  for (const auto& id : figure_ids) {
-    INFO(id);
-    CHECK(fs::exists(out / (id + ".svg")));
-    CHECK(read_text(out / (id + ".svg")).find("<svg") != std::string::npos);
-  }
-  const auto table_ids = attribute_values(html, "<table id");
-  CHECK(table_ids.size() == 3);  // stability, fits, provenance (no convergence runs)
-  for (const auto& id : table_ids) {
-    INFO(id);
-    CHECK(fs::exists(out / (id + ".csv")));
-  }
-  CHECK(fs::exists(out / "fig-recommendation-ke-100.svg"));
-  CHECK(fs::exists(out / "fig-ke-history-point-23.svg"));  // ER 1e6, RLS 1.5, KE 100 J
-  std::istringstream csv(read_text(out / "stability.csv"));
-  int lines = 0;
-  for (std::string line; std::getline(csv, line);) ++lines;
-  CHECK(lines == 1 + 2 * test::kSyntheticPoints);  // header + one row per run
-}
 
-TEST_CASE("ccm report: no URL other than in-page anchors, no script", "[reports]") {
-  const std::string& html = shared_report().html;
-  const auto hrefs = attribute_values(html, "href");
-  CHECK(hrefs.size() >= 7);  // the table of contents
-  for (const auto& href : hrefs) CHECK(href.rfind('#', 0) == 0);
-  CHECK(attribute_values(html, "src").empty());
-  CHECK(html.find("<script") == std::string::npos);
-  CHECK(html.find("<link") == std::string::npos);
-  CHECK(html.find("url(") == std::string::npos);
-  CHECK(only_namespace_urls(html));
-}
+  SECTION("every figure of the page is also its own SVG, every table a CSV") {
+    const auto figure_ids = attribute_values(html, "<figure id");
+    // 3 per-point timing figures, 4 corner histories, 6 errors, 2 NT with surfaces, 2 KE x 4
+    // fits, error against RTR, 2 convergence figures, 2 recommendation maps.
+    CHECK(figure_ids.size() == 3 + 4 + 6 + 2 + 8 + 1 + 2 + 2);
+    for (const auto& id : figure_ids) {
+      INFO(id);
+      CHECK(fs::exists(out / (id + ".svg")));
+      CHECK(read_text(out / (id + ".svg")).find("<svg") != std::string::npos);
+    }
+    const auto table_ids = attribute_values(html, "<table id");
+    CHECK(table_ids == std::vector<std::string>{"stability", "fits", "convergence", "provenance"});
+    for (const auto& id : table_ids) {
+      INFO(id);
+      CHECK(fs::exists(out / (id + ".csv")));
+    }
+    for (const char* figure :
+         {"fig-recommendation-ke-100", "fig-ke-history-point-23",  // ER 1e6, RLS 1.5, KE 100 J
+          "fig-normalised-runtime-ke-10", "fig-normalised-runtime-ke-100",
+          "fig-convergence-error-vs-time", "fig-convergence-accuracy-per-second"}) {
+      INFO(figure);
+      CHECK(fs::exists(out / (std::string(figure) + ".svg")));
+    }
+    // header + one row per run, convergence runs included
+    CHECK(test::read_csv(out / "stability.csv").size() ==
+          1 + 2 * (test::kSyntheticPoints + test::kConvergencePoints));
+    CHECK(test::read_csv(out / "convergence.csv").size() == 1 + 2 * test::kConvergencePoints);
+  }
 
-TEST_CASE("ccm report: the rig is said to be missing; provenance names grid and scenes",
-          "[reports]") {
-  const std::string& html = shared_report().html;
-  CHECK(html.find("id=\"rig\"") != std::string::npos);
-  CHECK(html.find("have not landed") != std::string::npos);
-  CHECK(html.find("gridhash0123") != std::string::npos);
-  CHECK(html.find("ccmscenehash") != std::string::npos);
-  CHECK(html.find(test::kUnstableReason) != std::string::npos);
+  SECTION("no URL other than in-page anchors, no script") {
+    const auto hrefs = attribute_values(html, "href");
+    CHECK(hrefs.size() >= 7);  // the table of contents
+    for (const auto& href : hrefs) CHECK(href.rfind('#', 0) == 0);
+    CHECK(attribute_values(html, "src").empty());
+    CHECK(html.find("<script") == std::string::npos);
+    CHECK(html.find("<link") == std::string::npos);
+    CHECK(html.find("url(") == std::string::npos);
+    CHECK(only_namespace_urls(html));
+  }
+
+  SECTION("the rig is said to be missing; the unstable run's reason is shown") {
+    CHECK(html.find("id=\"rig\"") != std::string::npos);
+    CHECK(html.find("have not landed") != std::string::npos);
+    CHECK(html.find(test::kUnstableReason) != std::string::npos);
+  }
+
+  SECTION("provenance: ccm version and git hash, dates, grid and scene hashes, machine") {
+    const auto rows = test::read_csv(out / "provenance.csv");
+    REQUIRE(rows.size() == 13);  // header + 12 items
+    const std::string version = std::string(CCM_VERSION) + " (git " + CCM_GIT_HASH + ")";
+    CHECK(provenance_value(rows, "study") == "synthetic");
+    CHECK(provenance_value(rows, "grid file hash") == "gridhash0123");
+    CHECK(provenance_value(rows, "runs: scene content hashes") == "ccmscenehash; rigidscenehash");
+    CHECK(provenance_value(rows, "runs: ccm version (git hash)") == version);
+    CHECK(provenance_value(rows, "report: ccm version") == version);
+    CHECK(provenance_value(rows, "runs: machines") == this_host());
+    CHECK(provenance_value(rows, "report: machine") == this_host());
+    CHECK(provenance_value(rows, "runs: first started") == "2026-11-22T05:00:00.000Z");
+    CHECK(provenance_value(rows, "runs: last ended") == "2026-11-22T05:01:00.000Z");
+    // Written now by the store and the report: ISO 8601 UTC with milliseconds.
+    const std::regex utc(R"(\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}\.\d{3}Z)");
+    CHECK(std::regex_match(provenance_value(rows, "study created"), utc));
+    CHECK(std::regex_match(provenance_value(rows, "report: generated"), utc));
+    CHECK(html.find(version) != std::string::npos);
+  }
 }
 
 TEST_CASE("ccm report: headless Chromium renders the page, and it is not blank", "[reports]") {

@@ -4,9 +4,9 @@
 
 #include "db/store/study_store.hpp"
 #include "reports/data/report_loader.hpp"
-#include "reports/figures/fit_section.hpp"
 #include "reports/figures/recommendation_map.hpp"
 #include "reports/figures/stability_section.hpp"
+#include "reports/figures/surface_series.hpp"
 #include "reports/figures/trade_study_section.hpp"
 #include "reports/plot/gnuplot.hpp"
 #include "reports/tables/table.hpp"
@@ -22,6 +22,11 @@ TEST_CASE("surface_equation writes every term with its sign and powers", "[repor
   CHECK(surface_equation(s, "w") == "w = 1.5 + 0.25 y - 3e-05 y^2 - 2 x + 4 x y");
   s.terms = {{0, 0, -0.5}};
   CHECK(surface_equation(s, "z") == "z = -0.5");
+  // Rounding noise of an exact fit (below 1e-12 of the largest coefficient) is left out.
+  s.terms = {{0, 0, 3e-17}, {0, 1, 0.30103}, {1, 0, -2e-13}};
+  CHECK(surface_equation(s, "z") == "z = 0.301 y");
+  s.terms = {{0, 0, 3e-13}, {0, 1, 0.1}};
+  CHECK(surface_equation(s, "z") == "z = 3e-13 + 0.1 y");
   s.terms.clear();
   CHECK(surface_equation(s, "z") == "z = 0");
 }
@@ -31,8 +36,12 @@ TEST_CASE("tables are written as RFC 4180 CSV and escaped HTML", "[reports]") {
   CHECK(to_csv(t) == "a,b [m]\n\"1,5\",\"say \"\"hi\"\"\"\nx,<y>\n");
   const std::string html = to_html(t);
   CHECK(html.find("caption &lt;b&gt;") != std::string::npos);
-  CHECK(html.find("<td>&lt;y&gt;</td>") != std::string::npos);
+  CHECK(html.find("<td class=\"nw\">&lt;y&gt;</td>") != std::string::npos);
   CHECK(html.find("<y>") == std::string::npos);
+  // Short cells stay on one line, long ones (a reason, a list of hashes) may wrap.
+  const Table wide{"w", "c", {"h"}, {{"ER 100, RLS 1, KE 100 J"}, {std::string(40, 'a')}}};
+  CHECK(to_html(wide).find("<td class=\"nw\">ER 100, RLS 1, KE 100 J</td>") != std::string::npos);
+  CHECK(to_html(wide).find("<td>" + std::string(40, 'a') + "</td>") != std::string::npos);
 }
 
 TEST_CASE("an axis is logarithmic when positive values span two decades", "[reports]") {
@@ -55,6 +64,28 @@ TEST_CASE("gnuplot scripts label axes, name series and quote text", "[reports]")
   CHECK(script.find("series-1.dat") == std::string::npos);  // empty series left out
   CHECK(script.find("'series-2.dat' using 1:2 with lines") != std::string::npos);
   CHECK(script.find("title \"rigid\"") != std::string::npos);
+  CHECK(script.find("set key below Left reverse box height 1") != std::string::npos);
+  CHECK(script.find("set xlabel \"time [s]\" offset 0,0.3") != std::string::npos);
+  CHECK(script.find("set xtics") == std::string::npos);
+}
+
+TEST_CASE("gnuplot scripts: whole-number tics on an index axis, map cells as boxes", "[reports]") {
+  PlotSpec index{.x_label = "index [-]", .y_label = "t [s]", .integer_x = true};
+  index.series = {Series{.title = "a", .x = {0, 1, 2, 3}, .y = {1, 2, 3, 4}}};
+  CHECK(gnuplot_script(index, "f.svg").find("set xtics 1\n") != std::string::npos);
+  index.series[0].x = {0, 35};
+  CHECK(gnuplot_script(index, "f.svg").find("set xtics 4\n") != std::string::npos);
+  // Cells of half a decade by 0.1 on a log x axis: x 10^-0.5 .. x 10^0.5, y - 0.1 .. y + 0.1.
+  PlotSpec map{.x_label = "ER [-]", .y_label = "RLS [-]", .log_x = true};
+  map.series = {Series{.title = "use CCM at KE 1 J",
+                       .style = SeriesStyle::cells,
+                       .x = {1.0},
+                       .y = {1.0},
+                       .cell_dx = 0.5,
+                       .cell_dy = 0.1}};
+  const std::string script = gnuplot_script(map, "f.svg");
+  CHECK(script.find("using 1:2:($1*10**(-0.5)):($1*10**(0.5)):($2-0.10000000000000001):($2+"
+                    "0.10000000000000001) with boxxyerror fs solid") != std::string::npos);
 }
 
 TEST_CASE("rendering a plot without data is an error naming the figure", "[reports]") {
@@ -85,12 +116,18 @@ TEST_CASE("synthetic study: stability table and recommendation map against close
   db::StudyStore store(dir.path / "study.sqlite");
   REQUIRE(store.open_existing_study());
   const ReportData data = load_report_data(store);
-  REQUIRE(data.status.size() == test::kSyntheticPoints);
-  REQUIRE(data.runs.size() == 2 * test::kSyntheticPoints);
+  constexpr int kPoints = test::kSyntheticPoints + test::kConvergencePoints;
+  REQUIRE(data.status.size() == kPoints);
+  REQUIRE(data.runs.size() == 2 * kPoints);
+  REQUIRE(data.grid.size() == test::kSyntheticPoints);
+  REQUIRE(data.convergence.size() == test::kConvergencePoints);
 
   SECTION("one row per run; the unstable run with its reason, time and step range") {
     const Table t = stability_table(data);
-    REQUIRE(t.rows.size() == 2 * test::kSyntheticPoints);
+    REQUIRE(t.rows.size() == 2 * kPoints);
+    CHECK(t.header == std::vector<std::string>{
+                          "point", "case", "model", "verdict", "reason", "dt min [s]", "dt max [s]",
+                          "max energy-balance error [-]", "steps", "unstable at [s]"});
     const auto& row = t.rows[2 * test::kUnstablePointIndex + 1];  // its rigid run
     CHECK(row[2] == "rigid");
     CHECK(row[3] == "unstable");
@@ -100,6 +137,11 @@ TEST_CASE("synthetic study: stability table and recommendation map against close
     CHECK(row[7] == "0.2");
     CHECK(row[8] == "1200");  // 0.12 s / 1e-4 s
     CHECK(row[9] == "0.12");
+    // A convergence run's case names its mesh scale: its row is not the grid point's twin.
+    const auto& convergence = t.rows[2 * test::kSyntheticPoints];  // point 24, its CCM run
+    CHECK(convergence[0] == "24");
+    CHECK(convergence[1] == "ER 100, RLS 1, KE 100 J, mesh_scale 2");
+    CHECK(t.rows[2 * 17][1] == "ER 100, RLS 1, KE 100 J");  // the grid point of that case
   }
 
   SECTION("rigid exactly where the final-state error 0.4 (1 - log10 ER / 6) is below 0.1") {

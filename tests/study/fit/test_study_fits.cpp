@@ -19,6 +19,8 @@ PointMetrics synthetic_point(int index, double er, double rls, double ke) {
   m.runtime_ratio = 1.0 + 2.0 * x;
   m.weighting = {s * (0.06 - 0.01 * x), s * 0.02 * rls, s * 0.05};
   m.cumulative = {s, 2.0 * s, 3.0 * s};
+  m.ccm.normalised_runtime = 2.0 * std::sqrt(er);   // log10 NT = log10 2 + x / 2
+  m.rigid.normalised_runtime = std::pow(2.0, rls);  // log10 NT = y log10 2
   return m;
 }
 
@@ -53,4 +55,14 @@ TEST_CASE("every metric is fitted per KE level; unusable points are excluded vis
   CHECK(u_max->fit.samples.size() == 12);
   CHECK(u_max->fit.surface(2.0, 1.2) == Approx(0.3 - 0.1 + 0.12).margin(1e-10));
   CHECK(fits.find(Metric::runtime_ratio, 50.0) == nullptr);
+
+  // NT is fitted in log10 (Fig. 2-28): power laws in ER and RLS come out as planes.
+  const MetricFit* nt_ccm = fits.find(Metric::log10_nt_ccm, 100.0);
+  const MetricFit* nt_rigid = fits.find(Metric::log10_nt_rigid, 100.0);
+  REQUIRE(nt_ccm);
+  REQUIRE(nt_rigid);
+  CHECK(nt_ccm->fit.surface.degree == SurfaceDegree{1, 0});
+  CHECK(nt_rigid->fit.surface.degree == SurfaceDegree{0, 1});
+  CHECK(nt_ccm->fit.surface(2.5, 0.7) == Approx(std::log10(2.0) + 1.25).margin(1e-10));
+  CHECK(nt_rigid->fit.surface(2.5, 0.7) == Approx(0.7 * std::log10(2.0)).margin(1e-10));
 }
