@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -18,12 +19,46 @@ bool pressure_nonzero_at(const TimeSeries& pressure, double t) {
   return ts[k] != t && k > 0 && pressure.value[k - 1] > 0.0;
 }
 
+namespace {
+
+TimeSeries part(const TimeSeries& s, size_t from, size_t to) {
+  return {{s.t.begin() + static_cast<long>(from), s.t.begin() + static_cast<long>(to)},
+          {s.value.begin() + static_cast<long>(from), s.value.begin() + static_cast<long>(to)}};
+}
+
+void append(TimeSeries& to, const TimeSeries& from) {
+  to.t.insert(to.t.end(), from.t.begin(), from.t.end());
+  to.value.insert(to.value.end(), from.value.begin(), from.value.end());
+}
+
+}  // namespace
+
+LocalFit velocity_fit(const MeasuredTrial& trial, double half_window) {
+  const TimeSeries& v = trial.impactor_velocity_mps;
+  const auto& p = trial.pressure_kpa;
+  // The contact began after the last zero reading before the first non-zero one.
+  double t_contact = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < p.t.size(); ++k)
+    if (p.value[k] > 0.0) {
+      t_contact = k > 0 ? p.t[k - 1] : p.t[k];
+      break;
+    }
+  const size_t split =
+      static_cast<size_t>(std::upper_bound(v.t.begin(), v.t.end(), t_contact) - v.t.begin());
+  if (split < 4 || v.t.size() - split < 4) return local_quadratic_fit(v, half_window);
+  LocalFit before = local_quadratic_fit(part(v, 0, split), half_window);
+  const LocalFit after = local_quadratic_fit(part(v, split, v.t.size()), half_window);
+  append(before.value, after.value);
+  append(before.derivative, after.derivative);
+  return before;
+}
+
 OpenLoopDrive open_loop_drive(const MeasuredTrial& trial, double impactor_mass,
                               double half_window) {
   if (!(impactor_mass > 0.0))
     throw std::invalid_argument(
         fmt::format("open-loop drive: impactor mass must be > 0 (got {})", impactor_mass));
-  const LocalFit fit = local_quadratic_fit(trial.impactor_velocity_mps, half_window);
+  const LocalFit fit = velocity_fit(trial, half_window);
   OpenLoopDrive d;
   d.smoothed_velocity = fit.value;
   d.force_n = fit.derivative;

@@ -3,7 +3,8 @@
 // the input force through the known mass of the impactor ... whenever the experimental pressure,
 // P, was non-zero and the differentiated input force was negative, the input force was instead
 // forced to zero" (EQUATIONS.md, Rig post-processing):
-//   F_in(t_k) = M_i dV_i/dt (t_k)   (V_i smoothed by a local quadratic fit, local_fit.hpp)
+//   F_in(t_k) = M_i dV_i/dt (t_k)   (V_i smoothed by a local quadratic fit, local_fit.hpp,
+//                                     that does not reach across the first measured contact)
 //   F_in(t_k) = 0 where F_in(t_k) < 0 and the measured P is non-zero at t_k
 // at the velocity samples t_k, linear in between; it acts on the impactor's drive surface (the
 // bracket, Fig. 3-16) along the track.
@@ -26,6 +27,14 @@ struct OpenLoopDrive {
 // Throws std::invalid_argument when the mass is not positive or the velocity cannot be
 // smoothed (too few samples in a window, see local_fit.hpp).
 OpenLoopDrive open_loop_drive(const MeasuredTrial& trial, double impactor_mass, double half_window);
+
+// The measured V_i smoothed by local quadratic fits (local_fit.hpp) on either side of the
+// contact's start, separately (the start: the last zero pressure reading before the first
+// non-zero one; velocity samples up to it are "before"): a window straddling the contact would read
+// the contact's deceleration as a brake before it (measured: on RX025 trial 2 the +-20 ms fit
+// turned the last 20 ms before contact into a deceleration of ~3 m/s^2, the measured V_i rising
+// at 1.7 m/s^2 there). A side with fewer than four samples is fitted with the other.
+LocalFit velocity_fit(const MeasuredTrial& trial, double half_window);
 
 // Whether the measured pressure is non-zero at t: a sample at or next to t (before or after)
 // reads above zero. Outside the pressure's span: false.

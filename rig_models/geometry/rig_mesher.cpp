@@ -108,6 +108,14 @@ void require_scale(double mesh_scale) {
 // engine/mesh/gmsh_mesher.cpp): a coarsened size stops there.
 double curved(double size, double radius) { return std::min(size, radius); }
 
+// On a pipe of wall w, chords of length h sag h^2 / (8 R) inside the curved faces: beyond
+// about w / 2 the surface meshes of the two faces come close enough to cross (Gmsh: "PLC Error:
+// a segment and a facet intersect"; seen at h = 26 mm, R = 26 mm, w = 3.9 mm). A coarsened size
+// stops at h = sqrt(4 R w) (20 mm for the 2 in. pipe).
+double wall_limited(double size, double radius, double wall) {
+  return std::min(curved(size, radius), std::sqrt(4.0 * radius * wall));
+}
+
 // A cylinder along y: base centre (0, y0, z), length `length`, radius r.
 int y_cylinder(double y0, double z, double length, double r) {
   return occ::addCylinder(0, y0, z, 0, length, 0, r);
@@ -126,18 +134,27 @@ TetMesh mesh_artifact(const RigGeometry& geometry, const RigParameters& rig, dou
     const double split = a.core_split.value;
     const int outer = occ::addCylinder(0, 0, zt - L, 0, 0, L, Ro);
     const Tags pipe = cut(outer, occ::addCylinder(0, 0, zt - 2 * L, 0, 0, 3 * L, Ri));
-    const int upper = occ::addBox(-w / 2, -w / 2, -split, w, w, split + a.core_top.value);
-    const Tags core_upper =
-        cut(upper, occ::addCylinder(-w, 0, 0, 2 * w, 0, 0, a.pin_diameter.value / 2));
-    const int lower =
-        occ::addBox(-w / 2, -w / 2, -a.core_bottom.value, w, w, a.core_bottom.value - split);
-    auto stabilizer = [&](double depth) {
-      const int disc = occ::addCylinder(0, 0, -depth - t / 2, 0, 0, t, Ri);
-      return cut(disc, occ::addBox(-w / 2, -w / 2, -depth - t, w, w, 2 * t));
+    // The stabilizers are full discs across the bore, the core bar interrupted by them: a disc
+    // with a square hole would leave a thin ring that Gmsh's surface meshes cross at coarse sizes.
+    auto disc = [&](double depth) { return occ::addCylinder(0, 0, -depth - t / 2, 0, 0, t, Ri); };
+    auto disc_tool = [&](double depth) {  // the disc's slab, wide enough to cut the bar through
+      return occ::addBox(-w, -w, -depth - t / 2, 2 * w, 2 * w, t);
     };
-    const Tags stab_upper = stabilizer(a.stabilizer_upper_depth.value);
-    const Tags stab_lower = stabilizer(a.stabilizer_lower_depth.value);
-    const std::vector<Tags> parts = fragment({pipe, core_upper, {lower}, stab_upper, stab_lower});
+    const double d_up = a.stabilizer_upper_depth.value, d_low = a.stabilizer_lower_depth.value;
+    const int upper = occ::addBox(-w / 2, -w / 2, -split, w, w, split + a.core_top.value);
+    const Tags upper_bored =
+        cut(upper, occ::addCylinder(-w, 0, 0, 2 * w, 0, 0, a.pin_diameter.value / 2));
+    Tags core_upper;
+    for (int piece : upper_bored) {
+      const Tags cut_pieces = cut(piece, disc_tool(d_up));
+      core_upper.insert(core_upper.end(), cut_pieces.begin(), cut_pieces.end());
+    }
+    const int lower_box =
+        occ::addBox(-w / 2, -w / 2, -a.core_bottom.value, w, w, a.core_bottom.value - split);
+    const Tags lower = cut(lower_box, disc_tool(d_low));
+    const Tags stab_upper{disc(d_up)};
+    const Tags stab_lower{disc(d_low)};
+    const std::vector<Tags> parts = fragment({pipe, core_upper, lower, stab_upper, stab_lower});
     occ::synchronize();
     name_region(parts[0], "envelope");
     Tags up = parts[1], low = parts[2];
@@ -147,12 +164,12 @@ TetMesh mesh_artifact(const RigGeometry& geometry, const RigParameters& rig, dou
     name_region(low, "core_lower");
     // Sizes: the core, and the envelope near the contact point (y = -Ro, z = -depth).
     const double zone = a.contact_zone.value / 2, depth = rig.pivot_to_sensor.value;
-    const double big = curved(m.envelope.value * mesh_scale, Ri);
+    const double big = wall_limited(m.envelope.value * mesh_scale, Ri, a.envelope_wall.value);
     const int core =
         box_field(Vec3(-w / 2, -w / 2, -a.core_bottom.value), Vec3(w / 2, w / 2, a.core_top.value),
                   1e-6, m.core.value * mesh_scale, big);
     const int contact = box_field(Vec3(-zone, -Ro, -depth - zone), Vec3(zone, -Ri, -depth + zone),
-                                  1e-6, std::min(m.envelope_contact.value * mesh_scale, big), big);
+                                  1e-6, std::min(m.envelope_contact.value, big), big);
     use_fields({core, contact}, big);
     generate();
   });
@@ -183,7 +200,7 @@ TetMesh mesh_impactor(const RigGeometry& geometry, const RigParameters& rig, Imp
     if (flexible) name_region(parts[2], "spring");
     const double big = m.carriage.value * mesh_scale;
     std::vector<int> fields{box_field(Vec3(-rr, y_front, zc - rr), Vec3(rr, tip_y, zc + rr), 1e-6,
-                                      curved(m.rod.value * mesh_scale, rr), big)};
+                                      curved(m.rod.value, rr), big)};
     if (flexible)
       fields.push_back(box_field(Vec3(-rs, y_front, zc - rs), Vec3(rs, y_front + Ls, zc + rs), 1e-6,
                                  curved(m.spring.value * mesh_scale, rs), big));
