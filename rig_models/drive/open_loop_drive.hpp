@@ -32,8 +32,8 @@ OpenLoopDrive open_loop_drive(const MeasuredTrial& trial, double impactor_mass, 
 // contact's start, separately (the start: the last zero pressure reading before the first
 // non-zero one; velocity samples up to it are "before"): a window straddling the contact would read
 // the contact's deceleration as a brake before it (measured: on RX025 trial 2 the +-20 ms fit
-// turned the last 20 ms before contact into a deceleration of ~3 m/s^2, the measured V_i rising
-// at 1.7 m/s^2 there). A side with fewer than four samples is fitted with the other.
+// turned the last 20 ms before contact into a deceleration of ~2 m/s^2, the measured V_i rising
+// at 1.6 m/s^2 there). A side with fewer than four samples is fitted with the other.
 LocalFit velocity_fit(const MeasuredTrial& trial, double half_window);
 
 // Whether the measured pressure is non-zero at t: a sample at or next to t (before or after)

@@ -62,6 +62,7 @@ RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, bool fric
   f.pin_nodes = static_cast<int>(rig.pin_nodes.size());
   f.guide_nodes = static_cast<int>(rig.guide_nodes.size());
   f.frictional_pin = frictional_pin;
+  f.parts = rig.parts;
   return f;
 }
 

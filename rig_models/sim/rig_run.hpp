@@ -11,6 +11,7 @@
 #include "engine/solver/explicit_integrator.hpp"
 #include "rig_models/compare/case_comparison.hpp"
 #include "rig_models/geometry/rig_geometry.hpp"
+#include "rig_models/geometry/rig_model.hpp"
 #include "rig_models/sim/run_parameters.hpp"
 #include "rig_models/sim/run_window.hpp"
 
@@ -34,6 +35,7 @@ struct RigModelFacts {
   double spring_modulus = 0.0, spring_stiffness = 0.0;
   int pin_nodes = 0, guide_nodes = 0;
   bool frictional_pin = false;  // a pin joint with friction holds the artifact
+  std::vector<RigPart> parts;   // material, mass and elements of each part
 };
 
 // The raw simulated histories at the output samples (trial time).

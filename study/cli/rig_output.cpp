@@ -106,6 +106,10 @@ std::string run_table(const RigInputs& in, const RigRunOutcome& o) {
     row("spring",
         fmt::format("E_s {:.6g} Pa (eq. 3.1, K_s {:g} N/m)", m.spring_modulus, m.spring_stiffness));
   row("mesh", fmt::format("{} elements, {} nodes", m.n_elements, m.n_nodes));
+  for (const rig::RigPart& p : m.parts)
+    row("", fmt::format("{:<11} {:>5} el., {:.4g} kg, rho {:.5g} kg/m^3 ({}), E {:.4g} Pa", p.name,
+                        p.elements, p.mass, p.material.rho,
+                        p.density_source.starts_with("tuned") ? "tuned" : "given", p.material.E));
   row("steps", fmt::format("{}", s.steps));
   row("dt", fmt::format("initial {:.4g} s, min {:.4g} s, max {:.4g} s", s.dt_initial, s.dt_min,
                         s.dt_max));
