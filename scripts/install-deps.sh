@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libmetis-dev libopenmpi-dev openmpi-bin
   libsqlite3-dev sqlite3 libhdf5-dev hdf5-tools
   libfmt-dev libspdlog-dev catch2 libgmsh-dev
-  libcli11-dev libtomlplusplus-dev libnlopt-cxx-dev gnuplot-nox nlohmann-json3-dev
+  libcli11-dev libtomlplusplus-dev libnlopt-dev libnlopt-cxx-dev gnuplot-nox nlohmann-json3-dev
   chromium
 )
 

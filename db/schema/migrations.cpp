@@ -106,7 +106,133 @@ CREATE TABLE fit_points (
 );
 )sql";
 
-constexpr std::array<const char*, 2> kSteps = {kStep1, kStep2};
+// Step 3: the benchtop rig (issue 5): one row per rig simulation with its provenance, its
+// comparison with the measured trials (per channel and trial, and the spread over the trials),
+// the channels it was compared on, and the calibrations with their parameters and evaluations.
+constexpr const char* kStep3 = R"sql(
+CREATE TABLE rig_runs (
+  id INTEGER PRIMARY KEY,
+  case_code TEXT NOT NULL CHECK (length(case_code) = 5),
+  drive TEXT NOT NULL CHECK (drive IN ('open-loop', 'physical')),
+  drive_trial INTEGER,
+  parameters TEXT NOT NULL,
+  purpose TEXT NOT NULL CHECK (purpose IN ('run', 'calibration')),
+  status TEXT NOT NULL CHECK (status IN ('completed', 'unstable')),
+  reason TEXT NOT NULL DEFAULT '',
+  unstable_time REAL,
+  window_start REAL NOT NULL,
+  window_end REAL NOT NULL,
+  gap REAL NOT NULL,
+  initial_velocity REAL NOT NULL,
+  mesh_scale REAL NOT NULL CHECK (mesh_scale > 0),
+  n_elements INTEGER NOT NULL,
+  n_nodes INTEGER NOT NULL,
+  steps INTEGER NOT NULL,
+  dt_initial REAL,
+  dt_min REAL,
+  dt_max REAL,
+  wall_seconds REAL NOT NULL,
+  max_energy_error REAL,
+  impactor_mass REAL NOT NULL,
+  artifact_mass REAL NOT NULL,
+  artifact_inertia REAL NOT NULL,
+  sensor_area REAL NOT NULL,
+  sensor_mesh_area REAL NOT NULL,
+  objective REAL,
+  cases_hash TEXT NOT NULL,
+  geometry_hash TEXT NOT NULL,
+  data_dir TEXT NOT NULL DEFAULT '',
+  data_hash TEXT NOT NULL DEFAULT '',
+  ccm_version TEXT NOT NULL,
+  git_hash TEXT NOT NULL,
+  host TEXT NOT NULL CHECK (length(host) > 0),
+  pid INTEGER NOT NULL,
+  started_at TEXT NOT NULL,
+  ended_at TEXT NOT NULL
+);
+CREATE TABLE rig_channel_metrics (
+  run_id INTEGER NOT NULL REFERENCES rig_runs(id) ON DELETE CASCADE,
+  channel TEXT NOT NULL CHECK (channel IN ('velocity', 'angle', 'pressure')),
+  trial INTEGER NOT NULL CHECK (trial > 0),
+  n_samples INTEGER NOT NULL,
+  rmse REAL NOT NULL,
+  nrmse REAL,
+  peak_measured REAL NOT NULL,
+  peak_simulated REAL NOT NULL,
+  peak_error REAL NOT NULL,
+  peak_time_error REAL NOT NULL,
+  PRIMARY KEY (run_id, channel, trial)
+);
+CREATE TABLE rig_channel_spread (
+  run_id INTEGER NOT NULL REFERENCES rig_runs(id) ON DELETE CASCADE,
+  channel TEXT NOT NULL CHECK (channel IN ('velocity', 'angle', 'pressure', 'contact')),
+  metric TEXT NOT NULL,
+  n INTEGER NOT NULL,
+  mean REAL NOT NULL,
+  std_dev REAL NOT NULL,
+  min REAL NOT NULL,
+  max REAL NOT NULL,
+  PRIMARY KEY (run_id, channel, metric)
+);
+CREATE TABLE rig_contact (
+  run_id INTEGER NOT NULL REFERENCES rig_runs(id) ON DELETE CASCADE,
+  trial INTEGER NOT NULL CHECK (trial > 0),
+  measured_onset REAL,
+  measured_duration REAL,
+  simulated_onset REAL,
+  simulated_duration REAL,
+  onset_error REAL,
+  duration_error REAL,
+  PRIMARY KEY (run_id, trial)
+);
+CREATE TABLE rig_channel_samples (
+  run_id INTEGER NOT NULL REFERENCES rig_runs(id) ON DELETE CASCADE,
+  channel TEXT NOT NULL CHECK (channel IN ('velocity', 'angle', 'pressure')),
+  t REAL NOT NULL,
+  value REAL NOT NULL,
+  PRIMARY KEY (run_id, channel, t)
+);
+CREATE TABLE rig_calibrations (
+  id INTEGER PRIMARY KEY,
+  case_code TEXT NOT NULL,
+  drive TEXT NOT NULL,
+  algorithm TEXT NOT NULL,
+  objective_name TEXT NOT NULL,
+  result TEXT NOT NULL,
+  evaluations INTEGER NOT NULL,
+  max_evaluations INTEGER NOT NULL,
+  before_run_id INTEGER NOT NULL REFERENCES rig_runs(id),
+  after_run_id INTEGER NOT NULL REFERENCES rig_runs(id),
+  objective_before REAL NOT NULL,
+  objective_after REAL NOT NULL,
+  ccm_version TEXT NOT NULL,
+  git_hash TEXT NOT NULL,
+  host TEXT NOT NULL,
+  started_at TEXT NOT NULL,
+  ended_at TEXT NOT NULL
+);
+CREATE TABLE rig_calibration_parameters (
+  calibration_id INTEGER NOT NULL REFERENCES rig_calibrations(id) ON DELETE CASCADE,
+  name TEXT NOT NULL,
+  lower REAL NOT NULL,
+  upper REAL NOT NULL,
+  initial REAL NOT NULL,
+  final REAL NOT NULL,
+  PRIMARY KEY (calibration_id, name),
+  CHECK (lower <= initial AND initial <= upper AND lower <= final AND final <= upper)
+);
+CREATE TABLE rig_calibration_evaluations (
+  calibration_id INTEGER NOT NULL REFERENCES rig_calibrations(id) ON DELETE CASCADE,
+  evaluation INTEGER NOT NULL,
+  parameters TEXT NOT NULL,
+  objective REAL,
+  status TEXT NOT NULL,
+  wall_seconds REAL NOT NULL,
+  PRIMARY KEY (calibration_id, evaluation)
+);
+)sql";
+
+constexpr std::array<const char*, 3> kSteps = {kStep1, kStep2, kStep3};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

@@ -161,7 +161,8 @@ void orient_tet(Tet& t, const std::vector<Vec3>& x, size_t gmsh_tag, const std::
 
 struct Extracted {
   TetMesh mesh;
-  TagIndex node_tags;  // compact node i has Gmsh tag node_tags.tags()[i]
+  TagIndex node_tags;            // compact node i has Gmsh tag node_tags.tags()[i]
+  std::vector<size_t> tet_tags;  // Gmsh tag of mesh.tets[i], ascending
 };
 
 // All linear tets of the current model, ordered by Gmsh element tag, on a compact node numbering
@@ -172,7 +173,7 @@ Extracted extract_tets(const std::string& context) {
   if (elem_tags.empty())
     throw MeshError(fmt::format("{}: no linear tetrahedra (element type 4) found", context));
 
-  Extracted out{{}, TagIndex(elem_nodes)};
+  Extracted out{{}, TagIndex(elem_nodes), {}};
   out.mesh.nodes = node_coordinates(out.node_tags.tags(), context);
   out.mesh.tets.reserve(elem_tags.size());
   for (size_t e : sorted_order(elem_tags)) {
@@ -180,6 +181,7 @@ Extracted extract_tets(const std::string& context) {
     for (size_t k = 0; k < 4; ++k) t[k] = out.node_tags.find(elem_nodes[4 * e + k]);
     orient_tet(t, out.mesh.nodes, elem_tags[e], context);
     out.mesh.tets.push_back(t);
+    out.tet_tags.push_back(elem_tags[e]);
   }
   return out;
 }
@@ -281,6 +283,50 @@ std::map<std::string, std::vector<Triangle>> named_surfaces(const Extracted& ex,
     for (const GmshTriangle& g : list) triangles.push_back(outward_triangle(g, ex, table, where));
   }
   return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Regions (physical groups of dimension 3)
+
+// The region of every tet of `ex` from the named 3D physical groups; both lists stay empty when
+// there is none.
+void named_regions(const std::vector<size_t>& tet_tags, TetMesh& mesh, const std::string& context) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 3);
+  std::map<std::string, std::vector<int>> entities_by_name;  // groups sharing a name are merged
+  for (const auto& [dim, group] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, group, name);
+    if (name.empty()) continue;
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, group, entities);
+    auto& list = entities_by_name[name];
+    list.insert(list.end(), entities.begin(), entities.end());
+  }
+  if (entities_by_name.empty()) return;
+  const TagIndex tets(tet_tags);  // tet_tags[i] is the Gmsh tag of mesh.tets[i], ascending
+  mesh.tet_region.assign(mesh.tets.size(), -1);
+  for (const auto& [name, entities] : entities_by_name) {
+    const int region = static_cast<int>(mesh.region_names.size());
+    mesh.region_names.push_back(name);
+    for (int entity : entities) {
+      std::vector<size_t> tags, nodes;
+      gmsh::model::mesh::getElementsByType(kGmshTet4, tags, nodes, entity);
+      for (size_t tag : tags) {
+        const int i = tets.find(tag);
+        if (i < 0) continue;
+        int& r = mesh.tet_region[static_cast<size_t>(i)];
+        if (r >= 0 && r != region)
+          throw MeshError(fmt::format("{}: tetrahedron {} is in regions '{}' and '{}'", context,
+                                      tag, mesh.region_names[static_cast<size_t>(r)], name));
+        r = region;
+      }
+    }
+  }
+  for (size_t i = 0; i < mesh.tet_region.size(); ++i)
+    if (mesh.tet_region[i] < 0)
+      throw MeshError(
+          fmt::format("{}: tetrahedron {} is in no named region", context, tets.tags()[i]));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -501,9 +547,20 @@ TetMesh read_msh_file(const std::filesystem::path& path) {
         gmsh::open(link.path().string());
         Extracted ex = extract_tets(where);
         ex.mesh.named_surfaces = named_surfaces(ex, where);
+        named_regions(ex.tet_tags, ex.mesh, where);
         return std::move(ex.mesh);
       },
       link.path().string());
+}
+
+TetMesh mesh_gmsh_model(const std::string& context, const std::function<void()>& build) {
+  return with_gmsh(context, [&] {
+    build();
+    Extracted ex = extract_tets(context);
+    ex.mesh.named_surfaces = named_surfaces(ex, context);
+    named_regions(ex.tet_tags, ex.mesh, context);
+    return std::move(ex.mesh);
+  });
 }
 
 }  // namespace ccm

@@ -7,7 +7,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
+#include <string>
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/tet_mesh.hpp"
@@ -48,11 +50,22 @@ TetMesh mesh_primitive(const PrimitiveSpec& spec, const Placement& placement);
 
 // Reads the linear tets (element type 4) of a Gmsh MSH file (format 2 or 4, ASCII or binary),
 // with the same numbering and orientation guarantees as mesh_primitive. Every named physical group
-// of dimension 2 becomes a named surface of triangles oriented out of the tet each one bounds.
+// of dimension 2 becomes a named surface of triangles oriented out of the tet each one bounds, and
+// every named physical group of dimension 3 a region (see mesh_gmsh_model).
 // Throws MeshError, naming the path, if the file is missing, unreadable, does not start with
 // "$MeshFormat", holds no linear tets, or has a named triangle that is not a face of any tet.
 // Never executes scripts: not the file (Gmsh would parse a non-MSH file as a .geo script) nor a
 // "<path>.opt" beside it (which Gmsh would otherwise run).
 TetMesh read_msh_file(const std::filesystem::path& path);
+
+// Meshes a model the caller builds: `build` runs inside the same Gmsh session as the functions
+// above (the process-wide lock; Gmsh initialized without argv or configuration files) and must
+// leave a generated 3D mesh in the current model (OpenCASCADE booleans, mesh sizes, physical
+// groups and gmsh::model::mesh::generate(3) are its business). Returns its linear tets with the
+// guarantees of mesh_primitive; every named physical group of dimension 2 becomes a named
+// surface (as in read_msh_file) and every named physical group of dimension 3 a region, each tet
+// then belonging to exactly one region. Throws MeshError prefixed with `context` when Gmsh fails,
+// no tet was generated, or, when regions are named, a tet is in none or in two of them.
+TetMesh mesh_gmsh_model(const std::string& context, const std::function<void()>& build);
 
 }  // namespace ccm

@@ -99,6 +99,7 @@ void CentralDifference::initialise() {
   s_.t = 0.0;
   evaluate(true);
   apply_fixed_nodes();
+  for (KinematicConstraint* c : opt_.constraints) c->initialise(s_);
   summary_.dt_initial = opt_.time.dt_safety * last_eval_.stable_dt;
   last_dt_ = summary_.dt_initial;
   energy_.start(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), energy_floor());
@@ -130,6 +131,7 @@ void CentralDifference::predict(double dt) {
 void CentralDifference::evaluate(bool with_energy) {
   std::fill(s_.f.begin(), s_.f.end(), Vec3::Zero());
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
+  for (StateLoad* load : opt_.loads) load->add_forces(s_, s_.f);
   last_eval_ =
       add_internal_forces(model_.elements, s_.x, s_.f,
                           with_energy ? std::span<double>(body_energy_) : std::span<double>());
@@ -198,8 +200,9 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   }
   if (!energy_check) return std::nullopt;
   if (auto bad = check_finite(s_)) return bad;
-  const double w_ext =
-      load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->work() : 0.0);
+  double w_ext = load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->work() : 0.0);
+  for (const KinematicConstraint* c : opt_.constraints) w_ext += c->work();
+  for (const StateLoad* load : opt_.loads) w_ext += load->work();
   const double err =
       energy_.update(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
@@ -260,8 +263,10 @@ RunSummary CentralDifference::run() {
     evaluate(energy_check || sample_now);             // 2
     if (opt_.contact) opt_.contact->correct(s_, dt);  // 3
     apply_fixed_nodes();                              // 4
-    correct(dt);                                      // 5
+    for (KinematicConstraint* c : opt_.constraints) c->apply(s_, dt);
+    correct(dt);  // 5
     if (opt_.contact) opt_.contact->end_step(s_, dt);
+    for (StateLoad* load : opt_.loads) load->end_step(s_, dt);
     last_dt_ = dt;
     load_work_.after_step(s_, t_n, s_.t);
     ++summary_.steps;

@@ -1,9 +1,10 @@
 // Explicit central difference (Newmark beta = 0, gamma = 1/2) in the Predict-Evaluate-Correct
 // order of thesis 2.5.2 (eq. 2.27-2.31; EQUATIONS.md):
 //   1. predict  x_{n+1} = x_n + dt v_n + dt^2/2 a_n,   v* = v_n + dt/2 a_n
-//   2. evaluate a_{n+1} = M^-1 (f_ext(t_{n+1}) + f_int(x_{n+1}))  (+ gravity)
+//   2. evaluate a_{n+1} = M^-1 (f_ext(t_{n+1}) + f_int(x_{n+1}))  (+ gravity; f_ext: the
+//      surface loads and the state loads)
 //   3. contact  the contact model corrects x_{n+1} and v*
-//   4. boundary conditions (fixed nodes)
+//   4. boundary conditions (fixed nodes, then the kinematic constraints: slides, pin joints)
 //   5. correct  v_{n+1} = v* + dt/2 a_{n+1}
 // The step is dt = min(safety * min_e h_e / c_d,e on the current configuration, max_dt,
 // contact limit), clipped so that output samples fall on exact multiples of the interval.
@@ -12,7 +13,10 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
+#include "engine/bc/kinematic_constraint.hpp"
+#include "engine/bc/state_load.hpp"
 #include "engine/contact/contact_model.hpp"
 #include "engine/monitor/stability_monitor.hpp"
 #include "engine/observe/history.hpp"
@@ -59,10 +63,12 @@ using SampleFn = std::function<void(const State&)>;
 struct RunOptions {
   TimeControl time;
   MonitorSettings monitor;
-  ContactModel* contact = nullptr;     // none: no contact work at all
-  HistoryRecorder* history = nullptr;  // none: nothing sampled
-  SampleFn on_sample;                  // optional: sees the state at every output sample
-  ProgressFn progress;                 // called about every progress_seconds of wall time
+  ContactModel* contact = nullptr;                // none: no contact work at all
+  std::vector<KinematicConstraint*> constraints;  // step 4, in this order, after fixed nodes
+  std::vector<StateLoad*> loads;                  // state-dependent external forces
+  HistoryRecorder* history = nullptr;             // none: nothing sampled
+  SampleFn on_sample;                             // optional: sees the state at every output sample
+  ProgressFn progress;  // called about every progress_seconds of wall time
   double progress_seconds = 0.5;
 };
 

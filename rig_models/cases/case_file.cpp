@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "rig_models/cases/case_code.hpp"
+#include "rig_models/cases/sourced_value.hpp"
 #include "rig_models/cases/toml_fields.hpp"
 #include "rig_models/core/rig_error.hpp"
 
@@ -18,16 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kCaseCount = 12;
-
-// A { value, unit, source } parameter with the expected unit and a value > 0.
-SourcedValue read_sourced(const TomlFields& parent, std::string_view key, std::string_view unit) {
-  const TomlFields t = parent.need_table(key);
-  t.allow_only({"value", "unit", "source"});
-  SourcedValue v{t.need_number("value"), t.need_string("unit"), t.need_string("source")};
-  if (v.unit != unit) t.fail("unit", fmt::format("must be '{}' (got '{}')", unit, v.unit));
-  if (!(v.value > 0.0)) t.fail("value", fmt::format("must be > 0 (got {})", v.value));
-  return v;
-}
 
 RigParameters read_rig(const TomlFields& root) {
   const TomlFields t = root.need_table("rig");
@@ -56,6 +47,30 @@ RigParameters read_rig(const TomlFields& root) {
                                           "pressure sensor",
                                           r.low_pass_cutoff.value, r.pressure_rate.value));
   return r;
+}
+
+DriveParameters read_drive(const TomlFields& root) {
+  const TomlFields t = root.need_table("drive");
+  t.allow_only({"velocity_smoothing", "track_friction", "track_damping", "friction_regularisation",
+                "string_stiffness", "string_damping"});
+  DriveParameters d;
+  d.velocity_smoothing = read_sourced(t, "velocity_smoothing", "s");
+  d.track_friction = read_sourced(t, "track_friction", "1", {0.0, false});
+  d.track_damping = read_sourced(t, "track_damping", "N s/m", {0.0, false});
+  d.friction_regularisation = read_sourced(t, "friction_regularisation", "m/s");
+  d.string_stiffness = read_sourced(t, "string_stiffness", "N/m");
+  d.string_damping = read_sourced(t, "string_damping", "N s/m", {0.0, false});
+  return d;
+}
+
+SimulationParameters read_simulation(const TomlFields& root) {
+  const TomlFields t = root.need_table("simulation");
+  t.allow_only({"lead", "output_interval", "after_contact"});
+  SimulationParameters p;
+  p.lead = read_sourced(t, "lead", "s", {0.0, false});
+  p.output_interval = read_sourced(t, "output_interval", "s");
+  p.after_contact = read_sourced(t, "after_contact", "s");
+  return p;
 }
 
 template <typename Kind>
@@ -158,10 +173,12 @@ RigCaseTable parse_case_table(std::string_view text, const fs::path& source) {
     throw rig_input_error(source, static_cast<int>(e.source().begin.line), "", e.description());
   }
   const TomlFields fields(root, "", source);
-  fields.allow_only({"rig", "cases"});
+  fields.allow_only({"rig", "drive", "simulation", "cases"});
   RigCaseTable table;
   table.source = source;
   table.rig = read_rig(fields);
+  table.drive = read_drive(fields);
+  table.simulation = read_simulation(fields);
   table.cases = read_cases(fields);
   return table;
 }

@@ -33,6 +33,20 @@ std::string parameters_section(const RigCaseTable& table) {
   for (const auto& [name, value] : rows) append_parameter(out, name, *value);
   out += fmt::format("  {:<26} {:>12.6g} {:<7} eq. 3.1, E_s = K_s L / A, A = pi d^2 / 4\n",
                      "spring cylinder E_s", spring_modulus(r), "Pa");
+  const DriveParameters& d = table.drive;
+  const SimulationParameters& sim = table.simulation;
+  const std::pair<std::string_view, const SourcedValue*> drive_rows[] = {
+      {"V_i smoothing half window", &d.velocity_smoothing},
+      {"track Coulomb coefficient", &d.track_friction},
+      {"track viscous coefficient", &d.track_damping},
+      {"Coulomb regularisation", &d.friction_regularisation},
+      {"string stiffness", &d.string_stiffness},
+      {"string damping", &d.string_damping},
+      {"run lead before contact", &sim.lead},
+      {"output interval", &sim.output_interval},
+      {"run after contact (no data)", &sim.after_contact}};
+  out += "Drive and simulation\n";
+  for (const auto& [name, value] : drive_rows) append_parameter(out, name, *value);
   return out;
 }
 

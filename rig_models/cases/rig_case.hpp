@@ -36,6 +36,24 @@ struct RigParameters {
   SourcedValue trials_per_case;           // count
 };
 
+// How the impactor is driven (thesis 3.3.2): the open-loop drive's smoothing of the measured
+// velocity, and the physical drive's string and track (the future work of 3.3.2 and 3.5).
+struct DriveParameters {
+  SourcedValue velocity_smoothing;       // s, half window of the local fit of V_i (open loop)
+  SourcedValue track_friction;           // 1, Coulomb coefficient of the track
+  SourcedValue track_damping;            // N s/m, viscous coefficient of the track
+  SourcedValue friction_regularisation;  // m/s, Coulomb's sign(v) as tanh(v / this)
+  SourcedValue string_stiffness;         // N/m, string, pulley and bracket in series
+  SourcedValue string_damping;           // N s/m, while the string is taut
+};
+
+// The simulated window and output.
+struct SimulationParameters {
+  SourcedValue lead;             // s, the open-loop run starts this long before contact
+  SourcedValue output_interval;  // s, between sampled states
+  SourcedValue after_contact;    // s, run length after the estimated contact without data
+};
+
 // A = pi d^2 / 4, the spring cylinder's cross-section [m^2].
 double spring_cylinder_area(const RigParameters& rig);
 
@@ -68,6 +86,8 @@ struct RigCase {
 struct RigCaseTable {
   std::filesystem::path source;
   RigParameters rig;
+  DriveParameters drive;
+  SimulationParameters simulation;
   std::vector<RigCase> cases;  // in Table 3.2 order
 
   // The case with this code; throws std::out_of_range naming it when there is none.

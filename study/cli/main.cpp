@@ -2,14 +2,53 @@
 // `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE`,
 // `ccm study scene GRID --point N [--model ccm|rigid]`,
 // `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`,
-// `ccm report --db FILE --out DIR [--max-error E]`.
+// `ccm report --db FILE --out DIR [--max-error E]`, `ccm rig list`,
+// `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]`,
+// `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 
+#include "study/cli/rig_commands.hpp"
 #include "study/cli/run_command.hpp"
 #include "study/cli/study_commands.hpp"
 #include "study/provenance/version.hpp"
+
+namespace {
+
+// The options `ccm rig run` and `ccm rig calibrate` share.
+void add_rig_options(CLI::App* app, ccm::RigCommonArgs& a) {
+  app->add_option("CASE", a.case_code, "Case code of thesis Table 3.2 (RX025 ... FF100)")
+      ->required();
+  app->add_option("--data", a.data,
+                  "Folder of measured trials <CASE>_t<N>.csv (every file is read and checked "
+                  "before anything runs)");
+  app->add_option("--trial", a.trial,
+                  "Trial that drives the run (open loop) or gives its gap (physical); default 2, "
+                  "the trial the thesis simulated");
+  app->add_option("--drive", a.drive,
+                  "open-loop (default: the thesis's drive, F = M_i dV_i/dt of the measured "
+                  "velocity, 3.3.2) or physical (hanging weight through a pulley, slack string, "
+                  "track friction)")
+      ->capture_default_str();
+  app->add_option("--start", a.start, "Start of the simulated window [s, trial time] (open loop)");
+  app->add_option("--end", a.end, "End of the simulated window [s, trial time]");
+  app->add_option("--mesh-scale", a.mesh_scale, "Every mesh size times this (2: coarser, faster)")
+      ->capture_default_str();
+  app->add_option("--set", a.set,
+                  "Run parameter name=value (mu_s, mu_k, track_friction, track_damping, "
+                  "spring_stiffness); repeatable");
+  app->add_option("--cases", a.cases, "Case file (TOML)")->capture_default_str();
+  app->add_option("--geometry", a.geometry, "Rig geometry file (TOML)")->capture_default_str();
+  app->add_option("--out,-o", a.out,
+                  "Folder for channels.csv, history.csv and summary.toml (written only after a "
+                  "run)");
+  app->add_option("--db", a.db,
+                  "Store (SQLite; created if absent); default <out>/rig.sqlite, else ./rig.sqlite");
+  app->add_flag("--quiet,-q", a.quiet, "No progress line and no tables");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"ccm: explicit finite-element simulations of soft bodies", "ccm"};
@@ -89,6 +128,32 @@ int main(int argc, char** argv) {
   rig->require_subcommand(1);
   CLI::App* rig_list = rig->add_subcommand("list", "The 12 cases of thesis Table 3.2");
   rig_list->add_option("--cases", rig_list_args.cases, "Case file (TOML)")->capture_default_str();
+  ccm::RigCommonArgs rig_run_args;
+  CLI::App* rig_run = rig->add_subcommand(
+      "run", "Simulate a case, compare it with its measured trials, store and print the result");
+  add_rig_options(rig_run, rig_run_args);
+  rig_run->footer(
+      "Exit codes: 0 completed, 1 internal error, 2 bad input (nothing written), 3 unstable "
+      "(results up to the instability stored and written).");
+  ccm::RigCalibrateArgs rig_calibrate_args;
+  CLI::App* rig_calibrate = rig->add_subcommand(
+      "calibrate",
+      "Tune friction and stiffness parameters against the measured trials (NLopt, bounded, "
+      "derivative-free)");
+  add_rig_options(rig_calibrate, rig_calibrate_args.common);
+  rig_calibrate
+      ->add_option("--params", rig_calibrate_args.params,
+                   "Parameters to tune, comma-separated: mu_s, mu_k, track_friction, "
+                   "track_damping, spring_stiffness")
+      ->required();
+  rig_calibrate->add_option("--bounds", rig_calibrate_args.bounds,
+                            "Search range name=lower:upper (repeatable; defaults in "
+                            "docs/rig-models.md)");
+  rig_calibrate
+      ->add_option("--max-evals", rig_calibrate_args.max_evaluations,
+                   "Most simulations the search may run")
+      ->capture_default_str();
+  rig_calibrate->footer("Exit codes: 0 done, 1 internal error, 2 bad input (nothing written).");
 
   try {
     app.parse(argc, argv);
@@ -102,6 +167,8 @@ int main(int argc, char** argv) {
   if (*study_scene) return ccm::study_scene_command(study_scene_args);
   if (*recommend) return ccm::recommend_command(rec);
   if (*rig_list) return ccm::rig_list_command(rig_list_args);
+  if (*rig_run) return ccm::rig_run_command(rig_run_args);
+  if (*rig_calibrate) return ccm::rig_calibrate_command(rig_calibrate_args);
   if (*report) return ccm::report_command(report_args);
   return ccm::run_command(args);
 }

@@ -1,7 +1,6 @@
 #include "study/cli/run_command.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -15,6 +14,7 @@
 
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
+#include "study/cli/progress_line.hpp"
 #include "study/provenance/timestamp.hpp"
 #include "study/provenance/version.hpp"
 #include "study/runner/content_hash.hpp"
@@ -93,28 +93,6 @@ void prepare(const RunArgs& args, Prepared& p) {
   p.output = build_output_request(p.scene, p.model.mesh);
   p.contact = build_contact(p.scene, p.model);
 }
-
-// ---------------------------------------------------------------------------------------------
-// Progress on a terminal: one line, rewritten in place
-
-class ProgressLine {
- public:
-  void operator()(const Progress& p) {
-    const double fraction = p.end_time > 0.0 ? p.t / p.end_time : 1.0;
-    const double eta = fraction > 0.0 ? p.wall_seconds * (1.0 - fraction) / fraction : 0.0;
-    fmt::print(stderr,
-               "\r{:6.1f}%  t {:.4e} s  step {}  dt {:.3e} s  wall {:.1f} s  ETA {:.1f} s\x1b[K",
-               100.0 * fraction, p.t, p.steps, p.dt, p.wall_seconds, eta);
-    std::fflush(stderr);
-    used_ = true;
-  }
-  void finish() const {
-    if (used_) fmt::print(stderr, "\r\x1b[K");
-  }
-
- private:
-  bool used_ = false;
-};
 
 // ---------------------------------------------------------------------------------------------
 // Reporting
@@ -214,8 +192,7 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   options.contact = p.contact.model.get();
   if (p.contact.history) history.add_source(*p.contact.history);
   ProgressLine progress;
-  if (!args.quiet && isatty(STDERR_FILENO))
-    options.progress = [&progress](const Progress& pr) { progress(pr); };
+  options.progress = progress.on_terminal(args.quiet);
   const RunSummary summary = run_explicit(p.model, options);
   progress.finish();
   return summary;

@@ -105,7 +105,9 @@ TEST_CASE("rig cases: the printed table has every case and every parameter with 
           "[rig]") {
   const RigCaseTable table = read_case_table(kCaseFile);
   const std::string text = format_case_table(table);
-  CHECK(std::count(text.begin(), text.end(), '\n') == 1 + 15 + 1 + 1 + 1 + 12);
+  // heading, 15 rig rows, E_s; drive heading and its 9 rows; blank, header, 12 cases
+  CHECK(std::count(text.begin(), text.end(), '\n') == 1 + 15 + 1 + 1 + 9 + 1 + 1 + 12);
+  CHECK_THAT(text, Catch::Contains("string stiffness                   5000 N/m     assumption"));
   CHECK_THAT(text, Catch::Contains(" 1  RX025         0.25  rigid     fixed     exact (fixed)"));
   CHECK_THAT(text,
              Catch::Contains("12  FF100         1.00  flexible  free      mu_s 0.4, mu_k 0.7"));
@@ -120,6 +122,10 @@ TEST_CASE("rig cases: bad input names file, line and key", "[rig]") {
         fmt::format("cases.toml:{}: rig.spring_stiffness.unit: must be 'N/m' (got 'N/mm')", l_ks));
   CHECK(error_of(with(good, "value = 1895.0", "value = -1895.0")) ==
         fmt::format("cases.toml:{}: rig.spring_stiffness.value: must be > 0 (got -1895)", l_ks));
+  const int l_track = line_of(good, "track_friction =");
+  CHECK(
+      error_of(with(good, "track_friction = { value = 0.01", "track_friction = { value = -0.01")) ==
+      fmt::format("cases.toml:{}: drive.track_friction.value: must be >= 0 (got -0.01)", l_track));
   CHECK(error_of(with(good, "spring_stiffness =", "spring_stifness =")) ==
         fmt::format("cases.toml:{}: rig.spring_stifness: unknown key 'spring_stifness' (did you "
                     "mean 'spring_stiffness'?)",

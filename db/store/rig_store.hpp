@@ -1,0 +1,91 @@
+// The benchtop rig's results in a ccm store (docs/store.md, schema step 3): one row per rig
+// simulation with its figures and provenance, its comparison with the measured trials (per
+// channel and trial, the spread over the trials, contact onset and duration), the channels it
+// was compared on, and the calibrations with their parameters and evaluations. Every record is
+// one transaction: a reader sees all of a run or none of it.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "db/sqlite/connection.hpp"
+#include "rig_models/compare/case_comparison.hpp"
+#include "rig_models/compare/measured_spread.hpp"
+
+namespace ccm::db {
+
+struct RigRunRow {
+  std::string case_code;
+  std::string drive;  // "open-loop" | "physical"
+  std::optional<int> drive_trial;
+  std::string parameters;       // "name=value;..." of the run's parameters
+  std::string purpose = "run";  // "run" | "calibration" (an evaluation of one)
+  std::string status;           // "completed" | "unstable"
+  std::string reason;
+  std::optional<double> unstable_time;
+  double window_start = 0.0, window_end = 0.0, gap = 0.0, initial_velocity = 0.0;
+  double mesh_scale = 1.0;
+  long long n_elements = 0, n_nodes = 0, steps = 0;
+  std::optional<double> dt_initial, dt_min, dt_max;
+  double wall_seconds = 0.0;
+  std::optional<double> max_energy_error;
+  double impactor_mass = 0.0, artifact_mass = 0.0, artifact_inertia = 0.0;
+  double sensor_area = 0.0, sensor_mesh_area = 0.0;
+  std::optional<double> objective;  // the calibration objective of this run, if computed
+  std::string cases_hash, geometry_hash, data_dir, data_hash;
+  std::string started_at, ended_at;
+};
+
+struct RigRunRecord {
+  RigRunRow row;
+  std::vector<int> trials;  // trial numbers, in the order of the comparison's per-trial lists
+  std::optional<rig::CaseComparison> comparison;
+  std::optional<rig::MeasuredSpread> measured;
+  rig::RigChannels channels;  // as compared (sensor model applied)
+};
+
+struct RigCalibrationParameter {
+  std::string name;
+  double lower = 0.0, upper = 0.0, initial = 0.0, final = 0.0;
+};
+
+struct RigCalibrationEvaluation {
+  std::string parameters;
+  std::optional<double> objective;  // none when the run was unstable
+  std::string status;
+  double wall_seconds = 0.0;
+};
+
+struct RigCalibrationRecord {
+  std::string case_code, drive, algorithm, objective_name, result;
+  int evaluations = 0, max_evaluations = 0;
+  long long before_run_id = 0, after_run_id = 0;
+  double objective_before = 0.0, objective_after = 0.0;
+  std::vector<RigCalibrationParameter> parameters;
+  std::vector<RigCalibrationEvaluation> history;
+  std::string started_at, ended_at;
+};
+
+class RigStore {
+ public:
+  // Opens or creates the store (migrating an older schema; WAL; foreign keys on). Throws
+  // StoreError naming the file when it is not a ccm store or was written by a newer ccm.
+  explicit RigStore(const std::filesystem::path& file);
+
+  // Each returns the new row id; one transaction each. Provenance (ccm version, git hash, host,
+  // process) is this process's.
+  long long record_run(const RigRunRecord& run);
+  long long record_calibration(const RigCalibrationRecord& calibration);
+
+  Connection& connection() const { return *connection_; }
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  std::filesystem::path file_;
+  std::unique_ptr<Connection> connection_;
+};
+
+}  // namespace ccm::db

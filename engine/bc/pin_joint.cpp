@@ -1,0 +1,85 @@
+#include "engine/bc/pin_joint.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <stdexcept>
+
+namespace ccm {
+
+PinJoint::PinJoint(PinJointSpec spec, const std::vector<Vec3>& X) : spec_(std::move(spec)) {
+  const double norm = spec_.axis_direction.norm();
+  if (spec_.nodes.empty()) throw std::invalid_argument("pin joint: no node");
+  if (!(norm > 0.0) || !std::isfinite(norm))
+    throw std::invalid_argument("pin joint: the axis direction must be non-zero and finite");
+  if (!(spec_.mu_s >= 0.0) || !(spec_.mu_k >= 0.0))
+    throw std::invalid_argument("pin joint: friction coefficients must be >= 0");
+  e_ = spec_.axis_direction / norm;
+  double largest = 0.0;
+  for (int n : spec_.nodes) {
+    const Vec3 d = X.at(static_cast<size_t>(n)) - spec_.axis_point;
+    const double axial = d.dot(e_);
+    const Vec3 lever = d - axial * e_;
+    ring_.push_back({n, lever, axial, lever.norm()});
+    largest = std::max(largest, lever.norm());
+  }
+  if (!(largest > 0.0)) throw std::invalid_argument("pin joint: every node lies on the axis");
+}
+
+Vec3 PinJoint::lever(const RingNode& r) const { return Eigen::AngleAxisd(phi_, e_) * r.lever0; }
+
+void PinJoint::initialise(State& s) {
+  J_ring_ = 0.0;
+  double L = 0.0;
+  for (RingNode& r : ring_) {
+    r.mass = s.m_lumped[static_cast<size_t>(r.node)];
+    J_ring_ += r.mass * r.radius * r.radius;
+    L += r.mass * e_.cross(r.lever0).dot(s.v[static_cast<size_t>(r.node)]);
+  }
+  omega_ = L / J_ring_;  // the ring starts with the rigid rotation closest to its velocities
+  for (const RingNode& r : ring_) {
+    const auto i = static_cast<size_t>(r.node);
+    s.v[i] = omega_ * e_.cross(r.lever0);
+  }
+}
+
+void PinJoint::apply(State& s, double dt) {
+  double L = 0.0, C = 0.0;
+  for (const RingNode& r : ring_) {
+    if (!(r.radius > 0.0)) continue;
+    const auto i = static_cast<size_t>(r.node);
+    const Vec3 v_end = s.v[i] + 0.5 * dt * s.a[i];
+    const Vec3 n = lever(r) / r.radius;
+    L += r.mass * r.radius * e_.cross(n).dot(v_end);  // (3.3) as angular momentum
+    C += r.mass * r.radius * std::abs(n.dot(v_end));  // (3.2) as angular impulse capacity
+  }
+  // (3.4): stick below mu_s, else slip with mu_k; kinetic friction never reverses the rotation.
+  sticking_ = std::abs(L) <= spec_.mu_s * C;
+  double L_new = 0.0;
+  if (!sticking_) {
+    L_new = L - std::copysign(spec_.mu_k * C, L);
+    if (L_new * L <= 0.0) L_new = 0.0;
+  }
+  omega_ = L_new / J_ring_;
+  phi_ += dt * omega_;
+  place(s, dt);
+}
+
+// (3.5, 3.6): every ring node on its circle at phi, moving with the ring's rate; the position
+// correction is booked against the current forces and the velocity change as kinetic energy,
+// as the DCR books its corrections.
+void PinJoint::place(State& s, double dt) {
+  const Eigen::AngleAxisd rotation(phi_, e_);
+  for (const RingNode& r : ring_) {
+    const auto i = static_cast<size_t>(r.node);
+    const Vec3 lever_now = rotation * r.lever0;
+    const Vec3 x_new = spec_.axis_point + r.axial * e_ + lever_now;
+    const Vec3 v_new = omega_ * e_.cross(lever_now);
+    const Vec3 v_end = s.v[i] + 0.5 * dt * s.a[i];
+    work_ += -r.mass * s.a[i].dot(x_new - s.x[i]) +
+             0.5 * r.mass * (v_new.squaredNorm() - v_end.squaredNorm());
+    s.x[i] = x_new;
+    s.v[i] = v_new - 0.5 * dt * s.a[i];
+  }
+}
+
+}  // namespace ccm

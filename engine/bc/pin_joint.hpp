@@ -1,0 +1,84 @@
+// A pin joint with Coulomb friction: the free artifact's rotational boundary condition (thesis
+// 3.3.2, eqs. 3.2-3.6), in rigid-ring form. The nodes the pin holds (the surface of the bore the
+// pin passes through) turn as one rigid ring about the pin axis (centre c, unit direction e):
+// their radius does not change (3.5), they do not move along the axis, and one angle phi says
+// where they are. The pin resists the rotation with Coulomb friction driven by its reaction.
+//
+// Each step, on the trial end-of-step velocities v_j = v*_j + dt/2 a_j of the ring nodes
+// (lumped mass m_j, radius r_j, radial unit n_j and tangential unit t_j = e x n_j at phi_n):
+//   L = sum_j m_j r_j (t_j . v_j)    angular momentum about the axis, the ring's "ideal"
+//                                     tangential motion (v_t,ideal of 3.3)
+//   C = sum_j m_j r_j |n_j . v_j|    angular impulse the friction can hold: the radial momentum
+//                                     the pin takes out this step (its reaction, v_n of 3.2)
+//                                     times its arm
+//   stick if |L| <= mu_s C:  omega = 0                                               (3.4)
+//   slip  otherwise:         omega = (L - mu_k C sign L) / J_ring, never reversed      (3.4)
+//   phi_{n+1} = phi_n + dt omega,  x_j = c + R(phi_{n+1}) (X_j - c),
+//   v_j = omega e x (x_j - c)                                                    (3.5, 3.6)
+// with J_ring = sum_j m_j r_j^2; the ring's accelerations are left as evaluated, and v* is set
+// so that v* + dt/2 a_j lands on v_j (as the DCR does for contact nodes).
+//
+// Per node, 3.4 is |dv_t| <= mu |v_n|: multiplied by m_j r_j and summed over the ring it is
+// the limit on C above, so the friction torque is mu times the pin's reaction times the bore
+// radius, which is Coulomb's law for a pin. Departures from the thesis, all deliberate: the
+// ring turns rigidly (per-node angles would let the bore shear); radial motion either way
+// loads the pin (3.2 counts outward motion only, but 3.5 holds the radius both ways); and phi
+// advances by dt omega (3.6 as printed, theta = v_t / r, is not dimensionally an angle;
+// EQUATIONS.md). With mu_s = mu_k = 0 the reaction exerts no torque about the axis: the
+// angular momentum of the body about the axis is kept.
+#pragma once
+
+#include <vector>
+
+#include "engine/bc/kinematic_constraint.hpp"
+
+namespace ccm {
+
+struct PinJointSpec {
+  std::vector<int> nodes;          // nodes held by the pin (sorted unique not required)
+  Vec3 axis_point = Vec3::Zero();  // a point on the pin axis [m]
+  Vec3 axis_direction = Vec3::UnitX();
+  double mu_s = 0.0;  // static coefficient
+  double mu_k = 0.0;  // kinetic coefficient
+};
+
+class PinJoint : public KinematicConstraint {
+ public:
+  // X: the reference positions of the model. Throws std::invalid_argument when there is no
+  // node, the axis direction is zero or not finite, a coefficient is negative, or every node
+  // lies on the axis (no ring to turn).
+  PinJoint(PinJointSpec spec, const std::vector<Vec3>& X);
+
+  std::string_view name() const override { return "pin_joint"; }
+  void initialise(State& s) override;
+  void apply(State& s, double dt) override;
+  double work() const override { return work_; }
+
+  double angle() const { return phi_; }   // rotation about e since t = 0 [rad]
+  double rate() const { return omega_; }  // [rad/s]
+  bool sticking() const { return sticking_; }
+  double ring_inertia() const { return J_ring_; }  // kg m^2 about the axis
+  const PinJointSpec& spec() const { return spec_; }
+
+ private:
+  struct RingNode {
+    int node;
+    Vec3 lever0;   // (X - c) without its axial part, at phi = 0
+    double axial;  // (X - c) . e
+    double radius;
+    double mass = 0.0;
+  };
+  Vec3 lever(const RingNode& r) const;  // at phi_
+  void place(State& s, double dt);      // positions and velocities of the ring at phi_, omega_
+
+  PinJointSpec spec_;
+  Vec3 e_;
+  std::vector<RingNode> ring_;
+  double J_ring_ = 0.0;
+  double phi_ = 0.0;
+  double omega_ = 0.0;
+  bool sticking_ = false;
+  double work_ = 0.0;
+};
+
+}  // namespace ccm

@@ -1,0 +1,102 @@
+#include "rig_models/drive/hanging_weight_drive.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "engine/mesh/boundary_surface.hpp"
+
+namespace ccm::rig {
+
+HangingWeightDrive::HangingWeightDrive(const ModelMesh& mesh,
+                                       const std::vector<Triangle>& drive_surface,
+                                       std::vector<int> impactor_nodes, const Vec3& track,
+                                       HangingWeightSettings settings)
+    : nodes_(std::move(impactor_nodes)), set_(settings) {
+  std::map<int, double> share;
+  double total = 0.0;
+  for (const Triangle& t : drive_surface) {
+    const double A = triangle_area(t, mesh.X);
+    total += A;
+    for (int n : t) share[n] += A / 3.0;
+  }
+  if (!(total > 0.0)) throw std::invalid_argument("hanging weight: the drive surface has no area");
+  for (const auto& [n, a] : share) {
+    drive_nodes_.push_back(n);
+    drive_share_.push_back(a / total);
+  }
+  if (nodes_.empty()) throw std::invalid_argument("hanging weight: no impactor node");
+  if (!(track.norm() > 0.0)) throw std::invalid_argument("hanging weight: zero track direction");
+  if (!(set_.weight_mass > 0.0) || !(set_.string_stiffness > 0.0) || !(set_.regularisation > 0.0))
+    throw std::invalid_argument(
+        "hanging weight: weight mass, string stiffness and regularisation must be > 0");
+  d_ = track.normalized();
+}
+
+void HangingWeightDrive::first_call(const State& s) {
+  double M = 0.0;
+  for (int n : nodes_) M += s.m_lumped[static_cast<size_t>(n)];
+  for (int n : nodes_) mass_share_.push_back(s.m_lumped[static_cast<size_t>(n)] / M);
+  started_ = true;
+}
+
+void HangingWeightDrive::add_forces(const State& s, std::span<Vec3> f) {
+  if (!started_) first_call(s);
+  double u = 0.0, u_dot = 0.0, u_drive = 0.0;
+  for (size_t j = 0; j < nodes_.size(); ++j) {
+    const auto i = static_cast<size_t>(nodes_[j]);
+    u += mass_share_[j] * (s.x[i] - s.X[i]).dot(d_);
+    u_dot += mass_share_[j] * s.v[i].dot(d_);
+  }
+  for (size_t j = 0; j < drive_nodes_.size(); ++j) {
+    const auto i = static_cast<size_t>(drive_nodes_[j]);
+    u_drive += drive_share_[j] * (s.x[i] - s.X[i]).dot(d_);
+  }
+  const double k = set_.string_stiffness;
+  const double e = set_.weight_mass * set_.gravity / k + s_w_ - u;
+  const double T = e > 0.0 ? std::max(0.0, k * e + set_.string_damping * (w_ - u_dot)) : 0.0;
+  const double F_f =
+      -(set_.track_friction * set_.track_normal_force * std::tanh(u_dot / set_.regularisation) +
+        set_.track_damping * u_dot);
+  for (size_t j = 0; j < drive_nodes_.size(); ++j)
+    f[static_cast<size_t>(drive_nodes_[j])] += drive_share_[j] * T * d_;
+  for (size_t j = 0; j < nodes_.size(); ++j)
+    f[static_cast<size_t>(nodes_[j])] += mass_share_[j] * F_f * d_;
+  // Work on the impactor: trapezoidal in time, on the displacement each force follows.
+  work_ += 0.5 * (T_ + T) * (u_drive - u_drive_) + 0.5 * (F_f_ + F_f) * (u - u_);
+  T_ = T;
+  F_f_ = F_f;
+  u_ = u;
+  u_drive_ = u_drive;
+}
+
+// The weight's own step (symplectic Euler), with the tension of this step's evaluation.
+void HangingWeightDrive::end_step(const State& /*s*/, double dt) {
+  w_ += dt * (set_.gravity - T_ / set_.weight_mass);
+  s_w_ += dt * w_;
+}
+
+double run_up_distance(const HangingWeightSettings& s, double impactor_mass, double speed) {
+  if (!(speed > 0.0) || !(impactor_mass > 0.0))
+    throw std::invalid_argument("run-up distance: speed and impactor mass must be > 0");
+  const double M = impactor_mass + s.weight_mass, dt = 1e-5;
+  double v = 0.0, x = 0.0;
+  for (double t = 0.0; t < 60.0; t += dt) {
+    const double F = s.weight_mass * s.gravity -
+                     s.track_friction * s.track_normal_force * std::tanh(v / s.regularisation) -
+                     s.track_damping * v;
+    const double v_next = v + dt * F / M;
+    if (v_next >= speed) return x + dt * 0.5 * (v + speed);
+    if (!(v_next > v)) break;  // terminal speed below the target
+    x += dt * 0.5 * (v + v_next);
+    v = v_next;
+  }
+  throw std::invalid_argument(fmt::format(
+      "run-up distance: the weight cannot bring the impactor to {} m/s against the track's "
+      "friction (it levels off near {:.3g} m/s)",
+      speed, v));
+}
+
+}  // namespace ccm::rig

@@ -1,0 +1,184 @@
+#include "rig_models/sim/rig_run.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <utility>
+
+#include "engine/bc/pin_joint.hpp"
+#include "engine/bc/slide_constraint.hpp"
+#include "engine/contact/dcr/dcr_contact.hpp"
+#include "rig_models/drive/hanging_weight_drive.hpp"
+#include "rig_models/drive/open_loop_drive.hpp"
+#include "rig_models/geometry/rig_model.hpp"
+#include "rig_models/post/rig_channels.hpp"
+#include "rig_models/signal/resample.hpp"
+#include "rig_models/sim/contact_probe.hpp"
+
+namespace ccm::rig {
+namespace {
+
+HangingWeightSettings weight_settings(const RigCaseTable& t, const RunParameters& p,
+                                      double gravity) {
+  HangingWeightSettings s;
+  s.weight_mass = t.rig.hanging_mass.value;
+  s.gravity = gravity;
+  s.string_stiffness = t.drive.string_stiffness.value;
+  s.string_damping = t.drive.string_damping.value;
+  s.track_friction = p.track_friction;
+  s.track_normal_force = t.rig.impactor_mass.value * gravity;
+  s.track_damping = p.track_damping;
+  s.regularisation = t.drive.friction_regularisation.value;
+  return s;
+}
+
+// F_in of the open-loop drive on the simulation's clock (t = 0 at the window's start).
+TimeTable shifted_force(const OpenLoopDrive& d, double start) {
+  std::vector<std::pair<double, double>> points;
+  for (size_t k = 0; k < d.force_n.t.size(); ++k)
+    points.emplace_back(d.force_n.t[k] - start, d.force_n.value[k]);
+  return TimeTable(std::move(points));
+}
+
+// What the sampler keeps at every output sample.
+struct Samples {
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> v_front, v_back;
+  std::vector<double> u_y, x_z, impulse, pin_angle;
+};
+
+RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, bool frictional_pin) {
+  RigModelFacts f;
+  f.n_nodes = rig.model.mesh.n_nodes();
+  f.n_elements = rig.model.mesh.n_elements();
+  f.impactor_mass = rig.impactor_mass;
+  f.artifact_mass = rig.artifact_mass;
+  f.artifact_inertia = rig.artifact_inertia;
+  f.artifact_cm_depth = rig.artifact_cm_depth;
+  f.sensor_mesh_area = rig.sensor_mesh_area;
+  f.sensor_area = table.rig.sensor_area.value;
+  f.spring_modulus = rig.spring_modulus;
+  f.spring_stiffness = rig.spring_stiffness;
+  f.pin_nodes = static_cast<int>(rig.pin_nodes.size());
+  f.guide_nodes = static_cast<int>(rig.guide_nodes.size());
+  f.frictional_pin = frictional_pin;
+  f.parts = rig.parts;
+  return f;
+}
+
+// The raw channels (3.3.3): V_i of the two pearls, theta_a (3.7), the mean contact force over
+// each output interval from the probe's running impulse (3.8's F_c).
+RawHistories raw_histories(const Samples& s, const Vec3& track) {
+  RawHistories r;
+  r.t = s.t;
+  r.impactor_velocity = impactor_velocity(s.t, s.v_front, s.v_back, track).value;
+  r.angle_deg = artifact_angle_deg(s.t, s.u_y, s.x_z).value;
+  r.contact_force.assign(s.t.size(), 0.0);
+  for (size_t k = 1; k < s.t.size(); ++k)
+    r.contact_force[k] = (s.impulse[k] - s.impulse[k - 1]) / (s.t[k] - s.t[k - 1]);
+  r.pin_angle = s.pin_angle;
+  return r;
+}
+
+// The channels as the sensors read them; at the trial's timestamps when a trial drives the run.
+RigChannels sensed_channels(const RawHistories& raw, const RigCaseTable& table,
+                            const MeasuredTrial* trial) {
+  RigChannels c;
+  if (raw.t.size() < 2) return c;
+  const TimeSeries V{raw.t, raw.impactor_velocity}, theta{raw.t, raw.angle_deg};
+  const TimeSeries P_raw = raw_pressure_kpa(raw.t, raw.contact_force, table.rig.sensor_area.value);
+  const PressureSensor sensor{table.rig.sensor_deadband.value, table.rig.low_pass_cutoff.value};
+  const double t0 = raw.t.front(), t1 = raw.t.back();
+  if (!trial) {
+    c.impactor_velocity_mps = V;
+    c.artifact_angle_deg = theta;
+    c.pressure_kpa = sensed_pressure_kpa(P_raw, sensor, raw.t);
+    return c;
+  }
+  c.impactor_velocity_mps = sample_at(V, times_within(trial->impactor_velocity_mps, t0, t1));
+  c.artifact_angle_deg = sample_at(theta, times_within(trial->artifact_angle_deg, t0, t1));
+  c.pressure_kpa = sensed_pressure_kpa(P_raw, sensor, times_within(trial->pressure_kpa, t0, t1));
+  return c;
+}
+
+}  // namespace
+
+std::vector<double> times_within(const TimeSeries& series, double t0, double t1) {
+  std::vector<double> out;
+  for (double t : series.t)
+    if (t >= t0 && t <= t1) out.push_back(t);
+  return out;
+}
+
+RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunRequest& req) {
+  const RigCaseTable& table = setup.cases;
+  const RunParameters& par = req.parameters;
+  const double gravity = setup.geometry.gravity.value;
+  RigRunResult out;
+  out.window = run_window(table, c, {req.drive, req.trial, req.start, req.end},
+                          weight_settings(table, par, gravity));
+  const RunWindow& w = out.window;
+  const bool pin = c.artifact == ArtifactKind::free || par.mu_s.has_value();
+  RigModelRequest mr;
+  mr.impactor = c.impactor;
+  mr.artifact = pin ? ArtifactKind::free : ArtifactKind::fixed;
+  mr.gap = w.gap;
+  mr.mesh_scale = req.mesh_scale;
+  mr.spring_stiffness = par.spring_stiffness;
+  RigModel rig = build_rig_model(setup.geometry, table.rig, mr);
+  for (int n : rig.impactor_nodes)
+    rig.model.initial_velocity[static_cast<size_t>(n)] = w.initial_velocity * rig.track;
+
+  std::unique_ptr<HangingWeightDrive> weight;
+  if (req.drive == DriveKind::open_loop) {
+    const OpenLoopDrive d =
+        open_loop_drive(*req.trial, rig.impactor_mass, table.drive.velocity_smoothing.value);
+    out.open_loop_masked = d.masked_samples;
+    rig.model.bcs.loads.push_back(make_surface_load("drive", rig.model.mesh, rig.drive_surface,
+                                                    rig.track, shifted_force(d, w.start)));
+  } else {
+    weight =
+        std::make_unique<HangingWeightDrive>(rig.model.mesh, rig.drive_surface, rig.impactor_nodes,
+                                             rig.track, weight_settings(table, par, gravity));
+  }
+  SlideConstraint guide(rig.guide_nodes, rig.track);
+  std::unique_ptr<PinJoint> pin_joint;
+  if (pin)
+    pin_joint =
+        std::make_unique<PinJoint>(PinJointSpec{rig.pin_nodes, rig.pin_point, rig.pin_axis,
+                                                par.mu_s.value_or(0.0), par.mu_k.value_or(0.0)},
+                                   rig.model.mesh.X);
+  dcr::DcrSettings contact;
+  contact.surfaces = rig.contact_surfaces;
+  contact.friction = setup.geometry.contact.friction.value;
+  contact.restitution = setup.geometry.contact.restitution.value;
+  dcr::DcrContact dcr(rig.model.mesh, contact, rig.model.bcs.fixed_nodes);
+  ContactProbe probe(dcr, rig.sensor_nodes, rig.track);
+
+  Samples s;
+  RunOptions opt;
+  opt.time.end_time = w.end - w.start;
+  opt.time.output_interval = table.simulation.output_interval.value;
+  opt.contact = &probe;
+  opt.constraints.push_back(&guide);
+  if (pin_joint) opt.constraints.push_back(pin_joint.get());
+  if (weight) opt.loads.push_back(weight.get());
+  opt.progress = req.progress;
+  const auto angle = static_cast<size_t>(rig.angle_node);
+  opt.on_sample = [&](const State& st) {
+    s.t.push_back(st.t + w.start);
+    s.v_front.push_back(st.v[static_cast<size_t>(rig.pearl_front)]);
+    s.v_back.push_back(st.v[static_cast<size_t>(rig.pearl_back)]);
+    s.u_y.push_back(st.x[angle].y() - st.X[angle].y());
+    s.x_z.push_back(rig.pin_point.z() - st.x[angle].z());  // current distance below the pin
+    s.impulse.push_back(probe.impulse());
+    s.pin_angle.push_back(pin_joint ? pin_joint->angle() : 0.0);
+  };
+  out.summary = run_explicit(rig.model, opt);
+  out.model = facts_of(rig, table, pin);
+  out.raw = raw_histories(s, rig.track);
+  out.channels = sensed_channels(out.raw, table, req.trial);
+  return out;
+}
+
+}  // namespace ccm::rig

@@ -1,0 +1,82 @@
+#include "rig_models/sim/run_parameters.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace ccm::rig {
+
+std::string_view name_of(DriveKind kind) {
+  return kind == DriveKind::open_loop ? "open-loop" : "physical";
+}
+
+std::optional<DriveKind> parse_drive(std::string_view name) {
+  if (name == "open-loop") return DriveKind::open_loop;
+  if (name == "physical") return DriveKind::physical;
+  return std::nullopt;
+}
+
+RunParameters default_parameters(const RigCaseTable& table, const RigCase& c) {
+  RunParameters p;
+  if (c.pivot_friction) {
+    p.mu_s = c.pivot_friction->mu_s;
+    p.mu_k = c.pivot_friction->mu_k;
+  }
+  p.track_friction = table.drive.track_friction.value;
+  p.track_damping = table.drive.track_damping.value;
+  p.spring_stiffness = table.rig.spring_stiffness.value;
+  return p;
+}
+
+std::string parameter_problem(std::string_view name, const RigCase& c, DriveKind drive) {
+  bool known = false;
+  for (std::string_view n : kRunParameterNames) known = known || n == name;
+  if (!known)
+    return fmt::format("unknown parameter '{}' (known: {})", name,
+                       fmt::join(kRunParameterNames, ", "));
+  if ((name == "track_friction" || name == "track_damping") && drive != DriveKind::physical)
+    return fmt::format(
+        "'{}' acts only with --drive physical (the open-loop drive follows the "
+        "measured motion, friction included)",
+        name);
+  if (name == "spring_stiffness" && c.impactor != ImpactorKind::flexible)
+    return fmt::format("'{}' needs a flexible impactor; {} has a rigid one", name, c.code);
+  return {};
+}
+
+double get_parameter(const RunParameters& p, std::string_view name) {
+  if (name == "mu_s") return p.mu_s.value_or(kFrictionalFixedMuS);
+  if (name == "mu_k") return p.mu_k.value_or(kFrictionalFixedMuK);
+  if (name == "track_friction") return p.track_friction;
+  if (name == "track_damping") return p.track_damping;
+  if (name == "spring_stiffness") return p.spring_stiffness;
+  throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
+}
+
+void set_parameter(RunParameters& p, std::string_view name, double value) {
+  if (name == "mu_s" || name == "mu_k") {
+    // Setting one coefficient of an exact ("fixed") pin makes it frictional: both then exist.
+    if (!p.mu_s) p.mu_s = kFrictionalFixedMuS;
+    if (!p.mu_k) p.mu_k = kFrictionalFixedMuK;
+    (name == "mu_s" ? *p.mu_s : *p.mu_k) = value;
+  } else if (name == "track_friction") {
+    p.track_friction = value;
+  } else if (name == "track_damping") {
+    p.track_damping = value;
+  } else if (name == "spring_stiffness") {
+    p.spring_stiffness = value;
+  } else {
+    throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
+  }
+}
+
+std::string describe(const RunParameters& p, const RigCase& c, DriveKind drive) {
+  std::string s = p.mu_s ? fmt::format("pin mu_s {:g}, mu_k {:g}", *p.mu_s, *p.mu_k)
+                         : std::string("pin exact (fixed)");
+  if (drive == DriveKind::physical)
+    s += fmt::format(", track mu {:g}, c {:g} N s/m", p.track_friction, p.track_damping);
+  if (c.impactor == ImpactorKind::flexible) s += fmt::format(", K_s {:g} N/m", p.spring_stiffness);
+  return s;
+}
+
+}  // namespace ccm::rig

@@ -1,0 +1,53 @@
+// The parameters of a rig run that a user may change and `ccm rig calibrate` may tune, by name:
+//   mu_s, mu_k        pin friction (eq. 3.4). A free artifact always has them (cases.toml); a
+//                     fixed one is held exactly (3.3.2) unless they are given, which turns it
+//                     into the thesis's frictional "fixed" pin (3.4.1: mu_s = 50, mu_k = 0.99)
+//   track_friction    Coulomb coefficient of the track (physical drive)
+//   track_damping     N s/m, viscous coefficient of the track (physical drive)
+//   spring_stiffness  N/m, K_s of the flexible impactor (eq. 3.1)
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "rig_models/cases/rig_case.hpp"
+
+namespace ccm::rig {
+
+enum class DriveKind { open_loop, physical };
+std::string_view name_of(DriveKind kind);
+std::optional<DriveKind> parse_drive(std::string_view name);  // "open-loop", "physical"
+
+struct RunParameters {
+  std::optional<double> mu_s, mu_k;
+  double track_friction = 0.0;
+  double track_damping = 0.0;
+  double spring_stiffness = 0.0;
+};
+
+inline constexpr std::array<std::string_view, 5> kRunParameterNames = {
+    "mu_s", "mu_k", "track_friction", "track_damping", "spring_stiffness"};
+
+// The case file's values for this case.
+RunParameters default_parameters(const RigCaseTable& table, const RigCase& c);
+
+// The fixed case's frictional pin of thesis 3.4.1, used when calibration asks for mu_s or mu_k
+// on a fixed artifact.
+inline constexpr double kFrictionalFixedMuS = 50.0;
+inline constexpr double kFrictionalFixedMuK = 0.99;
+
+// Why `name` does not apply to this case and drive (empty when it does): an unknown name, the
+// track's parameters without the physical drive, the spring's without a flexible impactor.
+std::string parameter_problem(std::string_view name, const RigCase& c, DriveKind drive);
+
+// The value of `name` (mu_s, mu_k of a fixed case: the frictional-fixed pin's when unset), and
+// setting it. Throws std::invalid_argument for an unknown name.
+double get_parameter(const RunParameters& p, std::string_view name);
+void set_parameter(RunParameters& p, std::string_view name, double value);
+
+// "mu_s 0.2, mu_k 0.1, ..." for messages and tables.
+std::string describe(const RunParameters& p, const RigCase& c, DriveKind drive);
+
+}  // namespace ccm::rig

@@ -1,0 +1,211 @@
+// `ccm rig calibrate`: read and check every input, then a derivative-free bounded search
+// (rig_models/calibrate/bounded_search.hpp) of the named parameters against every measured
+// trial of the case; the starting and the best run are stored with their comparisons, the
+// calibration with its parameters and every evaluation, and before/after are printed.
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "rig_models/calibrate/bounded_search.hpp"
+#include "rig_models/calibrate/rig_objective.hpp"
+#include "rig_models/core/rig_error.hpp"
+#include "study/cli/rig_commands.hpp"
+#include "study/cli/rig_runner.hpp"
+#include "study/cli/run_command.hpp"
+#include "study/provenance/timestamp.hpp"
+
+namespace ccm {
+namespace {
+
+struct Range {
+  double lower, upper;
+};
+
+// Default search ranges: a free pin's coefficients over [0, 1], a fixed case's frictional pin
+// (thesis 3.4.1 used mu_s = 50) over [0, 100]; the track's as the case file's assumptions
+// allow; K_s within a factor two of the characterised 1895 N/m.
+Range default_range(std::string_view name, const RigInputs& in) {
+  const bool fixed = in.rig_case->artifact == rig::ArtifactKind::fixed;
+  if (name == "mu_s" || name == "mu_k") return fixed ? Range{0.0, 100.0} : Range{0.0, 1.0};
+  if (name == "track_friction") return {0.0, 0.2};
+  if (name == "track_damping") return {0.0, 5.0};
+  const double K = in.cases.rig.spring_stiffness.value;
+  return {0.5 * K, 2.0 * K};
+}
+
+double parse_number(std::string_view text, const std::string& what) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+    throw std::invalid_argument(fmt::format("{}: '{}' is not a number", what, text));
+  return v;
+}
+
+std::map<std::string, Range> parse_bounds(const std::vector<std::string>& bounds) {
+  std::map<std::string, Range> out;
+  for (const std::string& b : bounds) {
+    const size_t eq = b.find('='), colon = b.find(':');
+    if (eq == std::string::npos || colon == std::string::npos || colon < eq)
+      throw std::invalid_argument(fmt::format("--bounds {}: expected name=lower:upper", b));
+    out[b.substr(0, eq)] = {parse_number(b.substr(eq + 1, colon - eq - 1), "--bounds " + b),
+                            parse_number(b.substr(colon + 1), "--bounds " + b)};
+  }
+  return out;
+}
+
+std::vector<rig::SearchParameter> search_parameters(const RigCalibrateArgs& args,
+                                                    const RigInputs& in) {
+  std::map<std::string, Range> bounds = parse_bounds(args.bounds);
+  std::vector<rig::SearchParameter> out;
+  std::stringstream names(args.params);
+  for (std::string name; std::getline(names, name, ',');) {
+    if (const std::string p = rig::parameter_problem(name, *in.rig_case, in.drive); !p.empty())
+      throw std::invalid_argument(fmt::format("--params: {}", p));
+    for (const auto& q : out)
+      if (q.name == name) throw std::invalid_argument(fmt::format("--params: {} twice", name));
+    const Range r = bounds.count(name) ? bounds.at(name) : default_range(name, in);
+    bounds.erase(name);
+    const double initial = rig::get_parameter(in.parameters, name);
+    if (!(r.lower >= 0.0 && r.lower < r.upper))
+      throw std::invalid_argument(
+          fmt::format("--bounds {}: need 0 <= lower < upper (got {}:{})", name, r.lower, r.upper));
+    if (!(initial >= r.lower && initial <= r.upper))
+      throw std::invalid_argument(fmt::format(
+          "{}: the starting value {} lies outside [{}, {}]; widen it with --bounds {}=lo:hi", name,
+          initial, r.lower, r.upper, name));
+    out.push_back({name, r.lower, r.upper, initial});
+  }
+  if (out.empty()) throw std::invalid_argument("--params: name at least one parameter");
+  if (!bounds.empty())
+    throw std::invalid_argument(
+        fmt::format("--bounds {}: not among --params", bounds.begin()->first));
+  return out;
+}
+
+rig::RunParameters with_values(rig::RunParameters p, const std::vector<rig::SearchParameter>& s,
+                               const std::vector<double>& x) {
+  for (size_t i = 0; i < s.size(); ++i) rig::set_parameter(p, s[i].name, x[i]);
+  return p;
+}
+
+std::string values_text(const std::vector<rig::SearchParameter>& s, const std::vector<double>& x) {
+  std::string t;
+  for (size_t i = 0; i < s.size(); ++i)
+    t += fmt::format("{}{}={:.6g}", i ? ";" : "", s[i].name, x[i]);
+  return t;
+}
+
+int report(std::string_view kind, std::string_view message, int code) {
+  std::fflush(stdout);
+  fmt::print(stderr, "ccm: {}: {}\n", kind, message);
+  return code;
+}
+
+int calibrate(const RigCalibrateArgs& args) {
+  const RigCommonArgs& common = args.common;
+  const RigInputs in = read_rig_inputs(common);
+  if (in.trials.empty())
+    throw std::invalid_argument("calibration fits the measured trials: give --data DIR");
+  if (args.max_evaluations < 1 || args.max_evaluations > 500)
+    throw std::invalid_argument("--max-evals must lie in [1, 500]");
+  const std::vector<rig::SearchParameter> params = search_parameters(args, in);
+  if (in.db.has_parent_path()) std::filesystem::create_directories(in.db.parent_path());
+  db::RigStore store(in.db);
+  const std::string started = utc_timestamp_now();
+  std::vector<RigRunOutcome> first_and_best;  // [0] the start, [1] the best so far
+  std::vector<db::RigCalibrationEvaluation> history;
+  int evaluation = 0;
+  const rig::SearchObjective objective =
+      [&](const std::vector<double>& x) -> std::optional<double> {
+    ++evaluation;
+    const std::string label =
+        fmt::format("{} eval {}/{}", in.rig_case->code, evaluation, args.max_evaluations);
+    RigRunOutcome o = run_rig_once(in, common, with_values(in.parameters, params, x), label);
+    const bool ok = o.result.summary.verdict == Verdict::completed && o.objective;
+    history.push_back({values_text(params, x), ok ? o.objective : std::nullopt,
+                       std::string(to_string(o.result.summary.verdict)),
+                       o.result.summary.wall_seconds});
+    if (!common.quiet)
+      fmt::print("  eval {:>3}  {:<40} objective {}\n", evaluation, values_text(params, x),
+                 ok ? fmt::format("{:.5f}", *o.objective) : "- (" + history.back().status + ")");
+    if (first_and_best.empty()) first_and_best.push_back(o);
+    if (ok && (first_and_best.size() < 2 || *o.objective < *first_and_best[1].objective)) {
+      if (first_and_best.size() < 2)
+        first_and_best.push_back(o);
+      else
+        first_and_best[1] = std::move(o);
+    }
+    if (!ok) return std::nullopt;
+    return *history.back().objective;
+  };
+  if (!common.quiet)
+    fmt::print("ccm rig calibrate {} ({} drive): {} of {}\n", in.rig_case->code, name_of(in.drive),
+               rig::kObjectiveName,
+               in.trials.size() == 1 ? "1 trial" : fmt::format("{} trials", in.trials.size()));
+  const rig::SearchResult result =
+      rig::bounded_search(params, objective, {args.max_evaluations, 1e-3});
+  const RigRunOutcome& before = first_and_best[0];
+  const RigRunOutcome& after = first_and_best.size() > 1 ? first_and_best[1] : before;
+  if (!before.objective)
+    throw std::runtime_error("calibration: the starting run could not be compared (unstable)");
+  const long long before_id = store.record_run(store_record(in, before, common, "calibration"));
+  const long long after_id = store.record_run(store_record(in, after, common, "calibration"));
+  db::RigCalibrationRecord rec;
+  rec.case_code = in.rig_case->code;
+  rec.drive = std::string(name_of(in.drive));
+  rec.algorithm = result.algorithm;
+  rec.objective_name = std::string(rig::kObjectiveName);
+  rec.result = result.stop_reason;
+  rec.evaluations = static_cast<int>(result.history.size());
+  rec.max_evaluations = args.max_evaluations;
+  rec.before_run_id = before_id;
+  rec.after_run_id = after_id;
+  rec.objective_before = *before.objective;
+  rec.objective_after = *after.objective;
+  for (size_t i = 0; i < params.size(); ++i)
+    rec.parameters.push_back(
+        {params[i].name, params[i].lower, params[i].upper, params[i].initial, result.best[i]});
+  rec.history = history;
+  rec.started_at = started;
+  rec.ended_at = utc_timestamp_now();
+  const long long id = store.record_calibration(rec);
+  if (!common.quiet) {
+    fmt::print("\n{} after {} evaluations ({}; {})\n", result.algorithm, rec.evaluations,
+               result.stop_reason, rig::kObjectiveName);
+    fmt::print("  {:<18} {:>10} {:>10} {:>12} {:>12}\n", "parameter", "lower", "upper", "before",
+               "after");
+    for (const auto& p : rec.parameters)
+      fmt::print("  {:<18} {:>10.4g} {:>10.4g} {:>12.6g} {:>12.6g}\n", p.name, p.lower, p.upper,
+                 p.initial, p.final);
+    fmt::print("  {:<18} {:>10} {:>10} {:>12.5f} {:>12.5f}\n", "objective", "", "",
+               rec.objective_before, rec.objective_after);
+    fmt::print("\nBefore (rig_runs.id {}):\n{}{}", before_id, run_table(in, before),
+               comparison_table(in, before));
+    fmt::print("\nAfter (rig_runs.id {}):\n{}{}", after_id, run_table(in, after),
+               comparison_table(in, after));
+    fmt::print("\nstored in {} (rig_calibrations.id {})\n", in.db.string(), id);
+  }
+  return exit_code::completed;
+}
+
+}  // namespace
+
+int rig_calibrate_command(const RigCalibrateArgs& args) {
+  try {
+    return calibrate(args);
+  } catch (const rig::RigInputError& e) {
+    return report("error", e.what(), exit_code::bad_input);
+  } catch (const std::invalid_argument& e) {
+    return report("error", e.what(), exit_code::bad_input);
+  } catch (const db::StoreError& e) {
+    return report("error", e.what(), exit_code::bad_input);
+  } catch (const std::exception& e) {
+    return report("internal error", e.what(), exit_code::internal_error);
+  }
+}
+
+}  // namespace ccm

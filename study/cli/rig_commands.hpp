@@ -1,0 +1,24 @@
+// `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]`
+// and `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]` (docs/rig-models.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "study/cli/rig_inputs.hpp"
+
+namespace ccm {
+
+struct RigCalibrateArgs {
+  RigCommonArgs common;
+  std::string params;               // comma-separated names (rig_models/sim/run_parameters.hpp)
+  std::vector<std::string> bounds;  // name=lower:upper
+  int max_evaluations = 12;
+};
+
+// Exit codes (study/cli/run_command.hpp): 0 completed, 3 unstable (run), 2 bad input (nothing
+// written), 1 internal error.
+int rig_run_command(const RigCommonArgs& args);
+int rig_calibrate_command(const RigCalibrateArgs& args);
+
+}  // namespace ccm

@@ -1,0 +1,135 @@
+#include "study/cli/rig_inputs.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "rig_models/cases/case_code.hpp"
+#include "rig_models/cases/case_file.hpp"
+#include "rig_models/core/rig_error.hpp"
+#include "rig_models/geometry/geometry_file.hpp"
+#include "rig_models/measurement/trial_folder.hpp"
+#include "study/runner/content_hash.hpp"
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string file_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw rig::rig_input_error(file, 0, "", "cannot open the file for reading");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+double number_of(std::string_view text, std::string_view what) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+    throw std::invalid_argument(fmt::format("{}: '{}' is not a number", what, text));
+  return v;
+}
+
+// --set name=value: each a parameter that applies to this case and drive, value >= 0.
+void apply_settings(const std::vector<std::string>& set, const rig::RigCase& c,
+                    rig::DriveKind drive, rig::RunParameters& p) {
+  for (const std::string& s : set) {
+    const size_t eq = s.find('=');
+    if (eq == std::string::npos)
+      throw std::invalid_argument(fmt::format("--set {}: expected name=value", s));
+    const std::string name = s.substr(0, eq);
+    if (const std::string problem = rig::parameter_problem(name, c, drive); !problem.empty())
+      throw std::invalid_argument(fmt::format("--set {}: {}", s, problem));
+    const double v = number_of(std::string_view(s).substr(eq + 1), "--set " + s);
+    if (v < 0.0) throw std::invalid_argument(fmt::format("--set {}: must be >= 0", s));
+    rig::set_parameter(p, name, v);
+  }
+}
+
+// The case's trials from the folder (every file read and checked), and the driving one.
+void read_trials(const RigCommonArgs& args, RigInputs& in) {
+  if (!args.data) {
+    if (args.trial) throw std::invalid_argument("--trial needs --data DIR (the measured trials)");
+    return;
+  }
+  auto by_case = rig::read_trial_folder(*args.data);
+  const auto it = by_case.find(in.rig_case->code);
+  if (it == by_case.end())
+    throw std::invalid_argument(fmt::format("--data {}: no trial of {} in the folder",
+                                            args.data->string(), in.rig_case->code));
+  in.trials = std::move(it->second);
+  const int wanted = args.trial.value_or(kDefaultTrial);
+  for (const rig::MeasuredTrial& m : in.trials)
+    if (m.trial == wanted) in.drive_trial = &m;
+  if (!in.drive_trial) {
+    std::vector<int> have;
+    for (const rig::MeasuredTrial& m : in.trials) have.push_back(m.trial);
+    throw std::invalid_argument(fmt::format("--trial {}: {} has trials {} in {}", wanted,
+                                            in.rig_case->code, fmt::join(have, ", "),
+                                            args.data->string()));
+  }
+  std::string bytes;
+  for (const rig::MeasuredTrial& m : in.trials) bytes += file_text(m.source);
+  in.data_hash = study::fnv1a64(bytes);
+}
+
+void check_out(const std::optional<fs::path>& out) {
+  if (!out) return;
+  std::error_code ec;
+  if (out->empty()) throw std::invalid_argument("--out: the output folder must not be empty");
+  if (fs::exists(*out, ec) && !fs::is_directory(*out, ec))
+    throw std::invalid_argument(fmt::format("--out {}: exists and is not a folder", out->string()));
+}
+
+}  // namespace
+
+RigInputs read_rig_inputs(const RigCommonArgs& args) {
+  RigInputs in;
+  in.cases_text = file_text(args.cases);
+  in.cases = rig::parse_case_table(in.cases_text, args.cases);
+  in.geometry_text = file_text(args.geometry);
+  in.geometry = rig::parse_geometry(in.geometry_text, args.geometry);
+  rig::check_against_cases(in.geometry, in.cases.rig);
+  if (!rig::is_case_code(args.case_code))
+    throw std::invalid_argument(
+        fmt::format("'{}' is not a case of thesis Table 3.2 (RX025 ... FF100; see ccm rig list)",
+                    args.case_code));
+  in.rig_case = &in.cases.find(args.case_code);
+  const auto drive = rig::parse_drive(args.drive);
+  if (!drive)
+    throw std::invalid_argument(
+        fmt::format("--drive {}: expected 'open-loop' or 'physical'", args.drive));
+  in.drive = *drive;
+  if (!(args.mesh_scale > 0.0 && args.mesh_scale <= 4.0))
+    throw std::invalid_argument(
+        fmt::format("--mesh-scale {}: must lie in (0, 4]", args.mesh_scale));
+  in.parameters = rig::default_parameters(in.cases, *in.rig_case);
+  apply_settings(args.set, *in.rig_case, in.drive, in.parameters);
+  read_trials(args, in);
+  if (in.drive == rig::DriveKind::open_loop && !in.drive_trial)
+    throw std::invalid_argument(
+        "the open-loop drive (the default) follows a measured trial: give --data DIR (and "
+        "--trial N), or use --drive physical");
+  check_out(args.out);
+  in.cases_hash = study::fnv1a64(in.cases_text);
+  in.geometry_hash = study::fnv1a64(in.geometry_text);
+  in.db = args.db ? *args.db : args.out ? *args.out / "rig.sqlite" : fs::path("rig.sqlite");
+  return in;
+}
+
+std::string parameter_text(const rig::RunParameters& p, const rig::RigCase& c, rig::DriveKind d) {
+  std::string s;
+  for (std::string_view name : rig::kRunParameterNames) {
+    if (!rig::parameter_problem(name, c, d).empty()) continue;
+    if ((name == "mu_s" || name == "mu_k") && !p.mu_s) continue;  // exact fixed pin
+    s += fmt::format("{}{}={}", s.empty() ? "" : ";", name, rig::get_parameter(p, name));
+  }
+  return s.empty() ? "pin=exact" : (p.mu_s ? s : "pin=exact;" + s);
+}
+
+}  // namespace ccm

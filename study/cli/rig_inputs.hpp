@@ -1,0 +1,56 @@
+// Everything `ccm rig run` and `ccm rig calibrate` read, parsed and checked before any
+// simulation starts — the case file, the geometry file, every measured trial of the data folder
+// (a defective file costs seconds, not a run), the drive, the trial, the parameters, the output
+// folder and the store — so that bad input exits 2 with nothing written.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rig_models/cases/rig_case.hpp"
+#include "rig_models/geometry/rig_geometry.hpp"
+#include "rig_models/measurement/measured_trial.hpp"
+#include "rig_models/sim/run_parameters.hpp"
+
+namespace ccm {
+
+struct RigCommonArgs {
+  std::string case_code;
+  std::optional<std::filesystem::path> data;  // folder of <CASE>_t<N>.csv
+  std::optional<int> trial;                   // default 2 (the thesis simulated the second)
+  std::string drive = "open-loop";
+  std::optional<double> start, end;  // s, trial time
+  double mesh_scale = 1.0;
+  std::vector<std::string> set;  // name=value run parameters
+  std::filesystem::path cases = CCM_RIG_CASES;
+  std::filesystem::path geometry = CCM_RIG_GEOMETRY;
+  std::optional<std::filesystem::path> out;
+  std::optional<std::filesystem::path> db;
+  bool quiet = false;
+};
+
+inline constexpr int kDefaultTrial = 2;
+
+struct RigInputs {
+  std::string cases_text, geometry_text;
+  rig::RigCaseTable cases;
+  rig::RigGeometry geometry;
+  const rig::RigCase* rig_case = nullptr;
+  rig::DriveKind drive = rig::DriveKind::open_loop;
+  std::vector<rig::MeasuredTrial> trials;  // of this case, in trial order; empty without data
+  const rig::MeasuredTrial* drive_trial = nullptr;
+  rig::RunParameters parameters;
+  std::string cases_hash, geometry_hash, data_hash;
+  std::filesystem::path db;  // --db, else <out>/rig.sqlite, else ./rig.sqlite
+};
+
+// Throws rig::RigInputError (a file's defect, with file, line and column or key) or
+// std::invalid_argument (a wrong argument, saying what to do).
+RigInputs read_rig_inputs(const RigCommonArgs& args);
+
+// "name=value;..." of every parameter that applies to this case and drive.
+std::string parameter_text(const rig::RunParameters& p, const rig::RigCase& c, rig::DriveKind d);
+
+}  // namespace ccm

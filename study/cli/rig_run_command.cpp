@@ -1,0 +1,56 @@
+// `ccm rig run`: read and check every input (measured data included), open the store, run the
+// case once, compare it with every trial, then store, write and print.
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "engine/mesh/gmsh_mesher.hpp"
+#include "rig_models/core/rig_error.hpp"
+#include "study/cli/rig_commands.hpp"
+#include "study/cli/rig_runner.hpp"
+#include "study/cli/run_command.hpp"
+
+namespace ccm {
+namespace {
+
+int report(std::string_view kind, std::string_view message, int code) {
+  std::fflush(stdout);
+  fmt::print(stderr, "ccm: {}: {}\n", kind, message);
+  return code;
+}
+
+int run(const RigCommonArgs& args) {
+  const RigInputs in = read_rig_inputs(args);
+  if (in.db.has_parent_path()) std::filesystem::create_directories(in.db.parent_path());
+  db::RigStore store(in.db);
+  const RigRunOutcome o = run_rig_once(in, args, in.parameters, in.rig_case->code);
+  const int code =
+      o.result.summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
+  const long long id = store.record_run(store_record(in, o, args, "run"));
+  if (args.out) write_run_files(*args.out, in, o, args, code);
+  if (!args.quiet) {
+    fmt::print("{}", run_table(in, o));
+    fmt::print("  {:<15}{} (rig_runs.id {})\n", "stored", in.db.string(), id);
+    if (args.out) fmt::print("  {:<15}{}\n", "files", args.out->string());
+    fmt::print("{}", comparison_table(in, o));
+  }
+  return code;
+}
+
+}  // namespace
+
+int rig_run_command(const RigCommonArgs& args) {
+  try {
+    return run(args);
+  } catch (const rig::RigInputError& e) {
+    return report("error", e.what(), exit_code::bad_input);
+  } catch (const std::invalid_argument& e) {
+    return report("error", e.what(), exit_code::bad_input);
+  } catch (const db::StoreError& e) {
+    return report("error", e.what(), exit_code::bad_input);
+  } catch (const std::exception& e) {
+    return report("internal error", e.what(), exit_code::internal_error);
+  }
+}
+
+}  // namespace ccm

@@ -1,0 +1,151 @@
+// The rig's results in the store (db/store/rig_store.hpp, schema step 3): a run with its
+// comparison, spread and channels is written whole in one transaction and read back as written;
+// a calibration references its before and after runs (a dangling reference writes nothing); an
+// older (version 2) store is migrated; a foreign file is refused untouched.
+#include <catch2/catch.hpp>
+#include <fstream>
+
+#include "db/schema/migrations.hpp"
+#include "db/sqlite/statement.hpp"
+#include "db/store/rig_store.hpp"
+#include "tests/db/scratch_dir.hpp"
+#include "tests/db/store_queries.hpp"
+
+using namespace ccm;
+
+namespace {
+
+rig::MeasuredTrial trial(int n, double scale) {
+  rig::MeasuredTrial m;
+  m.trial = n;
+  for (int k = 0; k <= 20; ++k) {
+    const double t = 0.01 * k;
+    m.impactor_velocity_mps.t.push_back(t);
+    m.impactor_velocity_mps.value.push_back(scale * t);
+    m.artifact_angle_deg.t.push_back(t);
+    m.artifact_angle_deg.value.push_back(scale * t * t);
+    m.pressure_kpa.t.push_back(t);
+    m.pressure_kpa.value.push_back(k >= 5 && k <= 10 ? 10.0 * scale : 0.0);
+  }
+  return m;
+}
+
+const std::string kStamp("2026-01-01T00:00:00.000Z");
+
+db::RigRunRecord record() {
+  const std::vector<rig::MeasuredTrial> trials{trial(1, 1.0), trial(2, 1.1)};
+  rig::RigChannels sim{trials[0].impactor_velocity_mps, trials[0].artifact_angle_deg,
+                       trials[0].pressure_kpa};
+  for (double& v : sim.pressure_kpa.value) v *= 1.5;
+  db::RigRunRecord r;
+  r.row.case_code = "RX025";
+  r.row.drive = "open-loop";
+  r.row.drive_trial = 2;
+  r.row.parameters = "pin=exact";
+  r.row.status = "completed";
+  r.row.window_end = 0.2;
+  r.row.n_elements = 3121;
+  r.row.steps = 1000;
+  r.row.dt_min = 4e-7;
+  r.row.wall_seconds = 1.5;
+  r.row.cases_hash = "cases0123456789ab";
+  r.row.geometry_hash = "geometry01234567";
+  r.row.started_at = r.row.ended_at = kStamp;
+  r.trials = {1, 2};
+  r.comparison = rig::compare_case(trials, sim, 1.0);
+  r.measured = rig::measured_spread(trials, 1.0);
+  r.channels = sim;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("rig store: a run is written whole and read back", "[db][rig-store]") {
+  test::ScratchDir dir("rig-store");
+  db::RigStore store(dir / "rig.sqlite");
+  const db::RigRunRecord r = record();
+  const long long id = store.record_run(r);
+  db::Connection& c = store.connection();
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_runs") == 1);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_channel_metrics") == 3 * 2);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_contact") == 2);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_channel_samples") == 3 * 21);
+  db::Statement q(c,
+                  "SELECT rmse, peak_simulated, peak_measured FROM rig_channel_metrics WHERE "
+                  "run_id = ?1 AND channel = 'pressure' AND trial = 2");
+  q.bind(1, id);
+  REQUIRE(q.step());
+  CHECK(q.column_double(0) == r.comparison->pressure.per_trial[1].rmse);
+  CHECK(q.column_double(1) == 15.0);
+  CHECK(q.column_double(2) == Approx(11.0));
+  db::Statement s(c,
+                  "SELECT mean, std_dev, n FROM rig_channel_spread WHERE run_id = ?1 AND "
+                  "channel = 'velocity' AND metric = 'measured_peak'");
+  s.bind(1, id);
+  REQUIRE(s.step());
+  CHECK(s.column_double(0) == Approx(0.21));  // peaks 0.2 and 0.22
+  CHECK(s.column_int(2) == 2);
+  db::Statement p(c, "SELECT ccm_version, git_hash, host, pid, drive_trial FROM rig_runs");
+  REQUIRE(p.step());
+  CHECK(p.column_text(0) == CCM_VERSION);
+  CHECK(p.column_text(1) == CCM_GIT_HASH);
+  CHECK(!p.column_text(2).empty());
+  CHECK(p.column_int(3) == static_cast<long long>(::getpid()));
+  CHECK(p.column_int(4) == 2);
+  CHECK(test::integrity_check(c) == "ok");
+}
+
+TEST_CASE("rig store: a calibration refers to its runs; a dangling one writes nothing",
+          "[db][rig-store]") {
+  test::ScratchDir dir("rig-calibration");
+  db::RigStore store(dir / "rig.sqlite");
+  const long long before = store.record_run(record());
+  const long long after = store.record_run(record());
+  db::RigCalibrationRecord cal;
+  cal.case_code = "FF025";
+  cal.drive = "open-loop";
+  cal.algorithm = "LN_BOBYQA";
+  cal.objective_name = "mean nRMSE";
+  cal.result = "MAXEVAL_REACHED";
+  cal.evaluations = 2;
+  cal.max_evaluations = 2;
+  cal.before_run_id = before;
+  cal.after_run_id = after;
+  cal.objective_before = 0.5;
+  cal.objective_after = 0.4;
+  cal.parameters = {{"mu_s", 0.0, 1.0, 0.4, 0.35}, {"mu_k", 0.0, 1.0, 0.7, 0.6}};
+  cal.history = {{"mu_s=0.4;mu_k=0.7", 0.5, "completed", 1.0},
+                 {"mu_s=0.35;mu_k=0.6", 0.4, "completed", 1.1}};
+  cal.started_at = cal.ended_at = kStamp;
+  store.record_calibration(cal);
+  db::Connection& c = store.connection();
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibrations") == 1);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibration_parameters") == 2);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibration_evaluations") == 2);
+  cal.after_run_id = 999;  // no such run: the foreign key fails, the transaction rolls back
+  CHECK_THROWS_AS(store.record_calibration(cal), db::StoreError);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibrations") == 1);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibration_parameters") == 2);
+  cal.after_run_id = after;
+  cal.parameters[0].final = 2.0;  // outside its bounds: CHECK constraint
+  CHECK_THROWS_AS(store.record_calibration(cal), db::StoreError);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibrations") == 1);
+}
+
+TEST_CASE("rig store: a version-2 store is migrated; a foreign file refused", "[db][rig-store]") {
+  test::ScratchDir dir("rig-migrate");
+  {
+    db::Connection c(dir / "old.sqlite");
+    db::migrate(c, 2);
+    c.exec("INSERT INTO studies VALUES (1, 'old', 'g1', 'then', '0.0.9', 'abc')");
+  }
+  {
+    db::RigStore store(dir / "old.sqlite");
+    CHECK(db::schema_version(store.connection()) == 3);
+    CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM studies") == 1);
+    store.record_run(record());
+  }
+  const auto foreign = dir / "notes.sqlite";
+  std::ofstream(foreign) << "not a database\n";
+  CHECK_THROWS_WITH(db::RigStore(foreign), Catch::Contains("not a ccm study store"));
+}
