@@ -119,8 +119,12 @@ TEST_CASE("ccm report migrates an older store holding runs and reports them", "[
   const fs::path file = dir.path / "v1.sqlite";
   test::write_synthetic_study(file);
   {
-    // A schema-1 store: the run ledger (schema step 1) without the tables of step 2.
+    // A schema-1 store: the run ledger (schema step 1) without the tables of steps 2 and 3.
     db::Connection c(file);
+    c.exec(
+        "DROP TABLE rig_calibration_evaluations; DROP TABLE rig_calibration_parameters; "
+        "DROP TABLE rig_calibrations; DROP TABLE rig_channel_samples; DROP TABLE rig_contact; "
+        "DROP TABLE rig_channel_spread; DROP TABLE rig_channel_metrics; DROP TABLE rig_runs;");
     c.exec("DROP TABLE fit_points; DROP TABLE fit_terms; DROP TABLE fits; DROP TABLE metrics;");
     c.exec("PRAGMA user_version = 1");
   }
