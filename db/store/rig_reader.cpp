@@ -104,7 +104,8 @@ rig::ChannelAgainstTrials read_channel(Connection& c, long long id, const char* 
 
 std::optional<rig::ContactWindow> window(const Statement& s, int onset, int duration) {
   if (s.is_null(onset) || s.is_null(duration)) return std::nullopt;
-  return rig::ContactWindow{s.column_double(onset), s.column_double(duration)};
+  // Whether a contact was still on at the last sample is not stored.
+  return rig::ContactWindow{s.column_double(onset), s.column_double(duration), true};
 }
 
 std::optional<rig::CaseComparison> read_comparison(Connection& c, long long id) {
@@ -219,8 +220,12 @@ std::vector<RigCalibrationRecord> load_rig_calibrations(Connection& c) {
               "objective_after, started_at, ended_at FROM rig_calibrations ORDER BY id");
   while (s.step()) {
     const long long id = s.column_int(0);
-    RigCalibrationRecord k{s.column_text(1), s.column_text(2), s.column_text(3), s.column_text(4),
-                           s.column_text(5)};
+    RigCalibrationRecord k;
+    k.case_code = s.column_text(1);
+    k.drive = s.column_text(2);
+    k.algorithm = s.column_text(3);
+    k.objective_name = s.column_text(4);
+    k.result = s.column_text(5);
     k.evaluations = static_cast<int>(s.column_int(6));
     k.max_evaluations = static_cast<int>(s.column_int(7));
     k.before_run_id = s.column_int(8);

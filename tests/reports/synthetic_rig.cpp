@@ -65,11 +65,12 @@ long long write_synthetic_rig(const std::filesystem::path& file) {
   const long long before = store.record_run(r);
   r.row.objective = 0.25;
   const long long after = store.record_run(r);
-  db::RigCalibrationRecord k{.case_code = "RX025",
-                             .drive = "open-loop",
-                             .algorithm = "bobyqa",
-                             .objective_name = "mean nRMSE",
-                             .result = "converged"};
+  db::RigCalibrationRecord k;
+  k.case_code = "RX025";
+  k.drive = "open-loop";
+  k.algorithm = "bobyqa";
+  k.objective_name = "mean nRMSE";
+  k.result = "converged";
   k.evaluations = 12;
   k.max_evaluations = 40;
   k.before_run_id = before;

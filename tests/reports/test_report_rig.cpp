@@ -65,7 +65,8 @@ TEST_CASE("report: the rig section's planned figures draw the stored run and tri
   REQUIRE(data.rig.runs.size() == 1);  // the calibration's runs are not shown as runs
   CHECK(data.rig.runs[0].id == id);
   REQUIRE(data.rig.calibrations.size() == 1);
-  const Section& rig = rig_of(plan_report(data, {}, current_stamp()));
+  const ReportContent content = plan_report(data, {}, current_stamp());
+  const Section& rig = rig_of(content);
   REQUIRE(rig.figures.size() == 3);
   const db::RigRunRecord expected = test::synthetic_rig_record();
   for (size_t i = 0; i < 3; ++i) {
