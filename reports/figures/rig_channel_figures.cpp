@@ -97,7 +97,8 @@ Figure channel_figure(const db::StoredRigRun& run, const Channel& ch) {
   const std::string who = rig_case_label(r.row);
   PlotSpec plot{.title = fmt::format("{}: {}", who, ch.name),
                 .x_label = "trial time [s]",
-                .y_label = ch.axis_label};
+                .y_label = ch.axis_label,
+                .height = 520};  // room for the seven legend lines below the plot
   std::vector<rig::TimeSeries> measured;
   for (const rig::RigChannels& m : r.measured_channels) measured.push_back(m.*ch.series);
   plot.series.push_back(band_series(
@@ -126,8 +127,9 @@ Figure channel_figure(const db::StoredRigRun& run, const Channel& ch) {
       contact.simulated,
       fmt::format("simulated contact onset/end, {}, {}", r.row.case_code, model_label(r.row)),
       kSimulatedMarkColour, plot);
-  plot.series.push_back(std::move(measured_marks));
+  // The measured marks drawn last: on top where the simulated ones coincide with them.
   plot.series.push_back(std::move(simulated_marks));
+  plot.series.push_back(std::move(measured_marks));
   const std::string trials_text =
       measured.empty() ? "the measured trials are not in this store (it was written before ccm "
                          "stored them)"
