@@ -192,6 +192,14 @@ CREATE TABLE rig_channel_samples (
   value REAL NOT NULL,
   PRIMARY KEY (run_id, channel, t)
 );
+CREATE TABLE rig_measured_samples (
+  run_id INTEGER NOT NULL REFERENCES rig_runs(id) ON DELETE CASCADE,
+  trial INTEGER NOT NULL CHECK (trial > 0),
+  channel TEXT NOT NULL CHECK (channel IN ('velocity', 'angle', 'pressure')),
+  t REAL NOT NULL,
+  value REAL NOT NULL,
+  PRIMARY KEY (run_id, trial, channel, t)
+);
 CREATE TABLE rig_calibrations (
   id INTEGER PRIMARY KEY,
   case_code TEXT NOT NULL,

@@ -184,6 +184,30 @@ void insert_samples(Connection& c, long long run, const rig::RigChannels& ch) {
     }
 }
 
+bool in_window(double t, const RigRunRow& w) {
+  return w.window_end <= w.window_start || (t >= w.window_start && t <= w.window_end);
+}
+
+void insert_measured(Connection& c, long long run, const RigRunRecord& r) {
+  Statement q(c,
+              "INSERT INTO rig_measured_samples (run_id, trial, channel, t, value) VALUES "
+              "(?1, ?2, ?3, ?4, ?5)");
+  for (size_t j = 0; j < r.measured_channels.size(); ++j) {
+    const rig::RigChannels& ch = r.measured_channels[j];
+    const std::array<std::pair<const char*, const rig::TimeSeries*>, 3> series = {
+        std::pair{"velocity", &ch.impactor_velocity_mps},
+        std::pair{"angle", &ch.artifact_angle_deg}, std::pair{"pressure", &ch.pressure_kpa}};
+    for (const auto& [name, s] : series)
+      for (size_t k = 0; k < s->t.size(); ++k) {
+        if (!in_window(s->t[k], r.row)) continue;
+        q.reset();
+        q.bind(1, run).bind(2, r.trials.at(j)).bind(3, name).bind(4, s->t[k]);
+        q.bind(5, s->value[k]);
+        q.run();
+      }
+  }
+}
+
 }  // namespace
 
 RigStore::RigStore(const std::filesystem::path& file)
@@ -204,6 +228,7 @@ long long RigStore::record_run(const RigRunRecord& r) {
     insert_contact(*connection_, run, r);
   }
   insert_samples(*connection_, run, r.channels);
+  insert_measured(*connection_, run, r);
   transaction.commit();
   return run;
 }

@@ -2,7 +2,8 @@
 // simulation with its figures and provenance, its comparison with the measured trials (per
 // channel and trial, the spread over the trials, contact onset and duration), the channels it
 // was compared on, and the calibrations with their parameters and evaluations. Every record is
-// one transaction: a reader sees all of a run or none of it.
+// one transaction: a reader sees all of a run or none of it. Read back with
+// db/store/rig_reader.hpp.
 #pragma once
 
 #include <filesystem>
@@ -45,6 +46,10 @@ struct RigRunRecord {
   std::optional<rig::CaseComparison> comparison;
   std::optional<rig::MeasuredSpread> measured;
   rig::RigChannels channels;  // as compared (sensor model applied)
+  // The measured trials the run was compared with, per trial in the order of `trials`, each
+  // channel cut to the run window [window_start, window_end] (the whole trial when the window
+  // is empty): the report draws them from the store alone.
+  std::vector<rig::RigChannels> measured_channels;
 };
 
 struct RigCalibrationParameter {

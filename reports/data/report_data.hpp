@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "db/store/rig_reader.hpp"
 #include "db/store/study_store.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/metrics/point_metrics.hpp"
@@ -23,6 +24,13 @@ struct StudyProvenance {
   std::vector<std::string> scene_hashes{};  // distinct scene content hashes of the runs
 };
 
+// The benchtop rig's records of the same store (reports/data/rig_loader.hpp).
+struct RigReportData {
+  std::vector<db::StoredRigRun> runs{};  // latest purpose='run' row per case and drive
+  std::vector<db::RigCalibrationRecord> calibrations{};
+  bool empty() const { return runs.empty() && calibrations.empty(); }
+};
+
 struct ReportData {
   std::string database{};  // path of the store, as given
   StudyProvenance provenance{};
@@ -31,6 +39,7 @@ struct ReportData {
   std::vector<study::PointMetrics> grid{};       // metrics of the main grid's points
   std::vector<study::PointMetrics> convergence;  // metrics of convergence points (mesh_scale)
   study::StudyFits fits{};
+  RigReportData rig{};
 };
 
 // True for the points of the convergence mode (they carry other_axes["mesh_scale"]).

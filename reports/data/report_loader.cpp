@@ -4,6 +4,7 @@
 #include <string>
 
 #include "db/sqlite/statement.hpp"
+#include "reports/data/rig_loader.hpp"
 
 namespace ccm::reports {
 namespace {
@@ -50,6 +51,7 @@ ReportData load_report_data(const db::StudyStore& store) {
   for (study::PointMetrics& m : store.load_metrics())
     (is_convergence_point(m.point) ? data.convergence : data.grid).push_back(std::move(m));
   data.fits = store.load_fits();
+  data.rig = load_rig_report_data(store.connection());
   return data;
 }
 

@@ -1,5 +1,5 @@
 // Reads a study's report data from its store: status, runs with histories, metrics, fits and
-// provenance.
+// provenance, and the benchtop rig's runs and calibrations of the same store.
 #pragma once
 
 #include "db/store/study_store.hpp"

@@ -49,13 +49,4 @@ Section provenance_section(const ReportData& data, const ReportStamp& stamp) {
   return s;
 }
 
-Section rig_section() {
-  Section s{.id = "rig", .title = "Benchtop rig"};
-  s.paragraphs.push_back(
-      "Not available: the benchtop rig models (thesis chapter 3) have not landed in ccm yet, "
-      "so this report has no rig comparison. Nothing in this section is simulated or "
-      "measured.");
-  return s;
-}
-
 }  // namespace ccm::reports

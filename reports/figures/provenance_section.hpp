@@ -1,6 +1,5 @@
 // Provenance of the report (this ccm, machine, date) and of the study (grid and scene hashes,
-// the ccm versions and hosts that ran it, dates); and the rig section, which says that the
-// benchtop rig models have not landed.
+// the ccm versions and hosts that ran it, dates).
 #pragma once
 
 #include <string>
@@ -18,6 +17,5 @@ struct ReportStamp {
 
 ReportStamp current_stamp();
 Section provenance_section(const ReportData& data, const ReportStamp& stamp);
-Section rig_section();
 
 }  // namespace ccm::reports

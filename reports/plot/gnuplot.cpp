@@ -67,16 +67,27 @@ std::string style_clause(const Series& s) {
       return fmt::format("with boxxyerror fs solid 1.0 noborder lc rgb '{}'", colour);
     case SeriesStyle::surface:
       return fmt::format("with lines lw 0.8 lc rgb '{}'", colour);
+    case SeriesStyle::thin_lines:
+      return fmt::format("with lines lw 0.7 lc rgb '{}'", colour);
+    case SeriesStyle::band:
+      return fmt::format("with filledcurves fs transparent solid 0.25 noborder lc rgb '{}'",
+                         colour);
+    case SeriesStyle::marks:
+      return fmt::format("with vectors nohead lw 1.2 dt 2 lc rgb '{}'", colour);
     case SeriesStyle::points:
       break;
   }
   return fmt::format("with points pt {} ps 0.9 lc rgb '{}'", point_type, colour);
 }
 
+bool has_upper(const Series& s) {
+  return s.style == SeriesStyle::band || s.style == SeriesStyle::marks;
+}
+
 void write_series(const Series& s, bool three_d, const fs::path& file) {
   std::ofstream out(file);
   for (std::size_t i = 0; i < s.x.size(); ++i) {
-    if (three_d)
+    if (three_d || has_upper(s))
       out << fmt::format("{:.17g} {:.17g} {:.17g}\n", s.x[i], s.y[i], s.z[i]);
     else
       out << fmt::format("{:.17g} {:.17g}\n", s.x[i], s.y[i]);
@@ -109,9 +120,11 @@ int run_gnuplot(const std::string& gnuplot, const fs::path& script, const fs::pa
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
-// The `using` columns of one series: x y [z], or for cells x y x_low x_high y_low y_high.
+// The `using` columns of one series: x y [z], for a band x low high, for marks x y 0 dy, or for
+// cells x y x_low x_high y_low y_high.
 std::string using_columns(const PlotSpec& plot, const Series& series) {
-  if (plot.three_d) return "1:2:3";
+  if (plot.three_d || series.style == SeriesStyle::band) return "1:2:3";
+  if (series.style == SeriesStyle::marks) return "1:2:(0):($3-$2)";
   if (series.style != SeriesStyle::cells) return "1:2";
   const std::string x_range =
       plot.log_x ? fmt::format("($1*10**(-{0:.17g})):($1*10**({0:.17g}))", series.cell_dx)

@@ -15,12 +15,15 @@ enum class SeriesStyle {
   squares,      // large filled squares
   cells,        // filled rectangles centred on the points, cell_dx x cell_dy half-sizes (maps)
   surface,      // 3-D: a mesh of `surface_columns` points per row, rows in data order
+  thin_lines,   // a thin polyline in data order (e.g. one measured trial among several)
+  band,         // 2-D: the area between y (lower) and z (upper) at each x, translucent
+  marks,        // 2-D: a dashed vertical segment at each x, from y to z (event times)
 };
 
 struct Series {
   std::string title{};  // legend entry: names the model and the case
   SeriesStyle style = SeriesStyle::points;
-  std::vector<double> x{}, y{}, z{};  // z only for 3-D plots
+  std::vector<double> x{}, y{}, z{};  // z only for 3-D plots, bands and marks (upper end)
   std::size_t surface_columns = 0;    // points per mesh row (SeriesStyle::surface)
   // Half-sizes of SeriesStyle::cells: cell_dx in decades when the x axis is logarithmic (the
   // cell spans x 10^-dx .. x 10^dx), else in x units; cell_dy in y units.

@@ -5,6 +5,7 @@
 #include "reports/figures/error_runtime_section.hpp"
 #include "reports/figures/fit_section.hpp"
 #include "reports/figures/recommendation_map.hpp"
+#include "reports/figures/rig_section.hpp"
 #include "reports/figures/stability_section.hpp"
 #include "reports/figures/trade_study_section.hpp"
 #include "reports/html/html_page.hpp"
@@ -33,7 +34,7 @@ ReportContent plan_report(const ReportData& data, const ReportOptions& options,
   content.sections.push_back(fit_section(data));
   content.sections.push_back(error_runtime_section(data));
   content.sections.push_back(recommendation_section(data, options.max_error));
-  content.sections.push_back(rig_section());
+  content.sections.push_back(rig_section(data.rig));
   content.sections.push_back(provenance_section(data, stamp));
   return content;
 }

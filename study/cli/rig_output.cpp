@@ -209,7 +209,11 @@ db::RigRunRecord store_record(const RigInputs& in, const RigRunOutcome& o,
   w.data_hash = in.data_hash;
   w.started_at = o.started_at;
   w.ended_at = o.ended_at;
-  for (const rig::MeasuredTrial& m : in.trials) rec.trials.push_back(m.trial);
+  for (const rig::MeasuredTrial& m : in.trials) {
+    rec.trials.push_back(m.trial);
+    rec.measured_channels.push_back(
+        {m.impactor_velocity_mps, m.artifact_angle_deg, m.pressure_kpa});
+  }
   rec.comparison = o.comparison;
   rec.measured = o.measured;
   rec.channels = r.channels;

@@ -7,6 +7,7 @@
 
 #include "db/schema/migrations.hpp"
 #include "db/sqlite/statement.hpp"
+#include "db/store/rig_reader.hpp"
 #include "db/store/rig_store.hpp"
 #include "tests/db/scratch_dir.hpp"
 #include "tests/db/store_queries.hpp"
@@ -55,6 +56,8 @@ db::RigRunRecord record() {
   r.comparison = rig::compare_case(trials, sim, 1.0);
   r.measured = rig::measured_spread(trials, 1.0);
   r.channels = sim;
+  for (const rig::MeasuredTrial& m : trials)
+    r.measured_channels.push_back({m.impactor_velocity_mps, m.artifact_angle_deg, m.pressure_kpa});
   return r;
 }
 
@@ -95,6 +98,56 @@ TEST_CASE("rig store: a run is written whole and read back", "[db][rig-store]") 
   CHECK(test::integrity_check(c) == "ok");
 }
 
+TEST_CASE("rig store: a run reads back as written, the trials cut to the run window",
+          "[db][rig-store]") {
+  test::ScratchDir dir("rig-read");
+  db::RigStore store(dir / "rig.sqlite");
+  db::RigRunRecord r = record();
+  r.row.window_start = 0.02;
+  r.row.window_end = 0.15;  // samples 2 ... 15 of 0 ... 20
+  r.row.max_energy_error = 0.01;
+  const long long id = store.record_run(r);
+  store.record_run(record());  // a later run of the same case and drive
+  db::RigRunRecord cal = record();
+  cal.row.purpose = "calibration";
+  store.record_run(cal);
+  db::Connection& c = store.connection();
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_measured_samples WHERE run_id = 1") ==
+        3 * 2 * 14);
+  const std::vector<long long> latest = db::latest_rig_run_ids(c);
+  REQUIRE(latest.size() == 1);
+  CHECK(latest[0] == id + 1);
+  const db::StoredRigRun back = db::load_rig_run(c, id);
+  CHECK(back.id == id);
+  const db::RigRunRecord& b = back.record;
+  CHECK(b.row.case_code == "RX025");
+  CHECK(b.row.drive_trial == 2);
+  CHECK(b.row.n_elements == 3121);
+  CHECK(b.row.dt_min == 4e-7);
+  CHECK_FALSE(b.row.dt_max.has_value());
+  CHECK(b.row.max_energy_error == 0.01);
+  CHECK(b.row.window_end == 0.15);
+  CHECK(b.trials == std::vector<int>{1, 2});
+  CHECK(b.channels.pressure_kpa.value == r.channels.pressure_kpa.value);
+  CHECK(b.channels.artifact_angle_deg.t == r.channels.artifact_angle_deg.t);
+  REQUIRE(b.measured_channels.size() == 2);
+  const rig::TimeSeries& v2 = b.measured_channels[1].impactor_velocity_mps;
+  REQUIRE(v2.t.size() == 14);
+  CHECK(v2.t.front() == 0.02);
+  CHECK(v2.value.back() == r.measured_channels[1].impactor_velocity_mps.value[15]);
+  REQUIRE(b.comparison);
+  CHECK(b.comparison->pressure.per_trial.size() == 2);
+  CHECK(b.comparison->pressure.per_trial[1].rmse == r.comparison->pressure.per_trial[1].rmse);
+  CHECK(b.comparison->velocity.rmse.mean == r.comparison->velocity.rmse.mean);
+  REQUIRE(b.comparison->contact.size() == 2);
+  CHECK(b.comparison->contact[0].onset_error == r.comparison->contact[0].onset_error);
+  REQUIRE(b.comparison->onset_error);
+  CHECK(b.comparison->onset_error->mean == r.comparison->onset_error->mean);
+  REQUIRE(b.measured);
+  CHECK(b.measured->velocity.peak.mean == r.measured->velocity.peak.mean);
+  CHECK_THROWS_AS(db::load_rig_run(c, 999), db::StoreError);
+}
+
 TEST_CASE("rig store: a calibration refers to its runs; a dangling one writes nothing",
           "[db][rig-store]") {
   test::ScratchDir dir("rig-calibration");
@@ -120,6 +173,15 @@ TEST_CASE("rig store: a calibration refers to its runs; a dangling one writes no
   store.record_calibration(cal);
   db::Connection& c = store.connection();
   CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibrations") == 1);
+  const std::vector<db::RigCalibrationRecord> back = db::load_rig_calibrations(c);
+  REQUIRE(back.size() == 1);
+  CHECK(back[0].after_run_id == after);
+  CHECK(back[0].objective_after == 0.4);
+  REQUIRE(back[0].parameters.size() == 2);
+  CHECK(back[0].parameters[0].name == "mu_k");  // by name
+  CHECK(back[0].parameters[0].final == 0.6);
+  REQUIRE(back[0].history.size() == 2);
+  CHECK(back[0].history[1].objective == 0.4);
   CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibration_parameters") == 2);
   CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibration_evaluations") == 2);
   cal.after_run_id = 999;  // no such run: the foreign key fails, the transaction rolls back

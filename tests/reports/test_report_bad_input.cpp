@@ -123,7 +123,8 @@ TEST_CASE("ccm report migrates an older store holding runs and reports them", "[
     db::Connection c(file);
     c.exec(
         "DROP TABLE rig_calibration_evaluations; DROP TABLE rig_calibration_parameters; "
-        "DROP TABLE rig_calibrations; DROP TABLE rig_channel_samples; DROP TABLE rig_contact; "
+        "DROP TABLE rig_calibrations; DROP TABLE rig_measured_samples; "
+        "DROP TABLE rig_channel_samples; DROP TABLE rig_contact; "
         "DROP TABLE rig_channel_spread; DROP TABLE rig_channel_metrics; DROP TABLE rig_runs;");
     c.exec("DROP TABLE fit_points; DROP TABLE fit_terms; DROP TABLE fits; DROP TABLE metrics;");
     c.exec("PRAGMA user_version = 1");

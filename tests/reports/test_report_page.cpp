@@ -138,9 +138,9 @@ TEST_CASE("ccm report on the synthetic study: files, self-contained page, proven
     CHECK(only_namespace_urls(html));
   }
 
-  SECTION("the rig is said to be missing; the unstable run's reason is shown") {
+  SECTION("no rig run stored: the rig section says so; the unstable run's reason is shown") {
     CHECK(html.find("id=\"rig\"") != std::string::npos);
-    CHECK(html.find("have not landed") != std::string::npos);
+    CHECK(html.find("No benchtop rig run is stored in this database") != std::string::npos);
     CHECK(html.find(test::kUnstableReason) != std::string::npos);
   }
 

@@ -106,6 +106,11 @@ void check_short_run(const std::string& code) {
   CHECK(test::count_rows(c,
                          "SELECT count(*) FROM rig_channel_samples WHERE channel = "
                          "'pressure'") == 3);
+  // The measured trials are stored with the run, cut to its window (the report draws them).
+  CHECK(test::count_rows(c, "SELECT count(DISTINCT trial) FROM rig_measured_samples") == 3);
+  CHECK(test::count_rows(c,
+                         "SELECT count(*) FROM rig_measured_samples m JOIN rig_runs r ON "
+                         "r.id = m.run_id WHERE m.t < r.window_start OR m.t > r.window_end") == 0);
   // The impactor reaches the artifact: a contact force acts in the window (the raw history).
   std::ifstream history(out / "history.csv");
   std::string line;
