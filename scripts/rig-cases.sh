@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
-data=${2:-../shared/data/rig-dev}
+data=${2:-tests/data/rig-dev}
 out=${3:-results/rig-cases}
 shift $(( $# < 3 ? $# : 3 ))
 [ "${1:-}" = "--" ] && shift
