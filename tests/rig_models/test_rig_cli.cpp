@@ -187,11 +187,11 @@ TEST_CASE("ccm rig run FF025 (short): free artifact on its pin, flexible impacto
 }
 
 TEST_CASE("ccm rig calibrate RX025 (short): the fixed pin made frictional (thesis 3.4.1)",
-          "[rig][rig-cli]") {
+          "[rig][rig-cli][heavy]") {
   if (have_dev_data()) check_short_calibration("RX025", "mu_s,mu_k");
 }
 
-TEST_CASE("ccm rig calibrate FF025 (short): pin friction", "[rig][rig-cli]") {
+TEST_CASE("ccm rig calibrate FF025 (short): pin friction", "[rig][rig-cli][heavy]") {
   if (have_dev_data()) check_short_calibration("FF025", "mu_s,mu_k");
 }
 

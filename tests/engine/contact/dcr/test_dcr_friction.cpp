@@ -97,7 +97,7 @@ TEST_CASE("DCR friction: a block sliding on a plane decelerates at mu g", "[dcr]
   CHECK(r.summary.energy_balance_error < 0.05);
 }
 
-TEST_CASE("DCR friction: without friction the block keeps sliding", "[dcr][friction]") {
+TEST_CASE("DCR friction: without friction the block keeps sliding", "[dcr][friction][heavy]") {
   const Slide r = run_slide(0.0, 0.5, 0.02);
   REQUIRE(r.summary.verdict == Verdict::completed);
   // Frictionless contact exerts only normal impulses, so the horizontal momentum of the block

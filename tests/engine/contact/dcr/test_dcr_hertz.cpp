@@ -17,7 +17,8 @@ TEST_CASE("DCR Hertz: two elastic spheres, coarse mesh", "[dcr][hertz]") {
   test::HertzCase c;
   c.mesh_size = 0.002;
   const test::HertzRun r = test::run_hertz(c);
-  INFO("verdict " << to_string(r.summary.verdict) << " " << r.summary.instability.reason);
+  INFO("verdict " << to_string(r.summary.verdict) << " " << r.summary.instability.reason
+                  << ", energy balance error " << r.summary.energy_balance_error);
   INFO("elements " << r.elements << ", steps " << r.summary.steps << ", a_max "
                    << r.hertz.contact_radius << " m (h = " << c.mesh_size << "), t_c / (2R/c) "
                    << r.hertz.duration / r.hertz.wave_time);

@@ -93,7 +93,8 @@ TEST_CASE("DCR restitution: e = 0, a sphere dropped on a stiff block does not re
   CHECK(r.corrections >= 1);
 }
 
-TEST_CASE("DCR restitution: e = 0.5 rebounds at half the impact speed", "[dcr][restitution]") {
+TEST_CASE("DCR restitution: e = 0.5 rebounds at half the impact speed",
+          "[dcr][restitution][heavy]") {
   const Drop r = run_drop(0.5, false);
   INFO("verdict " << to_string(r.summary.verdict) << " " << r.summary.instability.reason);
   INFO("impact " << r.impact_speed << " m/s, rebound " << r.rebound << " m/s");
@@ -101,7 +102,7 @@ TEST_CASE("DCR restitution: e = 0.5 rebounds at half the impact speed", "[dcr][r
   CHECK(test::relative_error(r.rebound, 0.5 * r.impact_speed) < 0.03);
 }
 
-TEST_CASE("DCR restitution: e = 1 keeps the elastic rebound", "[dcr][restitution]") {
+TEST_CASE("DCR restitution: e = 1 keeps the elastic rebound", "[dcr][restitution][heavy]") {
   const Drop r = run_drop(1.0, false);
   INFO("verdict " << to_string(r.summary.verdict) << " " << r.summary.instability.reason);
   INFO("impact " << r.impact_speed << " m/s, rebound " << r.rebound << " m/s");

@@ -208,7 +208,7 @@ Agreement run_both(const Resolution& r) {
 // this coarse mesh (a 10 mm artifact node weighs a tenth of the sphere, so each node's first touch
 // is a collision of its own; see the [validation] case for the 10 % on a finer mesh).
 TEST_CASE("DCR rigid limit: a sphere 1e6 stiffer matches the rigid-penalty sphere (coarse)",
-          "[dcr][rigid_limit]") {
+          "[dcr][rigid_limit][heavy]") {
   const Resolution coarse{4, 2, 0.005, 0.03, 2.5e-4};
   const Agreement a = run_both(coarse);
   CHECK(a.final_error <= 0.10);
