@@ -13,6 +13,7 @@
 #include "rig_models/calibrate/bounded_search.hpp"
 #include "rig_models/calibrate/rig_objective.hpp"
 #include "rig_models/core/rig_error.hpp"
+#include "study/cli/rig_command_errors.hpp"
 #include "study/cli/rig_commands.hpp"
 #include "study/cli/rig_runner.hpp"
 #include "study/cli/run_command.hpp"
@@ -97,12 +98,6 @@ std::string values_text(const std::vector<rig::SearchParameter>& s, const std::v
   for (size_t i = 0; i < s.size(); ++i)
     t += fmt::format("{}{}={:.6g}", i ? ";" : "", s[i].name, x[i]);
   return t;
-}
-
-int report(std::string_view kind, std::string_view message, int code) {
-  std::fflush(stdout);
-  fmt::print(stderr, "ccm: {}: {}\n", kind, message);
-  return code;
 }
 
 int calibrate(const RigCalibrateArgs& args) {
@@ -195,17 +190,7 @@ int calibrate(const RigCalibrateArgs& args) {
 }  // namespace
 
 int rig_calibrate_command(const RigCalibrateArgs& args) {
-  try {
-    return calibrate(args);
-  } catch (const rig::RigInputError& e) {
-    return report("error", e.what(), exit_code::bad_input);
-  } catch (const std::invalid_argument& e) {
-    return report("error", e.what(), exit_code::bad_input);
-  } catch (const db::StoreError& e) {
-    return report("error", e.what(), exit_code::bad_input);
-  } catch (const std::exception& e) {
-    return report("internal error", e.what(), exit_code::internal_error);
-  }
+  return run_rig_reporting_errors([&] { return calibrate(args); });
 }
 
 }  // namespace ccm

@@ -6,42 +6,13 @@
 #include <stdexcept>
 
 #include "rig_models/calibrate/rig_objective.hpp"
+#include "study/cli/output_file.hpp"
 #include "study/provenance/version.hpp"
 
 namespace ccm {
 namespace {
 
 namespace fs = std::filesystem;
-
-void write_atomic(const fs::path& file, std::string_view content) {
-  const fs::path tmp = file.string() + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << content;
-    out.close();
-    if (!out) throw std::runtime_error(fmt::format("{}: write failed", tmp.string()));
-  }
-  fs::rename(tmp, file);
-}
-
-std::string toml_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\')
-      out += fmt::format("\\{}", c);
-    else if (static_cast<unsigned char>(c) < 0x20)
-      out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
-    else
-      out += c;
-  }
-  return out + "\"";
-}
-
-std::string toml_float(double v) {
-  std::string s = fmt::format("{}", v);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
-}
 
 std::string case_title(const rig::RigCase& c) {
   return fmt::format("{} ({} impactor, {} artifact, {:.2f} m/s)", c.code, name_of(c.impactor),

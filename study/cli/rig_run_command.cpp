@@ -6,18 +6,13 @@
 
 #include "engine/mesh/gmsh_mesher.hpp"
 #include "rig_models/core/rig_error.hpp"
+#include "study/cli/rig_command_errors.hpp"
 #include "study/cli/rig_commands.hpp"
 #include "study/cli/rig_runner.hpp"
 #include "study/cli/run_command.hpp"
 
 namespace ccm {
 namespace {
-
-int report(std::string_view kind, std::string_view message, int code) {
-  std::fflush(stdout);
-  fmt::print(stderr, "ccm: {}: {}\n", kind, message);
-  return code;
-}
 
 int run(const RigCommonArgs& args) {
   const RigInputs in = read_rig_inputs(args);
@@ -40,17 +35,7 @@ int run(const RigCommonArgs& args) {
 }  // namespace
 
 int rig_run_command(const RigCommonArgs& args) {
-  try {
-    return run(args);
-  } catch (const rig::RigInputError& e) {
-    return report("error", e.what(), exit_code::bad_input);
-  } catch (const std::invalid_argument& e) {
-    return report("error", e.what(), exit_code::bad_input);
-  } catch (const db::StoreError& e) {
-    return report("error", e.what(), exit_code::bad_input);
-  } catch (const std::exception& e) {
-    return report("internal error", e.what(), exit_code::internal_error);
-  }
+  return run_rig_reporting_errors([&] { return run(args); });
 }
 
 }  // namespace ccm

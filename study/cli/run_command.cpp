@@ -14,6 +14,7 @@
 
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
+#include "study/cli/output_file.hpp"
 #include "study/cli/progress_line.hpp"
 #include "study/provenance/timestamp.hpp"
 #include "study/provenance/version.hpp"
@@ -33,38 +34,7 @@ struct UsageError : std::runtime_error {
 };
 
 // ---------------------------------------------------------------------------------------------
-// Small helpers: hashing, time stamps, TOML values, atomic files
-
-std::string toml_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\')
-      out += fmt::format("\\{}", c);
-    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-      out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
-    else
-      out += c;
-  }
-  return out + "\"";
-}
-
-// Shortest round-trip form, always a TOML float (never read back as an integer).
-std::string toml_float(double v) {
-  std::string s = fmt::format("{}", v);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // "n": inf, nan
-  return s;
-}
-
-void write_atomic(const fs::path& file, std::string_view content) {
-  const fs::path tmp = file.string() + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << content;
-    out.close();
-    if (!out) throw std::runtime_error(fmt::format("{}: write failed", tmp.string()));
-  }
-  fs::rename(tmp, file);
-}
+// Small helpers: hashing, time stamps (TOML values and atomic files: output_file.hpp)
 
 // ---------------------------------------------------------------------------------------------
 // Preparation: everything that bad input can make fail, before anything is written
