@@ -44,6 +44,8 @@ RigidSpherePenalty::RigidSpherePenalty(std::vector<Triangle> surface,
     throw std::invalid_argument("rigid sphere penalty: the mass must be > 0");
   if (!(params_.penalty > 0.0) || !std::isfinite(params_.penalty))
     throw std::invalid_argument("rigid sphere penalty: the penalty K_P must be > 0");
+  if (!(params_.damping >= 0.0) || !std::isfinite(params_.damping))
+    throw std::invalid_argument("rigid sphere penalty: the damping must be >= 0");
   if (!(params_.structural_safety > 0.0))
     throw std::invalid_argument("rigid sphere penalty: the structural safety must be > 0");
 
@@ -61,6 +63,8 @@ RigidSpherePenalty::RigidSpherePenalty(std::vector<Triangle> surface,
   // step is s * 2 / omega_struct (docs/contact-time-step.md).
   const double safety = params_.structural_safety < 1.0 ? params_.structural_safety : 0.9;
   share_ = std::sqrt(1.0 - safety * safety);
+  const double zeta = params_.damping;
+  damping_bound_factor_ = std::sqrt(1.0 + zeta * zeta) - zeta;
 
   nodes_ = nodes_of(surface);
   if (nodes_.front() < 0) throw std::invalid_argument("rigid sphere penalty: negative node id");
@@ -99,6 +103,7 @@ void RigidSpherePenalty::begin_step(const State& state, double dt) {
   std::swap(touched_n_, touched_np1_);
   std::swap(is_touched_n_, is_touched_np1_);
   F_s_n_ = F_s_;
+  damping_power_n_ = damping_power_;
   for (size_t l = 0; l < nodes_.size(); ++l) x_n_[l] = state.x[static_cast<size_t>(nodes_[l])];
 
   // x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28)
@@ -131,6 +136,7 @@ void RigidSpherePenalty::add_forces(State& state) {
   const double R = params_.sphere.radius;
   const double R2 = R * R;
   const double K = params_.penalty;
+  damping_power_ = 0.0;
   for (size_t tri = 0; tri < tris_.size(); ++tri) {
     const std::array<int, 3>& t = tris_[tri];
     const std::array<Vec3, 3> x = corners(state, tri);
@@ -148,7 +154,7 @@ void RigidSpherePenalty::add_forces(State& state) {
         n = -(x[1] - x[0]).cross(x[2] - x[0]).normalized();
       }
       const double delta = R - d;
-      const Vec3 f_q = (K * delta) * n;  // on the body   (eq. 2.5-2.6)
+      const Vec3 f_q = point_force(state, tri, k, delta, n);  // on the body   (eq. 2.5-2.6)
       for (size_t a = 0; a < 3; ++a) {
         const auto l = static_cast<size_t>(t[a]);
         if (!is_touched_np1_[l]) {
@@ -170,6 +176,30 @@ void RigidSpherePenalty::add_forces(State& state) {
   d2_t_ = state.t;
 }
 
+// f_q = max(0, K_P delta - c_q u_n) n with c_q = 2 zeta sqrt(K_P mu_q) (see the header).
+Vec3 RigidSpherePenalty::point_force(const State& state, size_t tri, int k, double delta,
+                                     const Vec3& n) {
+  const double spring = params_.penalty * delta;
+  if (params_.damping == 0.0) return spring * n;
+  const std::array<double, 3> N = shape_at(k);
+  Vec3 v_q = Vec3::Zero();
+  double m_q = 0.0;  // sum_a N_a m_a / s_a: node a's mass shared over its points
+  for (size_t a = 0; a < 3; ++a) {
+    const auto l = static_cast<size_t>(tris_[tri][a]);
+    const auto node = static_cast<size_t>(nodes_[l]);
+    v_q += N[a] * state.v[node];
+    m_q += N[a] / (valence_[l] * state.inv_m[node]);
+  }
+  const double m_s = params_.sphere.mass;
+  const double mu = m_q * m_s / (m_q + m_s);
+  const double c = 2.0 * params_.damping * std::sqrt(params_.penalty * mu);
+  const double u_n = n.dot(v_q - v_s_);  // > 0: separating
+  const double magnitude = std::max(0.0, spring - c * u_n);
+  // The dashpot's share of the force, times the relative velocity: its power (<= 0).
+  damping_power_ += (magnitude - spring) * u_n;
+  return magnitude * n;
+}
+
 void RigidSpherePenalty::end_step(const State& state, double dt) {
   // v_{n+1} = v* + dt/2 a_{n+1}   (eq. 2.31)
   v_s_ += 0.5 * dt * a_s_;
@@ -187,6 +217,7 @@ void RigidSpherePenalty::end_step(const State& state, double dt) {
     if (!is_touched_n_[static_cast<size_t>(l)]) add(l);
   work_body_ += w;
   work_sphere_ += 0.5 * (F_s_n_ + F_s_).dot(x_s_ - x_s_n_);
+  damping_work_ += 0.5 * dt * (damping_power_n_ + damping_power_);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -205,7 +236,7 @@ double RigidSpherePenalty::limit_from(double node_term, int n_points) const {
   const double omega2 =
       node_term + params_.penalty * static_cast<double>(n_points) / params_.sphere.mass;
   if (!(omega2 > 0.0)) return std::numeric_limits<double>::infinity();
-  return share_ * 2.0 / std::sqrt(omega2);
+  return share_ * damping_bound_factor_ * 2.0 / std::sqrt(omega2);
 }
 
 // Which points count. A point counts when it is within kReachMargin R of the sphere's surface

@@ -11,6 +11,18 @@
 //   F_s -= f_q                              on the sphere: equal and opposite
 //   E_pen = sum_q 1/2 K_P delta^2           the penalty energy; f = -dE_pen/dx exactly.
 //
+// Contact damping (optional, `damping` = zeta, a fraction of critical; default 0, the thesis's
+// pure spring). A stiff spring against a light surface node is an elastic collision: the node
+// leaves the sphere at up to twice the sphere's speed, chatters, and carries four times the
+// kinetic energy of a node moving with the sphere. A dashpot in parallel with each spring,
+//   f_q = max(0, K_P delta - c_q u_n) n,   u_n = n . (v_q - v_s),  v_q = sum_a N_a(q) v_a,
+//   c_q = 2 zeta sqrt(K_P mu_q),   mu_q = m_q m_s / (m_q + m_s),  m_q = sum_a N_a(q) m_a / s_a,
+// (the Kelvin-Voigt contact law; the max keeps the contact from pulling) makes that collision
+// one of restitution exp(-zeta omega t*) (zeta < 1/sqrt(2), omega^2 = K_P / mu, t* the first zero
+// of the force; zeta = 1: none), the inelastic contact of a continuum. u_n uses the
+// mid-step velocities v* = v_{n+1/2} the engine holds at add_forces (explicit). The dashpot's
+// work is in work() and sphere_work(): the energy balance sees it as dissipated.
+//
 // How K_P is applied: K_P [N/m] is the stiffness of ONE quadrature point's spring, not scaled by
 // the point's area weight. That is the thesis's model (eq. 2.5: "a mechanical spring" K_P per
 // finite location; §2.8: "all quadrature points ... are checked", K_P = 1e6 per point), it keeps
@@ -32,7 +44,9 @@
 // with s_a = sum_q N_a(q) over the points of node a's triangles (= its number of surface
 // triangles) and n_s the number of points that can touch the sphere within the step; the limit
 // returned is sqrt(1 - s^2) * 2 / omega_pen for the engine's structural safety s (0.9: 0.436), so
-// that dt^2 (omega_struct^2 + omega_pen^2) <= 4.
+// that dt^2 (omega_struct^2 + omega_pen^2) <= 4; with damping times sqrt(1 + zeta^2) - zeta, the
+// central-difference bound of a damped oscillator (Belytschko, Liu & Moran, Nonlinear Finite
+// Elements, section 6.2).
 //
 // One model object serves one run: it holds the sphere's state.
 #pragma once
@@ -61,6 +75,7 @@ struct RigidSpherePenaltyParams {
   std::string name = "sphere";  // the history column prefix
   RigidSphere sphere;
   double penalty = 1e6;         // K_P [N/m] per quadrature point (thesis 2.8)
+  double damping = 0.0;         // zeta >= 0: the dashpot per point, a fraction of critical
   Vec3 gravity = Vec3::Zero();  // acceleration of the sphere [m/s^2]
   // Unit axis for the history column `<name>.contact_force_axis`; default: the direction of
   // the initial velocity, else of gravity, else -z.
@@ -75,7 +90,7 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
  public:
   // `surface`: triangles of the deformable body (global node ids), e.g. the surface
   // "<body>/boundary" of the ModelMesh. Throws std::invalid_argument for an empty surface, a
-  // radius, mass or penalty that is not > 0, or a zero force axis.
+  // radius, mass or penalty that is not > 0, a damping < 0, or a zero force axis.
   RigidSpherePenalty(std::vector<Triangle> surface, RigidSpherePenaltyParams params);
 
   std::string_view name() const override { return "rigid_penalty"; }
@@ -99,8 +114,10 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   double sphere_kinetic_energy() const { return 0.5 * params_.sphere.mass * v_s_.squaredNorm(); }
   const Vec3& force_axis() const { return axis_; }
   // Of the last add_forces (at x_{n+1}):
-  const Vec3& contact_force() const { return F_s_; }           // on the sphere [N]
-  double penalty_energy() const { return penalty_energy_; }    // sum_q 1/2 K_P delta^2 [J]
+  const Vec3& contact_force() const { return F_s_; }         // on the sphere [N]
+  double penalty_energy() const { return penalty_energy_; }  // sum_q 1/2 K_P delta^2 [J]
+  // Work of the dashpots on sphere and body since t = 0 (<= 0) [J]: the energy they took.
+  double damping_work() const { return damping_work_; }
   double penetration_max() const { return penetration_max_; }  // max_q delta [m]
   // Non-empty when penetration_max() > kFailureDepth * R: the sphere has sunk half its radius
   // into the surface (K_P far too soft for the impact); see failure() in the .cpp.
@@ -115,6 +132,9 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
 
  private:
   std::array<Vec3, 3> corners(const State& state, size_t tri) const;
+  // The force of quadrature point k of triangle tri on the body, at depth delta along n (the
+  // spring and, with damping, the dashpot); adds the dashpot's power to damping_power_.
+  Vec3 point_force(const State& state, size_t tri, int k, double delta, const Vec3& n);
   // sqrt(1 - s^2) * 2 / omega_pen for omega_pen^2 = node_term + K_P n_points / m_s, where
   // node_term = max_a K_P s_a / m_a over the nodes that can be pushed.
   double limit_from(double node_term, int n_points) const;
@@ -143,6 +163,9 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   int n_active_ = 0;
   double work_body_ = 0.0;
   double work_sphere_ = 0.0;
+  double damping_power_ = 0.0, damping_power_n_ = 0.0;  // of the last two evaluations [W]
+  double damping_work_ = 0.0;
+  double damping_bound_factor_ = 1.0;  // sqrt(1 + zeta^2) - zeta
 
   // |x_q - x_s|^2 of every point (3 per triangle), as add_forces last computed them on the
   // state d2_of_ at time d2_t_ (null when they are not add_forces's: after begin_step, as the

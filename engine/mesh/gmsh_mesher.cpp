@@ -405,7 +405,21 @@ void validate_spec(const PrimitiveSpec& s) {
   if (const auto [field, radius] = smallest_radius(s); field && s.mesh_size > radius)
     throw MeshError(fmt::format("mesh_primitive({}): mesh_size ({}) must not exceed {} ({})", kind,
                                 s.mesh_size, field, radius));
-  const double estimate = kTetsPerCubedSize * volume / std::pow(s.mesh_size, 3);
+  double estimate = kTetsPerCubedSize * volume / std::pow(s.mesh_size, 3);
+  if (s.refinement) {
+    const LocalRefinement& r = *s.refinement;
+    require_positive(kind, "refinement.radius", r.radius);
+    require_positive(kind, "refinement.mesh_size", r.mesh_size);
+    if (!r.center.allFinite())
+      throw MeshError(fmt::format("mesh_primitive({}): refinement.center must be finite", kind));
+    if (r.mesh_size > s.mesh_size)
+      throw MeshError(fmt::format(
+          "mesh_primitive({}): refinement.mesh_size ({}) must not exceed mesh_size ({})", kind,
+          r.mesh_size, s.mesh_size));
+    // The ball and its transition shell (radius 2 r) at the fine size, an upper bound.
+    const double ball = 4.0 / 3.0 * std::numbers::pi * std::pow(2.0 * r.radius, 3);
+    estimate += kTetsPerCubedSize * std::min(ball, volume) / std::pow(r.mesh_size, 3);
+  }
   if (estimate > kMaxEstimatedTets)
     throw MeshError(
         fmt::format("mesh_primitive({}): mesh_size {} is too small for this shape: "
@@ -458,9 +472,30 @@ void add_geometry(const PrimitiveSpec& s) {
   occ::synchronize();  // the model (and the mesher) only see OCC entities after this
 }
 
-void set_mesh_options(double mesh_size) {
-  gmsh::option::setNumber("Mesh.MeshSizeMin", mesh_size);
+// Gmsh's Ball field: VIn inside the ball, VOut beyond its shell of width Thickness, linear
+// between; as the background mesh it replaces the sizes from points and curvature.
+void set_refinement(const LocalRefinement& r, double mesh_size) {
+  namespace field = gmsh::model::mesh::field;
+  const int ball = field::add("Ball");
+  field::setNumber(ball, "VIn", r.mesh_size);
+  field::setNumber(ball, "VOut", mesh_size);
+  field::setNumber(ball, "Radius", r.radius);
+  field::setNumber(ball, "Thickness", r.radius);
+  field::setNumber(ball, "XCenter", r.center.x());
+  field::setNumber(ball, "YCenter", r.center.y());
+  field::setNumber(ball, "ZCenter", r.center.z());
+  field::setAsBackgroundMesh(ball);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+}
+
+void set_mesh_options(const PrimitiveSpec& spec) {
+  const double mesh_size = spec.mesh_size;
+  gmsh::option::setNumber("Mesh.MeshSizeMin",
+                          spec.refinement ? spec.refinement->mesh_size : mesh_size);
   gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size);
+  if (spec.refinement) set_refinement(*spec.refinement, mesh_size);
   gmsh::option::setNumber("Mesh.ElementOrder", 1);
   gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay: deterministic (HXT is not)
   gmsh::option::setNumber("Mesh.Optimize", 1);
@@ -529,7 +564,7 @@ TetMesh mesh_primitive(const PrimitiveSpec& spec, const Placement& placement) {
   const std::string context = fmt::format("mesh_primitive({})", kind_name(spec.kind));
   TetMesh mesh = with_gmsh(context, [&] {
     add_geometry(spec);
-    set_mesh_options(spec.mesh_size);
+    set_mesh_options(spec);
     gmsh::model::mesh::generate(3);
     return std::move(extract_tets(context).mesh);
   });

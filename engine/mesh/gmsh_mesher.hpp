@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -29,6 +30,16 @@ struct Placement {
 
 enum class PrimitiveKind { sphere, box, cylinder, pipe };
 
+// A finer mesh in a ball (local coordinates of the primitive, before placement): tet edges of
+// mesh_size inside the ball, growing linearly to the primitive's mesh_size over a shell of one
+// more radius outside it (Gmsh's "Ball" size field). Where two bodies touch, the contact zone
+// needs the fine mesh and the rest of the body does not.
+struct LocalRefinement {
+  Vec3 center = Vec3::Zero();
+  double radius = 0;     // > 0
+  double mesh_size = 0;  // > 0, at most the primitive's mesh_size
+};
+
 struct PrimitiveSpec {
   PrimitiveKind kind;
   double radius = 0;         // sphere, cylinder; pipe: outer radius
@@ -38,6 +49,7 @@ struct PrimitiveSpec {
   bool centered = false;     // box/cylinder/pipe: centre the shape on the local origin instead
                              // (a sphere is always centred on the origin)
   double mesh_size = 0;      // characteristic length (Mesh.MeshSizeMin/Max)
+  std::optional<LocalRefinement> refinement = std::nullopt;
 };
 
 // Meshes the primitive with 3D Delaunay (deterministic: the same spec gives the same mesh) and

@@ -27,4 +27,16 @@ struct TetMesh {
   int n_elements() const { return static_cast<int>(tets.size()); }
 };
 
+// The reference volume of the mesh: sum over tets of det[x1 - x0, x2 - x0, x3 - x0] / 6 [m^3].
+inline double mesh_volume(const TetMesh& mesh) {
+  double v = 0.0;
+  for (const Tet& t : mesh.tets) {
+    const Vec3& x0 = mesh.nodes[static_cast<size_t>(t[0])];
+    v += (mesh.nodes[static_cast<size_t>(t[1])] - x0)
+             .cross(mesh.nodes[static_cast<size_t>(t[2])] - x0)
+             .dot(mesh.nodes[static_cast<size_t>(t[3])] - x0);
+  }
+  return v / 6.0;
+}
+
 }  // namespace ccm

@@ -75,8 +75,10 @@ struct BodySpec {
   GeometrySpec geometry;
   Placement placement;
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]
-  SourceRef where;                       // the [[bodies]] table
-  SourceRef geometry_where;              // its geometry table
+  // When set [kg]: the density becomes mass / meshed volume (material.rho is the nominal value).
+  std::optional<double> mass;
+  SourceRef where;           // the [[bodies]] table
+  SourceRef geometry_where;  // its geometry table
 };
 
 struct BoxSpec {
@@ -146,6 +148,7 @@ struct ContactSpec {
   std::string body;                    // the deformable body
   std::optional<std::string> surface;  // default "<body>/boundary"
   double penalty = 1e6;                // K_P [N/m] per quadrature point (thesis 2.8)
+  double damping = 0.0;                // zeta >= 0, fraction of critical per point
   std::optional<Vec3> force_axis;      // rigid_penalty: default the sphere's initial velocity
                                        // direction; dcr: pair forces are output along it
   RigidSphereSpec sphere;

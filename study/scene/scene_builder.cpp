@@ -42,6 +42,14 @@ TetMesh mesh_body(const Scene& scene, const BodySpec& body) {
   }
 }
 
+// The body's material; with `mass` set, its density is mass / meshed volume, so that a faceted
+// primitive (a sphere's inscribed polyhedron) weighs what the solid it stands for weighs.
+MaterialParams material_of(const BodySpec& body, const TetMesh& geometry) {
+  MaterialParams m = body.material;
+  if (body.mass) m.rho = *body.mass / mesh_volume(geometry);
+  return m;
+}
+
 int body_index(const Scene& scene, const ModelMesh& mesh, const SourceRef& where,
                std::string_view key, const std::string& name) {
   const int b = mesh.body_index(name);
@@ -160,8 +168,10 @@ void apply_initial_velocities(const Scene& scene, Model& model) {
 
 Model build_model(const Scene& scene) {
   ModelMesh mesh;
-  for (const BodySpec& body : scene.bodies)
-    add_body(mesh, body.name, body.material, mesh_body(scene, body));
+  for (const BodySpec& body : scene.bodies) {
+    TetMesh geometry = mesh_body(scene, body);
+    add_body(mesh, body.name, material_of(body, geometry), std::move(geometry));
+  }
   Model model = make_model(std::move(mesh));
   apply_fixed(scene, model);
   apply_loads(scene, model);
@@ -253,6 +263,7 @@ ContactSetup build_contact(const Scene& scene, const Model& model) {
   p.name = c.sphere.name;
   p.sphere = {c.sphere.radius, c.sphere.mass, c.sphere.center, c.sphere.velocity};
   p.penalty = c.penalty;
+  p.damping = c.damping;
   p.gravity = scene.gravity;
   p.force_axis = c.force_axis;
   p.structural_safety = scene.time.dt_safety;
@@ -265,8 +276,9 @@ ContactSetup build_contact(const Scene& scene, const Model& model) {
   setup.model_name = "rigid_penalty";
   setup.description = fmt::format(
       "rigid_penalty: sphere '{}' (R {:.4g} m, {:.4g} kg) on '{}' ({} triangles), K_P {:.4g} N/m "
-      "per point",
-      p.name, p.sphere.radius, p.sphere.mass, name, it->second.triangles.size(), p.penalty);
+      "per point, damping {:.4g} of critical",
+      p.name, p.sphere.radius, p.sphere.mass, name, it->second.triangles.size(), p.penalty,
+      p.damping);
   setup.history = penalty.get();
   setup.model = std::move(penalty);
   return setup;

@@ -343,10 +343,10 @@ struct ShapeInfo {
 };
 
 const std::array<ShapeInfo, 5> kShapes{{
-    {Shape::sphere, "sphere", {"radius", "mesh_size"}},
-    {Shape::box, "box", {"size", "centered", "mesh_size"}},
-    {Shape::cylinder, "cylinder", {"radius", "length", "centered", "mesh_size"}},
-    {Shape::pipe, "pipe", {"radius", "inner_radius", "length", "centered", "mesh_size"}},
+    {Shape::sphere, "sphere", {"radius", "mesh_size", "refine"}},
+    {Shape::box, "box", {"size", "centered", "mesh_size", "refine"}},
+    {Shape::cylinder, "cylinder", {"radius", "length", "centered", "mesh_size", "refine"}},
+    {Shape::pipe, "pipe", {"radius", "inner_radius", "length", "centered", "mesh_size", "refine"}},
     {Shape::mesh, "mesh", {"file"}},
 }};
 
@@ -372,6 +372,19 @@ PrimitiveKind primitive_kind(Shape s) {
   return PrimitiveKind::box;
 }
 
+// refine = { center = [x, y, z], radius = r, mesh_size = h }: local coordinates of the shape.
+LocalRefinement parse_refinement(const Table& t, double mesh_size) {
+  t.allow_only({"center", "radius", "mesh_size"});
+  LocalRefinement r;
+  r.center = t.need<Vec3>("center");
+  r.radius = positive(t, "radius", t.need<double>("radius"));
+  r.mesh_size = positive(t, "mesh_size", t.need<double>("mesh_size"));
+  if (r.mesh_size > mesh_size)
+    t.fail("mesh_size",
+           fmt::format("must not exceed the body's mesh_size ({} > {})", r.mesh_size, mesh_size));
+  return r;
+}
+
 PrimitiveSpec parse_primitive(const Table& t, Shape shape) {
   PrimitiveSpec p{primitive_kind(shape)};
   if (t.has("radius")) p.radius = positive(t, "radius", t.need<double>("radius"));
@@ -389,19 +402,21 @@ PrimitiveSpec parse_primitive(const Table& t, Shape shape) {
   }
   p.centered = t.get_or("centered", false);
   p.mesh_size = positive(t, "mesh_size", t.need<double>("mesh_size"));
+  if (const auto r = t.table("refine")) p.refinement = parse_refinement(*r, p.mesh_size);
   return p;
 }
 
 GeometrySpec parse_geometry(const Table& t) {
-  t.allow_only(
-      {"shape", "size", "radius", "inner_radius", "length", "centered", "mesh_size", "file"});
+  t.allow_only({"shape", "size", "radius", "inner_radius", "length", "centered", "mesh_size",
+                "refine", "file"});
   const ShapeInfo& info = shape_info(t);
   for (std::string_view k :
-       {"size", "radius", "inner_radius", "length", "centered", "mesh_size", "file"})
+       {"size", "radius", "inner_radius", "length", "centered", "mesh_size", "refine", "file"})
     if (t.has(k) && std::find(info.keys.begin(), info.keys.end(), k) == info.keys.end())
       t.fail(k, fmt::format("key '{}' does not apply to shape '{}'", k, info.name));
   for (std::string_view k : info.keys)
-    if (k != "centered" && !t.has(k)) t.fail(k, fmt::format("required for shape '{}'", info.name));
+    if (k != "centered" && k != "refine" && !t.has(k))
+      t.fail(k, fmt::format("required for shape '{}'", info.name));
 
   GeometrySpec g;
   g.shape = info.shape;
@@ -425,11 +440,12 @@ Placement parse_placement(const Table& t) {
 }
 
 BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
-  t.allow_only({"name", "initial_velocity", "material", "geometry", "placement"});
+  t.allow_only({"name", "initial_velocity", "mass", "material", "geometry", "placement"});
   BodySpec b;
   b.name = checked_name(t, "name");
   require_unique(t, "name", b.name, names);
   b.initial_velocity = t.get_or<Vec3>("initial_velocity", Vec3::Zero());
+  if (t.has("mass")) b.mass = positive(t, "mass", t.need<double>("mass"));
   b.material = parse_material(t.need_table("material"));
   const Table geometry = t.need_table("geometry");
   b.geometry = parse_geometry(geometry);
@@ -642,12 +658,15 @@ void parse_contact(const Table& root, Scene& scene) {
   }
   if (model != "rigid_penalty")
     t->fail("model", fmt::format("must be one of none, rigid_penalty, dcr (got '{}')", model));
-  t->allow_only({"model", "body", "surface", "penalty", "force_axis", "sphere"});
+  t->allow_only({"model", "body", "surface", "penalty", "damping", "force_axis", "sphere"});
   ContactSpec& c = scene.contact;
   c.kind = ContactKind::rigid_penalty;
   c.body = t->need<std::string>("body");
   if (t->has("surface")) c.surface = t->need<std::string>("surface");
   c.penalty = positive(*t, "penalty", t->get_or("penalty", c.penalty));
+  c.damping = t->get_or("damping", c.damping);
+  if (!(c.damping >= 0.0 && std::isfinite(c.damping)))
+    t->fail("damping", fmt::format("must be >= 0 (got {})", c.damping));
   if (t->has("force_axis")) c.force_axis = non_zero(*t, "force_axis", t->need<Vec3>("force_axis"));
   const Table sphere = t->need_table("sphere");
   c.sphere = parse_sphere(sphere, scene);

@@ -8,10 +8,13 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
+#include <numeric>
 #include <sstream>
 #include <string>
 
 #include "engine/core/time_table.hpp"
+#include "engine/solver/lumped_mass.hpp"
 #include "study/scene/scene_builder.hpp"
 #include "study/scene/scene_file.hpp"
 #include "tests/support/scene_fixtures.hpp"
@@ -351,4 +354,50 @@ TEST_CASE("ccm run: a run that ends unstable exits 3 with its results", "[scene]
   const std::string summary = read_file(out / "summary.toml");
   CHECK_THAT(summary, Contains("verdict = \"unstable\""));
   CHECK_THAT(summary, Contains("reason = \"step limit reached before the end time\""));
+}
+
+TEST_CASE("body mass and a refined mesh zone", "[scene]") {
+  TempDir tmp;
+  const std::string sphere =
+      "[time]\nend = 1e-3\n[[bodies]]\nname = \"ball\"\nmass = 2.0\n[bodies.material]\nE = 1e5\n"
+      "nu = 0.3\nrho = 1000.0\n[bodies.geometry]\nshape = \"sphere\"\nradius = 0.01\n"
+      "mesh_size = 0.004\nrefine = { center = [0.0, 0.0, -0.01], radius = 0.004, mesh_size = 0.001 "
+      "}\n";
+  const auto total_mass = [](const Model& m) {
+    const std::vector<double> lumped = lumped_mass(m.mesh, m.elements);
+    return std::accumulate(lumped.begin(), lumped.end(), 0.0);
+  };
+  SECTION("mass: the density is mass / meshed volume") {
+    const Scene s = parse_scene_file(tmp.write("s.toml", sphere));
+    REQUIRE(s.bodies[0].mass);
+    REQUIRE(s.bodies[0].geometry.primitive.refinement);
+    CHECK(s.bodies[0].geometry.primitive.refinement->mesh_size == 0.001);
+    const Model with_mass = build_model(s);
+    CHECK(total_mass(with_mass) == Approx(2.0).epsilon(1e-12));
+    // Without it: rho times the inscribed polyhedron's volume, below rho 4/3 pi r^3 = 4.19 g.
+    const Model nominal =
+        build_model(parse_scene_file(tmp.write("n.toml", with(sphere, "mass = 2.0\n", ""))));
+    CHECK(total_mass(nominal) < 1000.0 * 4.0 / 3.0 * std::numbers::pi * 1e-6);
+    CHECK(total_mass(nominal) > 0.95 * 1000.0 * 4.0 / 3.0 * std::numbers::pi * 1e-6);
+    // The refined zone: more tets than the same sphere without it.
+    const Model plain = build_model(parse_scene_file(
+        tmp.write("p.toml", with(sphere,
+                                 "refine = { center = [0.0, 0.0, -0.01], radius = 0.004, "
+                                 "mesh_size = 0.001 }\n",
+                                 ""))));
+    CHECK(with_mass.mesh.n_elements() > 2 * plain.mesh.n_elements());
+  }
+  SECTION("errors") {
+    const std::string f = (tmp.path / "s.toml").string();
+    CHECK(parse_error(tmp.write("s.toml", with(sphere, "mass = 2.0", "mass = -1.0"))) ==
+          f + ":5: bodies[0].mass: must be > 0 (got -1)");
+    CHECK(parse_error(
+              tmp.write("s.toml", with(sphere, "mesh_size = 0.001 }", "mesh_size = 0.01 }"))) ==
+          f + ":14: bodies[0].geometry.refine.mesh_size: must not exceed the body's mesh_size "
+              "(0.01 > 0.004)");
+    CHECK(parse_error(
+              tmp.write("s.toml", with(sphere, "radius = 0.004,", "radius = 0.004, r = 1,"))) ==
+          f + ":14: bodies[0].geometry.refine.r: unknown key 'r' (allowed: center, radius, "
+              "mesh_size)");
+  }
 }
