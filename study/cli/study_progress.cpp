@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "db/store/study_store.hpp"
+#include "study/cli/run_schedule.hpp"
 
 namespace ccm {
 namespace {
@@ -13,6 +14,8 @@ namespace {
 struct RunCounts {
   long finished = 0;  // completed, unstable or failed
   long running = 0;
+  double cost_finished = 0.0;  // expected cost (run_schedule.hpp) of the finished runs
+  double cost_total = 0.0;     // of every run of the study
 };
 
 RunCounts count_runs(const std::filesystem::path& db) {
@@ -20,12 +23,17 @@ RunCounts count_runs(const std::filesystem::path& db) {
   RunCounts counts;
   if (!store.open_existing_study()) return counts;
   for (const db::PointStatus& s : store.status())
-    for (const auto& run : {s.ccm, s.rigid}) {
+    for (const study::ImpactModel model : {study::ImpactModel::ccm, study::ImpactModel::rigid}) {
+      const auto& run = model == study::ImpactModel::ccm ? s.ccm : s.rigid;
+      const double cost = expected_run_cost(s.point, model);
+      counts.cost_total += cost;
       if (!run) continue;
-      if (*run == db::RunStatus::running)
+      if (*run == db::RunStatus::running) {
         ++counts.running;
-      else
+      } else {
         ++counts.finished;
+        counts.cost_finished += cost;
+      }
     }
   return counts;
 }
@@ -75,16 +83,20 @@ void StudyProgress::show(bool final) {
   } catch (const std::exception&) {
     return;  // the store is busy or being created: try again next second
   }
-  if (finished_at_start_ < 0) finished_at_start_ = counts.finished;
+  if (finished_at_start_ < 0) {
+    finished_at_start_ = counts.finished;
+    cost_at_start_ = counts.cost_finished;
+  }
   if (!final && !terminal_ && counts.finished == last_shown_) return;
   last_shown_ = counts.finished;
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const long done_now = counts.finished - finished_at_start_;
+  // The runs differ in cost by orders of magnitude and are taken longest first: the ETA
+  // scales the elapsed time by the expected cost still to run over the cost run so far.
+  const double cost_now = counts.cost_finished - cost_at_start_;
   std::string eta = "--";
-  if (done_now > 0)
-    eta = clock_text(elapsed / static_cast<double>(done_now) *
-                     static_cast<double>(total_ - counts.finished));
+  if (counts.finished > finished_at_start_ && cost_now > 0.0)
+    eta = clock_text(elapsed / cost_now * (counts.cost_total - counts.cost_finished));
   const std::string line = fmt::format(
       "study: {}/{} runs finished ({:.0f} %), {} running, elapsed {}, ETA {}", counts.finished,
       total_,

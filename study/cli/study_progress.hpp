@@ -1,5 +1,6 @@
 // The progress line of `ccm study run`: a thread that reads the store once a second and shows
-// runs finished out of the total, runs in progress, elapsed time and an ETA. It reads the
+// runs finished out of the total, runs in progress, elapsed time and an ETA (weighted by the
+// runs' expected costs, study/cli/run_schedule.hpp). It reads the
 // store rather than listening to workers, so it counts every worker process and MPI rank alike.
 #pragma once
 
@@ -25,6 +26,7 @@ class StudyProgress {
   std::filesystem::path db_;
   long total_;
   long finished_at_start_ = -1;
+  double cost_at_start_ = 0.0;
   long last_shown_ = -1;
   bool terminal_ = false;
   std::chrono::steady_clock::time_point start_;

@@ -17,6 +17,7 @@
 #include "db/store/provenance.hpp"
 #include "db/store/study_store.hpp"
 #include "study/cli/run_command.hpp"
+#include "study/cli/run_schedule.hpp"
 #include "study/cli/study_commands.hpp"
 #include "study/cli/study_progress.hpp"
 #include "study/cli/study_tables.hpp"
@@ -24,6 +25,7 @@
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/point_metrics.hpp"
+#include "study/metrics/thesis_trends.hpp"
 #include "study/parallel/rank_context.hpp"
 #include "study/runner/content_hash.hpp"
 #include "study/runner/point_runner.hpp"
@@ -36,21 +38,6 @@ namespace fs = std::filesystem;
 using study::GridPoint;
 using study::GridSpec;
 using study::ImpactModel;
-
-struct PlannedRun {
-  GridPoint point;
-  ImpactModel model;
-};
-
-// Every run of the grid file, in a fixed order: the grid's points, then the convergence
-// points, each with its CCM run before its rigid run.
-std::vector<PlannedRun> plan_runs(const GridSpec& spec) {
-  std::vector<PlannedRun> runs;
-  for (const auto& points : {study::expand_grid(spec), study::expand_convergence(spec)})
-    for (const GridPoint& p : points)
-      for (ImpactModel m : {ImpactModel::ccm, ImpactModel::rigid}) runs.push_back({p, m});
-  return runs;
-}
 
 std::string read_text(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -67,16 +54,16 @@ void prepare_store(const fs::path& db, const GridSpec& spec, const std::string& 
   for (const PlannedRun& r : runs) store.add_grid_point(r.point);
 }
 
-// Runs the share of `worker` out of `workers` (run i belongs to worker i mod workers) that is
-// not done yet; each run is committed on its own. Returns the number of failed runs.
+// Runs the runs `next_run` hands out (an index into `runs`; >= runs.size() when there are no
+// more) that are not done yet; each run is committed on its own. Returns the number of failed
+// runs.
 long run_share(const fs::path& db, const GridSpec& spec, const std::string& grid_hash,
-               const std::vector<PlannedRun>& runs, int worker, int workers,
+               const std::vector<PlannedRun>& runs, const std::function<std::size_t()>& next_run,
                const db::RunProvenance& provenance) {
   db::StudyStore store(db);
   store.open_study(spec.title, grid_hash);
   long failed = 0;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (i % static_cast<std::size_t>(workers) != static_cast<std::size_t>(worker)) continue;
+  for (std::size_t i = next_run(); i < runs.size(); i = next_run()) {
     const PlannedRun& r = runs[i];
     if (!store.mark_running(r.point, r.model, provenance, db::utc_now())) continue;  // done
     try {
@@ -130,15 +117,20 @@ struct DerivedResults {
   std::vector<study::PointMetrics> convergence;  // the convergence points
   study::StudyFits fits;
   std::vector<study::ConvergenceRow> convergence_rows;  // each run against the finest CCM run
+  std::vector<study::TrendRow> trends;  // the main grid's points whose two runs completed
 };
 
 std::vector<study::PointMetrics> point_metrics(const db::StudyStore& store,
-                                               const std::vector<GridPoint>& points) {
+                                               const std::vector<GridPoint>& points,
+                                               std::vector<study::TrendRow>* trends = nullptr) {
   std::vector<study::PointMetrics> out;
   for (const GridPoint& p : points) {
     const auto ccm_run = store.load_run(p, ImpactModel::ccm);
     const auto rigid_run = store.load_run(p, ImpactModel::rigid);
-    if (ccm_run && rigid_run) out.push_back(study::compute_point_metrics(*ccm_run, *rigid_run));
+    if (!ccm_run || !rigid_run) continue;
+    out.push_back(study::compute_point_metrics(*ccm_run, *rigid_run));
+    if (trends && ccm_run->completed() && rigid_run->completed())
+      trends->push_back(study::thesis_trend(*ccm_run, *rigid_run));
   }
   return out;
 }
@@ -148,7 +140,7 @@ DerivedResults derive_results(const fs::path& db, const GridSpec& spec,
   db::StudyStore store(db);
   store.open_study(spec.title, grid_hash);
   DerivedResults results;
-  results.grid = point_metrics(store, study::expand_grid(spec));
+  results.grid = point_metrics(store, study::expand_grid(spec), &results.trends);
   results.convergence = point_metrics(store, study::expand_convergence(spec));
   results.fits = study::fit_study(results.grid);
   std::vector<study::RunRecord> convergence_runs;
@@ -173,15 +165,28 @@ long count_failed(const fs::path& db, const GridSpec& spec, const std::string& g
   return failed;
 }
 
-// Runs this process's share: forked workers (--jobs) or this MPI rank. Rank 0 shows progress.
+// Runs this process's share (run_schedule.hpp): forked workers (--jobs) take the runs longest
+// first from a shared counter; an MPI rank takes every size()-th run of that order. Rank 0 shows
+// progress.
 int run_all(const StudyRunArgs& args, const study::RankContext& ranks, const GridSpec& spec,
             const std::string& grid_hash, const std::vector<PlannedRun>& runs) {
   const int jobs = ranks.size() > 1 ? 1 : args.jobs;
   const auto provenance = db::current_provenance(grid_hash, ranks.size(), jobs);
-  auto work = [&](int worker) {
-    const int workers = ranks.size() * jobs;
-    const int id = ranks.rank() * jobs + worker;
-    return run_share(args.db, spec, grid_hash, runs, id, workers, provenance) > 0
+  const std::vector<std::size_t> order = longest_first(runs);
+  SharedCounter shared;                                        // forked workers
+  std::size_t dealt = static_cast<std::size_t>(ranks.rank());  // MPI ranks
+  const std::function<std::size_t()> next_run = [&]() -> std::size_t {
+    std::size_t k = 0;
+    if (ranks.size() > 1) {
+      k = dealt;
+      dealt += static_cast<std::size_t>(ranks.size());
+    } else {
+      k = shared.next();
+    }
+    return k < order.size() ? order[k] : runs.size();
+  };
+  auto work = [&](int /*worker*/) {
+    return run_share(args.db, spec, grid_hash, runs, next_run, provenance) > 0
                ? exit_code::internal_error
                : exit_code::completed;
   };
@@ -223,6 +228,7 @@ int study_run(const StudyRunArgs& args, const study::RankContext& ranks) {
   if (!args.quiet) {
     print_point_table(stdout, results.grid, results.fits);
     print_convergence_table(stdout, results.convergence_rows);
+    print_trend_table(stdout, results.trends, results.grid);
   }
   if (const long failed = count_failed(args.db, spec, grid_hash); failed > 0) {
     fmt::print(stderr, "ccm: error: {} run(s) failed; `ccm study status --db {}` names them\n",

@@ -69,3 +69,27 @@ void print_convergence_table(std::FILE* out, const std::vector<study::Convergenc
 }
 
 }  // namespace ccm
+
+namespace ccm {
+
+void print_trend_table(std::FILE* out, const std::vector<study::TrendRow>& trends,
+                       const std::vector<study::PointMetrics>& points) {
+  if (trends.empty()) return;
+  fmt::print(out,
+             "\nThesis trends (2.8): largest artifact KE gap over the run / rigid peak (thesis: "
+             "< 0.15 at high ER); CCM / rigid at t_f of the artifact KE, mean and max "
+             "displacement (thesis at ER 1, RLS 0.5, KE 100: 0.41, 0.65, 0.61); RTR\n");
+  fmt::print(out, "{:>8} {:>5} {:>6}  {:>8}  {:>8} {:>8} {:>8}  {:>9}\n", "ER", "RLS", "KE[J]",
+             "KE_gap", "KE c/r", "umean", "umax", "RTR");
+  for (const auto& t : trends) {
+    const auto& p = t.point;
+    double rtr = 0.0;
+    for (const auto& m : points)
+      if (m.point.index == p.index) rtr = m.runtime_ratio;
+    fmt::print(out, "{:>8.0e} {:>5.2f} {:>6g}  {:>8.3f}  {:>8.3f} {:>8.3f} {:>8.3f}  {:>9.3g}\n",
+               p.modulus_ratio, p.length_ratio, p.kinetic_energy, t.ke_gap, t.ke_ratio,
+               t.u_mean_ratio, t.u_max_ratio, rtr);
+  }
+}
+
+}  // namespace ccm

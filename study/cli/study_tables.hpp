@@ -9,6 +9,7 @@
 #include "study/grid/grid_spec.hpp"
 #include "study/metrics/convergence.hpp"
 #include "study/metrics/point_metrics.hpp"
+#include "study/metrics/thesis_trends.hpp"
 #include "study/runner/run_record.hpp"
 
 namespace ccm {
@@ -16,5 +17,8 @@ namespace ccm {
 void print_point_table(std::FILE* out, const std::vector<study::PointMetrics>& points,
                        const study::StudyFits& fits);
 void print_convergence_table(std::FILE* out, const std::vector<study::ConvergenceRow>& rows);
+// The thesis's trends per point (study/metrics/thesis_trends.hpp), with the point's RTR.
+void print_trend_table(std::FILE* out, const std::vector<study::TrendRow>& trends,
+                       const std::vector<study::PointMetrics>& points);
 
 }  // namespace ccm

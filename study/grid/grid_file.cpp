@@ -84,9 +84,21 @@ ArtifactSupport parse_support(const StrictTable& t) {
   t.fail("support", fmt::format("must be \"base\" or \"edges\" (got \"{}\")", s));
 }
 
+// contact_mesh_size and contact_radius [m]: both or neither.
+void parse_contact_zone(const StrictTable& t, double& mesh_size, double& radius) {
+  const bool has_size = t.has("contact_mesh_size"), has_radius = t.has("contact_radius");
+  if (has_size != has_radius)
+    t.fail(has_size ? "contact_radius" : "contact_mesh_size",
+           "contact_mesh_size and contact_radius are given together or not at all");
+  if (!has_size) return;
+  mesh_size = positive(t, "contact_mesh_size");
+  radius = positive(t, "contact_radius");
+}
+
 void parse_artifact(const StrictTable& root, GridSpec& g) {
   const StrictTable t = root.need_table("artifact");
-  t.allow_only({"length", "thickness", "E", "nu", "rho", "mesh_size", "support"});
+  t.allow_only({"length", "thickness", "E", "nu", "rho", "mesh_size", "contact_mesh_size",
+                "contact_radius", "support"});
   ArtifactSpec& a = g.artifact;
   a.length = positive(t, "length");
   a.thickness = positive(t, "thickness");
@@ -94,24 +106,30 @@ void parse_artifact(const StrictTable& root, GridSpec& g) {
   a.nu = poisson(t, "nu");
   a.rho = positive(t, "rho");
   a.mesh_size = positive(t, "mesh_size");
+  parse_contact_zone(t, a.contact_mesh_size, a.contact_radius);
+  if (a.contact_mesh_size > a.mesh_size)
+    t.fail("contact_mesh_size", fmt::format("must not exceed mesh_size = {} (got {})", a.mesh_size,
+                                            a.contact_mesh_size));
   a.support = parse_support(t);
 }
 
 void parse_impactor(const StrictTable& root, GridSpec& g) {
   const StrictTable t = root.need_table("impactor");
-  t.allow_only({"nu", "rho", "mesh_size_ratio"});
+  t.allow_only({"nu", "rho", "mesh_size_ratio", "contact_mesh_size", "contact_radius"});
   g.impactor.nu = poisson(t, "nu");
   g.impactor.rho = positive(t, "rho");
   if (!t.has("mesh_size_ratio")) t.fail("mesh_size_ratio", "required key is missing");
   g.impactor.mesh_size_ratio = checked_as_axis(t, "mesh_size_ratio", "impactor_mesh_ratio", 0.0);
+  parse_contact_zone(t, g.impactor.contact_mesh_size, g.impactor.contact_radius);
 }
 
 void parse_contact(const StrictTable& root, GridSpec& g) {
   const auto t = root.table("contact");
   if (!t) return;
-  t->allow_only({"penalty", "restitution", "friction"});
+  t->allow_only({"penalty", "damping", "restitution", "friction"});
   GridContact& c = g.contact;
   c.penalty = checked_as_axis(*t, "penalty", "penalty", c.penalty);
+  c.damping = checked_as_axis(*t, "damping", "damping", c.damping);
   c.restitution = checked_as_axis(*t, "restitution", "restitution", c.restitution);
   c.friction = checked_as_axis(*t, "friction", "friction", c.friction);
 }

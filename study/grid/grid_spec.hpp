@@ -23,6 +23,10 @@ struct ArtifactSpec {
   double nu = 0.49;
   double rho = 1000.0;     // [kg/m^3]
   double mesh_size = 0.1;  // [m], target tet edge (Gmsh)
+  // A finer mesh within contact_radius of the impact point (the middle of the top face), when
+  // contact_mesh_size > 0 [m]; a mesh_scale scales it with mesh_size.
+  double contact_mesh_size = 0.0;
+  double contact_radius = 0.0;
   ArtifactSupport support = ArtifactSupport::base;
 };
 
@@ -31,6 +35,10 @@ struct ImpactorSpec {
   double nu = 0.49;
   double rho = 1000.0;            // [kg/m^3]
   double mesh_size_ratio = 0.25;  // tet edge / D_I, in (0, 0.5]
+  // A finer mesh within contact_radius of the sphere's lowest point, when contact_mesh_size > 0
+  // [m] (never coarser than D_I mesh_size_ratio); a mesh_scale scales it too.
+  double contact_mesh_size = 0.0;
+  double contact_radius = 0.0;
 };
 
 struct GridTime {
@@ -43,6 +51,7 @@ struct GridTime {
 
 struct GridContact {
   double penalty = 1e6;      // K_P [N/m] per quadrature point (rigid model, thesis 2.8)
+  double damping = 0.0;      // zeta, fraction of critical per point (rigid model)
   double restitution = 0.0;  // e (ccm model, DCR)
   double friction = 0.0;     // mu (ccm model, DCR)
 };

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -44,6 +45,7 @@ const std::map<std::string_view, Check>& axis_checks() {
       {"impactor_mesh_ratio", mesh_ratio_problem},
       {"mesh_scale", positive_problem},
       {"penalty", positive_problem},
+      {"damping", non_negative_problem},
       {"restitution", unit_interval_problem},
       {"friction", non_negative_problem},
   };
@@ -60,6 +62,8 @@ void apply_other_axis(std::string_view name, double value, PointParameters& p) {
     p.impactor_mesh_size = value * p.impactor_diameter;
   } else if (name == "penalty") {
     p.contact.penalty = value;
+  } else if (name == "damping") {
+    p.contact.damping = value;
   } else if (name == "restitution") {
     p.contact.restitution = value;
   } else if (name == "friction") {
@@ -77,6 +81,7 @@ const std::vector<std::string_view>& other_axis_names() {
                                                       "impactor_mesh_ratio",
                                                       "mesh_scale",
                                                       "penalty",
+                                                      "damping",
                                                       "restitution",
                                                       "friction"};
   return names;
@@ -97,12 +102,19 @@ PointParameters point_parameters(const GridSpec& spec, const GridPoint& point) {
   p.impactor_nu = spec.impactor.nu;
   p.impactor_rho = spec.impactor.rho;
   p.impactor_mesh_size = spec.impactor.mesh_size_ratio * p.impactor_diameter;
+  p.impactor_contact_mesh_size = spec.impactor.contact_mesh_size;
+  p.impactor_contact_radius = spec.impactor.contact_radius;
   p.contact = spec.contact;
   for (const auto& [name, value] : point.other_axes) apply_other_axis(name, value, p);
   if (const auto it = point.other_axes.find("mesh_scale"); it != point.other_axes.end()) {
     p.artifact.mesh_size *= it->second;
+    p.artifact.contact_mesh_size *= it->second;
     p.impactor_mesh_size *= it->second;
+    p.impactor_contact_mesh_size *= it->second;
   }
+  // A refinement is never coarser than the body's own mesh.
+  p.artifact.contact_mesh_size = std::min(p.artifact.contact_mesh_size, p.artifact.mesh_size);
+  p.impactor_contact_mesh_size = std::min(p.impactor_contact_mesh_size, p.impactor_mesh_size);
   const double d = p.impactor_diameter;
   p.impactor_mass = p.impactor_rho * std::numbers::pi * d * d * d / 6.0;
   p.impact_speed = std::sqrt(2.0 * point.kinetic_energy / p.impactor_mass);  // KE = m v^2 / 2

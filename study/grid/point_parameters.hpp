@@ -17,6 +17,7 @@ namespace ccm::study {
 //   impactor_mesh_ratio  the impactor's tet edge / D_I
 //   mesh_scale           a factor on both mesh sizes (convergence runs)
 //   penalty              K_P [N/m] (rigid model)
+//   damping              zeta, the penalty's dashpot, fraction of critical (rigid model)
 //   restitution          e (ccm model)
 //   friction             mu (ccm model)
 const std::vector<std::string_view>& other_axis_names();
@@ -31,10 +32,12 @@ struct PointParameters {
   double impactor_diameter = 0.0;  // D_I = RLS L_A                     (eq. 2.33)
   double impactor_nu = 0.0;
   double impactor_rho = 0.0;
-  double impactor_mesh_size = 0.0;  // [m]
-  double impactor_mass = 0.0;       // m_I = rho_I pi D_I^3 / 6 (the analytic sphere)
-  double impact_speed = 0.0;        // v_I = sqrt(2 KE_I / m_I)
-  double gap = 0.0;                 // surface to surface at t = 0: v_I t_c
+  double impactor_mesh_size = 0.0;          // [m]
+  double impactor_contact_mesh_size = 0.0;  // [m], 0: no refinement at the lowest point
+  double impactor_contact_radius = 0.0;     // [m]
+  double impactor_mass = 0.0;               // m_I = rho_I pi D_I^3 / 6 (the analytic sphere)
+  double impact_speed = 0.0;                // v_I = sqrt(2 KE_I / m_I)
+  double gap = 0.0;                         // surface to surface at t = 0: v_I t_c
   GridContact contact;
 };
 

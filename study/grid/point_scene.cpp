@@ -40,12 +40,21 @@ std::string material(double E, double nu, double rho) {
                      num(E), num(nu), num(rho));
 }
 
+// `refine = {...}` of a geometry table (local coordinates), or nothing when mesh_size is 0.
+std::string refinement(double x, double y, double z, double radius, double mesh_size) {
+  if (!(mesh_size > 0.0)) return {};
+  return fmt::format("refine = {{ center = {}, radius = {}, mesh_size = {} }}\n", vec(x, y, z),
+                     num(radius), num(mesh_size));
+}
+
 std::string artifact_body(const ArtifactSpec& a) {
   return fmt::format(
       "\n[[bodies]]\nname = \"{}\"\n\n{}\n[bodies.geometry]\nshape = \"box\"\n"
-      "size = {}\nmesh_size = {}\n",
+      "size = {}\nmesh_size = {}\n{}",
       kArtifactBody, material(a.E, a.nu, a.rho), vec(a.length, a.length, a.thickness),
-      num(a.mesh_size));
+      num(a.mesh_size),
+      refinement(0.5 * a.length, 0.5 * a.length, a.thickness, a.contact_radius,
+                 a.contact_mesh_size));
 }
 
 // Centre of the sphere at t = 0: above the middle of the top face, its lowest point `gap` up.
@@ -54,13 +63,18 @@ std::string sphere_center(const PointParameters& p) {
   return vec(0.5 * a.length, 0.5 * a.length, a.thickness + 0.5 * p.impactor_diameter + p.gap);
 }
 
+// mass = m_I: the meshed sphere (an inscribed polyhedron, 6 % light at D/5) weighs what the
+// analytic one does, so that both models start with the same momentum and KE_I.
 std::string impactor_body(const PointParameters& p) {
+  const double r = 0.5 * p.impactor_diameter;
   return fmt::format(
-      "\n[[bodies]]\nname = \"{}\"\ninitial_velocity = {}\n\n{}\n[bodies.geometry]\n"
-      "shape = \"sphere\"\nradius = {}\nmesh_size = {}\n\n[bodies.placement]\ntranslate = {}\n",
-      kImpactorName, vec(0.0, 0.0, -p.impact_speed),
-      material(p.impactor_E, p.impactor_nu, p.impactor_rho), num(0.5 * p.impactor_diameter),
-      num(p.impactor_mesh_size), sphere_center(p));
+      "\n[[bodies]]\nname = \"{}\"\ninitial_velocity = {}\nmass = {}\n\n{}\n"
+      "[bodies.geometry]\nshape = \"sphere\"\nradius = {}\nmesh_size = {}\n{}\n"
+      "[bodies.placement]\ntranslate = {}\n",
+      kImpactorName, vec(0.0, 0.0, -p.impact_speed), num(p.impactor_mass),
+      material(p.impactor_E, p.impactor_nu, p.impactor_rho), num(r), num(p.impactor_mesh_size),
+      refinement(0.0, 0.0, -r, p.impactor_contact_radius, p.impactor_contact_mesh_size),
+      sphere_center(p));
 }
 
 std::string fixed_plane(double px, double py, double pz, double nx, double ny, double nz) {
@@ -82,10 +96,11 @@ std::string dcr_contact(const PointParameters& p) {
 
 std::string rigid_contact(const PointParameters& p) {
   return fmt::format(
-      "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\npenalty = {}\n\n[contact.sphere]\n"
-      "name = \"{}\"\nradius = {}\ndensity = {}\ncenter = {}\nvelocity = {}\n",
-      kArtifactBody, num(p.contact.penalty), kImpactorName, num(0.5 * p.impactor_diameter),
-      num(p.impactor_rho), sphere_center(p), vec(0.0, 0.0, -p.impact_speed));
+      "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\npenalty = {}\ndamping = {}\n\n"
+      "[contact.sphere]\nname = \"{}\"\nradius = {}\ndensity = {}\ncenter = {}\nvelocity = {}\n",
+      kArtifactBody, num(p.contact.penalty), num(p.contact.damping), kImpactorName,
+      num(0.5 * p.impactor_diameter), num(p.impactor_rho), sphere_center(p),
+      vec(0.0, 0.0, -p.impact_speed));
 }
 
 // Only what the trade-study metrics read (eq. 2.34-2.39): artifact energy and displacements.

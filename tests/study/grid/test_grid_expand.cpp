@@ -60,16 +60,18 @@ TEST_CASE("other axes are swept inside KE, in name order, values in file order",
 TEST_CASE("convergence runs: each point at each mesh scale, indices after the grid", "[grid]") {
   const GridSpec g = parse_grid_file(CCM_SOURCE_DIR "/scenes/grids/thesis.toml");
   const std::vector<GridPoint> runs = expand_convergence(g);
-  REQUIRE(runs.size() == 2 * 3);
+  // The eight corners (ER 1, 1e6) x (RLS 0.5, 1.5) x (KE 10, 100), ER outermost, KE fastest.
+  REQUIRE(runs.size() == 8 * 3);
   const std::vector<double> scales = {1.0, 0.75, 0.5};
   for (size_t i = 0; i < runs.size(); ++i) {
     INFO("run " << i);
+    const size_t corner = i / 3;
     CHECK(runs[i].index == 36 + static_cast<int>(i));
     CHECK(runs[i].other_axes.size() == 1);
     CHECK(runs[i].other_axes.at("mesh_scale") == scales[i % 3]);
-    CHECK(runs[i].modulus_ratio == (i < 3 ? 1e6 : 1.0));
-    CHECK(runs[i].length_ratio == 0.5);
-    CHECK(runs[i].kinetic_energy == 100.0);
+    CHECK(runs[i].modulus_ratio == (corner < 4 ? 1.0 : 1e6));
+    CHECK(runs[i].length_ratio == (corner % 4 < 2 ? 0.5 : 1.5));
+    CHECK(runs[i].kinetic_energy == (corner % 2 == 0 ? 10.0 : 100.0));
   }
   CHECK(expand_convergence(parse_grid(kSmallGrid, "g.toml")).empty());
 }

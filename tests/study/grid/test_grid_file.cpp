@@ -26,7 +26,11 @@ TEST_CASE("the thesis grid file is Table 2.2 with the fixed parameters of sectio
   CHECK(g.time.contact_time == 0.1);
   CHECK(g.time.end == 0.15);
   CHECK(g.contact.penalty == 1e6);
-  CHECK(g.convergence.points.size() == 2);
+  CHECK(g.contact.damping == 1.0);
+  CHECK(g.contact.restitution == 1.0);
+  CHECK(g.artifact.contact_mesh_size == 0.03);
+  CHECK(g.impactor.contact_mesh_size == 0.04);
+  CHECK(g.convergence.points.size() == 8);
   CHECK(g.convergence.mesh_scales.size() == 3);
 }
 

@@ -1,6 +1,7 @@
 // The scene of a grid point: sphere diameter D_I = RLS L_A, E_I = ER E_A, speed from KE and the
 // sphere's mass, contact starting at t_c (gap / speed = t_c); both models share the artifact.
 #include <catch2/catch.hpp>
+#include <numbers>
 #include <string>
 #include <variant>
 
@@ -11,6 +12,7 @@
 #include "tests/study/grid/grid_fixtures.hpp"
 #include "tests/support/tolerance.hpp"
 
+using ccm::test::grid_error_of;
 using ccm::test::kSmallGrid;
 using ccm::test::relative_error;
 using ccm::test::small_grid_with;
@@ -158,4 +160,49 @@ TEST_CASE("point parameters: closed forms of the impact", "[grid]") {
   CHECK(axis_value_problem("restitution", 1.5) == "must lie in [0, 1] (got 1.5)");
   CHECK(axis_value_problem("K", 1.0) == "unknown grid axis 'K'");
   CHECK(axis_value_problem("friction", 0.0).empty());
+}
+
+TEST_CASE("contact zones, the sphere's mass and the penalty's damping reach the scenes", "[grid]") {
+  std::string text = small_grid_with(
+      "mesh_size = 0.1\n", "mesh_size = 0.1\ncontact_mesh_size = 0.04\ncontact_radius = 0.25\n");
+  text += "contact_mesh_size = 0.03\ncontact_radius = 0.2\n\n[contact]\ndamping = 1.0\n";
+  const GridSpec g = parse_grid(text, "g.toml");  // the [impactor] table ends kSmallGrid
+  GridPoint p = point(1e4, 1.5, 100.0);
+  const Scene s = point_scene(g, p, ImpactModel::ccm);
+  const auto& plate = body_named(s, "artifact").geometry.primitive;
+  REQUIRE(plate.refinement);
+  CHECK(plate.refinement->center == Vec3(0.5, 0.5, 0.25));  // the middle of the top face
+  CHECK(plate.refinement->radius == 0.25);
+  CHECK(plate.refinement->mesh_size == 0.04);
+  const BodySpec& ball = body_named(s, "impactor");
+  REQUIRE(ball.geometry.primitive.refinement);
+  CHECK(ball.geometry.primitive.refinement->center == Vec3(0.0, 0.0, -0.75));  // lowest point
+  CHECK(ball.geometry.primitive.refinement->mesh_size == 0.03);
+  REQUIRE(ball.mass);
+  CHECK(relative_error(*ball.mass, 1000.0 * std::numbers::pi * 1.5 * 1.5 * 1.5 / 6.0) < 1e-15);
+  const Scene rigid = point_scene(g, p, ImpactModel::rigid);
+  CHECK(rigid.contact.damping == 1.0);
+  REQUIRE(body_named(rigid, "artifact").geometry.primitive.refinement);
+  // A mesh scale refines the zones too; a zone never comes out coarser than its body.
+  p.other_axes = {{"mesh_scale", 0.5}};
+  const Scene fine = point_scene(g, p, ImpactModel::ccm);
+  CHECK(body_named(fine, "artifact").geometry.primitive.refinement->mesh_size == 0.02);
+  const GridPoint small = point(1.0, 0.5, 10.0);  // D_I / 5 = 0.1 m > 0.03 m: kept at 0.03
+  CHECK(body_named(point_scene(g, small, ImpactModel::ccm), "impactor")
+            .geometry.primitive.refinement->mesh_size == 0.03);
+}
+
+TEST_CASE("contact zone keys: both or neither, never coarser than the body", "[grid]") {
+  CHECK_THAT(grid_error_of(small_grid_with("mesh_size = 0.1\n",
+                                           "mesh_size = 0.1\ncontact_mesh_size = 0.04\n")),
+             Catch::Contains("artifact.contact_radius: contact_mesh_size and contact_radius are "
+                             "given together or not at all"));
+  CHECK_THAT(
+      grid_error_of(small_grid_with(
+          "mesh_size = 0.1\n", "mesh_size = 0.1\ncontact_mesh_size = 0.2\ncontact_radius = 0.3\n")),
+      Catch::Contains("artifact.contact_mesh_size: must not exceed mesh_size = 0.1 (got 0.2)"));
+  CHECK_THAT(grid_error_of(small_grid_with("mesh_size_ratio = 0.2\n",
+                                           "mesh_size_ratio = 0.2\ncontact_radius = -1.0\n"
+                                           "contact_mesh_size = 0.01\n")),
+             Catch::Contains("impactor.contact_radius: must be > 0"));
 }
