@@ -23,7 +23,7 @@ std::vector<PlannedRun> plan_runs(const study::GridSpec& spec) {
 }
 
 double expected_run_cost(const study::GridPoint& point, study::ImpactModel model) {
-  constexpr double kRigidCost = 30.0;
+  constexpr double kRigidCost = 60.0;
   const double per_scale = 1.0 / std::pow(study::mesh_scale(point), 4);
   if (model == study::ImpactModel::rigid) return kRigidCost * per_scale;
   return std::sqrt(point.modulus_ratio) * per_scale;

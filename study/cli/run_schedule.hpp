@@ -23,11 +23,11 @@ struct PlannedRun {
 // points, each with its CCM run before its rigid run.
 std::vector<PlannedRun> plan_runs(const study::GridSpec& spec);
 
-// The expected cost of a run, in relative units: a CCM run sqrt(ER) / s^4, a rigid run 30 / s^4,
+// The expected cost of a run, in relative units: a CCM run sqrt(ER) / s^4, a rigid run 60 / s^4,
 // s the mesh scale. The stiff sphere's stable step falls as 1 / c_I ~ 1 / sqrt(E_I); the element
-// count grows as s^-3 and the step count as s^-1. The rigid runs' 30 is measured on the default
-// grid (about 1.5 s at s = 1, a CCM run at ER 1e6 about 48 s). An estimate for ordering and the
-// ETA, nothing else.
+// count grows as s^-3 and the step count as s^-1. The rigid runs' 60 is measured on the default
+// grid (1.6-4.3 s at s = 1, against 42-67 s for a CCM run at ER 1e6). An estimate for ordering
+// and the ETA, nothing else.
 double expected_run_cost(const study::GridPoint& point, study::ImpactModel model);
 
 // Indices into `runs`, the highest expected cost first; ties keep the plan's order, so the order

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "db/store/provenance.hpp"
@@ -129,8 +130,11 @@ std::vector<study::PointMetrics> point_metrics(const db::StudyStore& store,
     const auto rigid_run = store.load_run(p, ImpactModel::rigid);
     if (!ccm_run || !rigid_run) continue;
     out.push_back(study::compute_point_metrics(*ccm_run, *rigid_run));
-    if (trends && ccm_run->completed() && rigid_run->completed())
-      trends->push_back(study::thesis_trend(*ccm_run, *rigid_run));
+    if (trends && ccm_run->completed() && rigid_run->completed()) try {
+        trends->push_back(study::thesis_trend(*ccm_run, *rigid_run));
+      } catch (const std::invalid_argument&) {
+        // no trend row for a point whose rigid artifact never moved (nothing to normalise by)
+      }
   }
   return out;
 }

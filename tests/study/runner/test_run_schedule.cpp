@@ -26,8 +26,8 @@ TEST_CASE("runs are handed out longest first", "[study][schedule]") {
   const std::vector<std::size_t> order = longest_first(runs);
   REQUIRE(order.size() == runs.size());
   CHECK(std::set<std::size_t>(order.begin(), order.end()).size() == runs.size());  // a permutation
-  // First the rigid run at half the mesh size (30 x 16 = 480), then the CCM one (10 x 16), then
-  // the rigid runs at full size (30), the ER 100 CCM runs (10), the ER 1 CCM runs (1); ties in
+  // First the rigid run at half the mesh size (60 x 16 = 960), then the CCM one (10 x 16), then
+  // the rigid runs at full size (60), the ER 100 CCM runs (10), the ER 1 CCM runs (1); ties in
   // plan order.
   CHECK(runs[order[0]].model == ImpactModel::rigid);
   CHECK(runs[order[0]].point.other_axes.at("mesh_scale") == 0.5);
