@@ -24,7 +24,7 @@ ContactOutput::ContactOutput(const ModelMesh& mesh, const std::vector<int>& bodi
     const auto it = mesh.surfaces.find(name);
     if (it == mesh.surfaces.end())
       throw std::invalid_argument(fmt::format("dcr: no sensor surface named '{}'", name));
-    Sensor s{name, nodes_of(it->second.triangles), {}, 0.0, 0.0};
+    Sensor s{name, nodes_of(it->second.triangles), {}, 0.0, Vec3::Zero()};
     for (const Triangle& t : it->second.triangles) {
       const auto& X = mesh.X;
       s.area += 0.5 * (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]).norm();
@@ -70,16 +70,13 @@ void ContactOutput::add_impulses(const std::vector<ContactRow>& rows,
 }
 
 void ContactOutput::finish(const State& s, double dt) {
-  for (Pair& p : pairs_) p.force_on_b = p.impulse_on_b / dt;
-  for (Sensor& sensor : sensors_) {
-    Vec3 f = Vec3::Zero();  // F_c = sum m dv / dt over the sensor's nodes
+  for (Pair& p : pairs_) p.interval_impulse += p.impulse_on_b;
+  for (Sensor& sensor : sensors_)  // sum m dv over the sensor's nodes (3.3.3)
     for (size_t k = 0; k < sensor.nodes.size(); ++k) {
       const auto i = static_cast<size_t>(sensor.nodes[k]);
-      f += s.m_lumped[i] * (s.v[i] - sensor.v_before[k]);
+      sensor.interval_momentum += s.m_lumped[i] * (s.v[i] - sensor.v_before[k]);
     }
-    f /= dt;
-    sensor.pressure = (axis_ ? std::abs(f.dot(*axis_)) : f.norm()) / sensor.area;  // eq. 3.8
-  }
+  interval_ += dt;
 }
 
 std::vector<std::string> ContactOutput::columns() const {
@@ -93,11 +90,20 @@ std::vector<std::string> ContactOutput::columns() const {
 }
 
 void ContactOutput::append(std::vector<double>& row) const {
+  // The mean force of the interval: its impulse over its length (0 for the empty interval).
+  const double rate = interval_ > 0.0 ? 1.0 / interval_ : 0.0;
   for (const Pair& p : pairs_) {
-    row.push_back(p.force_on_b.norm());
-    row.push_back(p.force_on_b.dot(*axis_));
+    const Vec3 force = rate * p.interval_impulse;
+    row.push_back(force.norm());
+    row.push_back(force.dot(*axis_));
+    p.interval_impulse.setZero();
   }
-  for (const Sensor& s : sensors_) row.push_back(s.pressure);
+  for (const Sensor& s : sensors_) {
+    const Vec3 f = rate * s.interval_momentum;
+    row.push_back((axis_ ? std::abs(f.dot(*axis_)) : f.norm()) / s.area);  // eq. 3.8
+    s.interval_momentum.setZero();
+  }
+  interval_ = 0.0;
 }
 
 }  // namespace ccm::dcr
