@@ -63,9 +63,9 @@ class ContactOutput {
 
  private:
   struct Pair {
-    int a, b;            // body indices, a < b
-    std::string prefix;  // "contact.<A>.<B>"
-    Vec3 impulse_on_b = Vec3::Zero();            // of the current step [N s]
+    int a, b;                                      // body indices, a < b
+    std::string prefix;                            // "contact.<A>.<B>"
+    Vec3 impulse_on_b = Vec3::Zero();              // of the current step [N s]
     mutable Vec3 interval_impulse = Vec3::Zero();  // since the previous sample [N s]
   };
   struct Sensor {

@@ -229,8 +229,8 @@ TEST_CASE("DCR output: the integral of the contact force is the momentum exchang
         const OutputMomentum r = block_impact(friction, interval, end);
         INFO("friction " << friction << ", output interval " << interval << " s, end " << end
                          << " s: momentum gained " << r.gained << " N s, force integral "
-                         << r.force_integral << ", sensor integral " << r.pressure_integral
-                         << " (" << r.samples_with_force << " samples with force, " << r.steps
+                         << r.force_integral << ", sensor integral " << r.pressure_integral << " ("
+                         << r.samples_with_force << " samples with force, " << r.steps
                          << " steps)");
         REQUIRE(r.verdict == Verdict::completed);
         REQUIRE(r.gained > 0.0);
