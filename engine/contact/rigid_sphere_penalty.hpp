@@ -23,17 +23,18 @@
 // mid-step velocities v* = v_{n+1/2} the engine holds at add_forces (explicit). The dashpot's
 // work is in work() and sphere_work(): the energy balance sees it as dissipated.
 //
-// How K_P is applied: K_P [N/m] is the stiffness of ONE quadrature point's spring, not scaled by
-// the point's area weight. That is the thesis's model (eq. 2.5: "a mechanical spring" K_P per
-// finite location; §2.8: "all quadrature points ... are checked", K_P = 1e6 per point), it keeps
-// K_P in N/m, and it makes the stiffness of a contact exactly K_P times the number of points
-// inside the sphere. The price, which the thesis paid too: the total stiffness of a contact
-// patch grows with the number of points in it, i.e. with mesh refinement (about 3 points per
-// triangle in contact). Why 3 points and not the centroid: a 1-point rule leaves each node
-// reachable only through triangle centroids, so a small sphere can press between centroids and a
-// node's load arrives late and lumpy; with 3 points a point lies at 1/6 of the altitude from
-// every edge and carries 2/3 of its force to the nearest node. (The thesis checked the volume
-// quadrature points of its artifact; ccm checks the surface, where contact happens.)
+// How K_P is applied (penalty_mode per_point, the default): K_P [N/m] is the stiffness of ONE
+// quadrature point's spring, not scaled by the point's area weight. That is the thesis's model
+// (eq. 2.5: "a mechanical spring" K_P per finite location; §2.8: "all quadrature points ... are
+// checked", K_P = 1e6 per point), it keeps K_P in N/m, and it makes the stiffness of a contact
+// exactly K_P times the number of points inside the sphere. The price, which the thesis paid too:
+// the total stiffness of a contact patch grows with the number of points in it, i.e. with mesh
+// refinement (about 3 points per triangle in contact). Why 3 points and not the centroid: a 1-point
+// rule leaves each node reachable only through triangle centroids, so a small sphere can press
+// between centroids and a node's load arrives late and lumpy; with 3 points a point lies at 1/6 of
+// the altitude from every edge and carries 2/3 of its force to the nearest node. (The thesis
+// checked the volume quadrature points of its artifact; ccm checks the surface, where contact
+// happens.)
 //
 // The sphere is integrated by the engine's own central difference in PEC form (eq. 2.27-2.31):
 // begin_step(dt) predicts x_s += dt v_s + dt^2/2 a_s, v_s += dt/2 a_s; add_forces gathers F_s at

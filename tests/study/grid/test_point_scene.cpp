@@ -306,3 +306,31 @@ TEST_CASE("a model's scene text leaves out the other model's axes (run reuse by 
   CHECK(text({{"damping", 1.0}}, ImpactModel::rigid) !=
         point_scene_text(g, base, ImpactModel::rigid));
 }
+
+TEST_CASE("default-rigid-options.toml: the default grid with damping and penalty_scale axes",
+          "[grid][element_penalty]") {
+  const GridSpec base = parse_grid_file(CCM_SOURCE_DIR "/scenes/grids/default.toml");
+  const GridSpec g = parse_grid_file(CCM_SOURCE_DIR "/scenes/grids/default-rigid-options.toml");
+  CHECK(g.other_axes.at("damping") == std::vector<double>{0.0, 1.0});
+  CHECK(g.other_axes.at("penalty_scale") == std::vector<double>{0.0, 0.1, 1.0});
+  const std::vector<GridPoint> points = expand_grid(g);
+  REQUIRE(points.size() == 36 * 6);
+  // Point 4: ER 1, RLS 0.5, KE 10, damping 1, penalty_scale 0.1 (the last axis fastest).
+  CHECK(points[4].other_axes ==
+        std::map<std::string, double>{{"damping", 1.0}, {"penalty_scale", 0.1}});
+  const Scene rigid = point_scene(g, points[4], ImpactModel::rigid);
+  CHECK(rigid.contact.penalty_mode == PenaltyMode::element);
+  CHECK(rigid.contact.damping == 1.0);
+  // The ccm scene of every one of the six is the default grid's, word for word; the rigid one at
+  // penalty_scale 0 and damping 1 is the default grid's but for the title.
+  const GridPoint first = expand_grid(base)[0];
+  for (size_t i = 0; i < 6; ++i)
+    CHECK(point_scene_text(g, points[i], ImpactModel::ccm) ==
+          point_scene_text(base, first, ImpactModel::ccm));
+  const auto untitled = [](std::string text) {
+    const size_t a = text.find("title = "), b = text.find('\n', a);
+    return text.erase(a, b - a);
+  };
+  CHECK(untitled(point_scene_text(g, points[3], ImpactModel::rigid)) ==
+        untitled(point_scene_text(base, first, ImpactModel::rigid)));
+}
