@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "engine/mesh/boundary_surface.hpp"
 #include "engine/mesh/model_mesh.hpp"
 
 namespace ccm {
@@ -31,9 +32,53 @@ constexpr std::array<double, 3> shape_at(int k) {
 // than this fraction of R always count as touching.
 constexpr double kReachMargin = 0.1;
 
+// Bulk modulus at the reference state: K = lambda + 2 mu / 3 (Neo-Hookean and linear elastic).
+double bulk_modulus(const MaterialParams& m) {
+  const Lame l = lame_from(m);
+  return l.lambda + 2.0 * l.mu / 3.0;
+}
+
+double tet_volume(const std::vector<Vec3>& X, const Tet& t) {
+  const Vec3& x0 = X[static_cast<size_t>(t[0])];
+  return (X[static_cast<size_t>(t[1])] - x0)
+             .cross(X[static_cast<size_t>(t[2])] - x0)
+             .dot(X[static_cast<size_t>(t[3])] - x0) /
+         6.0;
+}
+
+// k_T = s K A^2 / V of every triangle (see the header), on the reference configuration.
+std::vector<double> element_stiffness(const ModelMesh& mesh, const std::vector<Triangle>& surface,
+                                      double scale) {
+  const std::vector<int> owner = owning_tets(mesh.tets, surface);
+  std::vector<double> k(surface.size());
+  for (size_t i = 0; i < surface.size(); ++i) {
+    if (owner[i] < 0)
+      throw std::invalid_argument(
+          fmt::format("rigid sphere penalty: surface triangle {} is not a face of a tet", i));
+    const auto e = static_cast<size_t>(owner[i]);
+    const MaterialParams& material =
+        mesh.bodies[static_cast<size_t>(mesh.element_body[e])].material;
+    const double A = triangle_area(surface[i], mesh.X);
+    const double V = tet_volume(mesh.X, mesh.tets[e]);
+    k[i] = scale * bulk_modulus(material) * A * A / V;
+    if (!(k[i] > 0.0) || !std::isfinite(k[i]))
+      throw std::invalid_argument(fmt::format(
+          "rigid sphere penalty: element stiffness {} of surface triangle {} is not > 0", k[i], i));
+  }
+  return k;
+}
+
 }  // namespace
 
 RigidSpherePenalty::RigidSpherePenalty(std::vector<Triangle> surface,
+                                       RigidSpherePenaltyParams params)
+    : RigidSpherePenalty(nullptr, std::move(surface), std::move(params)) {}
+
+RigidSpherePenalty::RigidSpherePenalty(const ModelMesh& mesh, std::vector<Triangle> surface,
+                                       RigidSpherePenaltyParams params)
+    : RigidSpherePenalty(&mesh, std::move(surface), std::move(params)) {}
+
+RigidSpherePenalty::RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triangle> surface,
                                        RigidSpherePenaltyParams params)
     : params_(std::move(params)) {
   const RigidSphere& s = params_.sphere;
@@ -44,6 +89,11 @@ RigidSpherePenalty::RigidSpherePenalty(std::vector<Triangle> surface,
     throw std::invalid_argument("rigid sphere penalty: the mass must be > 0");
   if (!(params_.penalty > 0.0) || !std::isfinite(params_.penalty))
     throw std::invalid_argument("rigid sphere penalty: the penalty K_P must be > 0");
+  const bool element = params_.penalty_mode == PenaltyMode::element;
+  if (element && (!(params_.penalty_scale > 0.0) || !std::isfinite(params_.penalty_scale)))
+    throw std::invalid_argument("rigid sphere penalty: the penalty scale s must be > 0");
+  if (element && !mesh)
+    throw std::invalid_argument("rigid sphere penalty: the element penalty needs the mesh");
   if (!(params_.damping >= 0.0) || !std::isfinite(params_.damping))
     throw std::invalid_argument("rigid sphere penalty: the damping must be >= 0");
   if (!(params_.structural_safety > 0.0))
@@ -79,6 +129,18 @@ RigidSpherePenalty::RigidSpherePenalty(std::vector<Triangle> surface,
     // Each triangle adds sum_q N_a(q) = kNear + 2 kFar = 1 to each of its nodes.
     for (int a : l) valence_[static_cast<size_t>(a)] += 1.0;
     tris_.push_back(l);
+  }
+  if (element) {
+    unit_ = 1.0;
+    point_weight_ = element_stiffness(*mesh, surface, params_.penalty_scale);
+    for (double& w : point_weight_) w /= 3.0;  // k_q = k_T / 3: the rule's equal weights
+    node_weight_.assign(nodes_.size(), 0.0);
+    for (size_t tri = 0; tri < tris_.size(); ++tri)  // sum_q N_a(q) k_q = k_T / 3 per triangle
+      for (int a : tris_[tri]) node_weight_[static_cast<size_t>(a)] += point_weight_[tri];
+  } else {
+    unit_ = params_.penalty;
+    point_weight_.assign(tris_.size(), 1.0);
+    node_weight_ = valence_;
   }
   const size_t n = nodes_.size();
   f_np1_.assign(n, Vec3::Zero());
@@ -135,10 +197,10 @@ void RigidSpherePenalty::add_forces(State& state) {
 
   const double R = params_.sphere.radius;
   const double R2 = R * R;
-  const double K = params_.penalty;
   damping_power_ = 0.0;
   for (size_t tri = 0; tri < tris_.size(); ++tri) {
     const std::array<int, 3>& t = tris_[tri];
+    const double K = point_stiffness(tri);  // k_q of the triangle's points
     const std::array<Vec3, 3> x = corners(state, tri);
     for (int k = 0; k < 3; ++k) {
       const std::array<double, 3> N = shape_at(k);
@@ -154,7 +216,7 @@ void RigidSpherePenalty::add_forces(State& state) {
         n = -(x[1] - x[0]).cross(x[2] - x[0]).normalized();
       }
       const double delta = R - d;
-      const Vec3 f_q = point_force(state, tri, k, delta, n);  // on the body   (eq. 2.5-2.6)
+      const Vec3 f_q = point_force(state, tri, k, K, delta, n);  // on the body (eq. 2.5-2.6)
       for (size_t a = 0; a < 3; ++a) {
         const auto l = static_cast<size_t>(t[a]);
         if (!is_touched_np1_[l]) {
@@ -176,10 +238,10 @@ void RigidSpherePenalty::add_forces(State& state) {
   d2_t_ = state.t;
 }
 
-// f_q = max(0, K_P delta - c_q u_n) n with c_q = 2 zeta sqrt(K_P mu_q) (see the header).
-Vec3 RigidSpherePenalty::point_force(const State& state, size_t tri, int k, double delta,
-                                     const Vec3& n) {
-  const double spring = params_.penalty * delta;
+// f_q = max(0, k_q delta - c_q u_n) n with c_q = 2 zeta sqrt(k_q mu_q) (see the header).
+Vec3 RigidSpherePenalty::point_force(const State& state, size_t tri, int k, double k_q,
+                                     double delta, const Vec3& n) {
+  const double spring = k_q * delta;
   if (params_.damping == 0.0) return spring * n;
   const std::array<double, 3> N = shape_at(k);
   Vec3 v_q = Vec3::Zero();
@@ -192,7 +254,7 @@ Vec3 RigidSpherePenalty::point_force(const State& state, size_t tri, int k, doub
   }
   const double m_s = params_.sphere.mass;
   const double mu = m_q * m_s / (m_q + m_s);
-  const double c = 2.0 * params_.damping * std::sqrt(params_.penalty * mu);
+  const double c = 2.0 * params_.damping * std::sqrt(k_q * mu);
   const double u_n = n.dot(v_q - v_s_);  // > 0: separating
   const double magnitude = std::max(0.0, spring - c * u_n);
   // The dashpot's share of the force, times the relative velocity: its power (<= 0).
@@ -227,14 +289,13 @@ double RigidSpherePenalty::node_term(const State& state, int tri) const {
   double k_over_m = 0.0;
   for (int l : tris_[static_cast<size_t>(tri)]) {
     const auto i = static_cast<size_t>(l);
-    k_over_m = std::max(k_over_m, valence_[i] * state.inv_m[static_cast<size_t>(nodes_[i])]);
+    k_over_m = std::max(k_over_m, node_weight_[i] * state.inv_m[static_cast<size_t>(nodes_[i])]);
   }
-  return params_.penalty * k_over_m;
+  return unit_ * k_over_m;
 }
 
-double RigidSpherePenalty::limit_from(double node_term, int n_points) const {
-  const double omega2 =
-      node_term + params_.penalty * static_cast<double>(n_points) / params_.sphere.mass;
+double RigidSpherePenalty::limit_from(double node_term, double weight_sum) const {
+  const double omega2 = node_term + unit_ * weight_sum / params_.sphere.mass;
   if (!(omega2 > 0.0)) return std::numeric_limits<double>::infinity();
   return share_ * damping_bound_factor_ * 2.0 / std::sqrt(omega2);
 }
@@ -273,14 +334,14 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   for (int n : nodes_) v_max = std::max(v_max, state.v[static_cast<size_t>(n)].squaredNorm());
   const double v_rel = v_s_.norm() + std::sqrt(v_max);
 
-  double A = 0.0;  // max_a K_P s_a / m_a over the nodes of the counted points' triangles
-  int n_points = 0;
+  double A = 0.0;         // max_a kappa_a / m_a over the nodes of the counted points' triangles
+  double n_points = 0.0;  // sum of the counted points' weights (per point: their number)
   size_t nearest = d2_.size();  // the closest point that does not count yet
   for (size_t q = 0; q < d2_.size(); ++q) {
     const double d2 = d2_[q];
     if (!(d2 >= near2)) {  // also counts a non-finite distance
       A = std::max(A, node_term(state, static_cast<int>(q / 3)));
-      ++n_points;
+      n_points += point_weight_[q / 3];
     } else if (nearest == d2_.size() || d2 < d2_[nearest]) {
       nearest = q;
     }
@@ -294,7 +355,7 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   double tau = tau_of(d2_[nearest]);
   if (tau >= L) return L;
   A = std::max(A, node_term(state, static_cast<int>(nearest / 3)));
-  ++n_points;
+  n_points += point_weight_[nearest / 3];
   double L_with = limit_from(A, n_points);
   if (L_with <= tau) return tau;
   L = L_with;
@@ -313,7 +374,7 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
     if (tau >= L) break;
     std::pop_heap(scratch_.begin(), scratch_.end(), farther);
     A = std::max(A, node_term(state, scratch_.back().second));
-    ++n_points;
+    n_points += point_weight_[static_cast<size_t>(scratch_.back().second)];
     scratch_.pop_back();
     L_with = limit_from(A, n_points);
     if (L_with <= tau) return tau;

@@ -23,26 +23,41 @@
 // mid-step velocities v* = v_{n+1/2} the engine holds at add_forces (explicit). The dashpot's
 // work is in work() and sphere_work(): the energy balance sees it as dissipated.
 //
-// How K_P is applied: K_P [N/m] is the stiffness of ONE quadrature point's spring, not scaled by
-// the point's area weight. That is the thesis's model (eq. 2.5: "a mechanical spring" K_P per
-// finite location; §2.8: "all quadrature points ... are checked", K_P = 1e6 per point), it keeps
-// K_P in N/m, and it makes the stiffness of a contact exactly K_P times the number of points
-// inside the sphere. The price, which the thesis paid too: the total stiffness of a contact
-// patch grows with the number of points in it, i.e. with mesh refinement (about 3 points per
-// triangle in contact). Why 3 points and not the centroid: a 1-point rule leaves each node
-// reachable only through triangle centroids, so a small sphere can press between centroids and a
-// node's load arrives late and lumpy; with 3 points a point lies at 1/6 of the altitude from
-// every edge and carries 2/3 of its force to the nearest node. (The thesis checked the volume
-// quadrature points of its artifact; ccm checks the surface, where contact happens.)
+// How K_P is applied (penalty_mode per_point, the default): K_P [N/m] is the stiffness of ONE
+// quadrature point's spring, not scaled by the point's area weight. That is the thesis's model
+// (eq. 2.5: "a mechanical spring" K_P per finite location; §2.8: "all quadrature points ... are
+// checked", K_P = 1e6 per point), it keeps K_P in N/m, and it makes the stiffness of a contact
+// exactly K_P times the number of points inside the sphere. The price, which the thesis paid too:
+// the total stiffness of a contact patch grows with the number of points in it, i.e. with mesh
+// refinement (about 3 points per triangle in contact). Why 3 points and not the centroid: a 1-point
+// rule leaves each node reachable only through triangle centroids, so a small sphere can press
+// between centroids and a node's load arrives late and lumpy; with 3 points a point lies at 1/6 of
+// the altitude from every edge and carries 2/3 of its force to the nearest node. (The thesis
+// checked the volume quadrature points of its artifact; ccm checks the surface, where contact
+// happens.)
 //
 // The sphere is integrated by the engine's own central difference in PEC form (eq. 2.27-2.31):
 // begin_step(dt) predicts x_s += dt v_s + dt^2/2 a_s, v_s += dt/2 a_s; add_forces gathers F_s at
 // x_{n+1} and sets a_s = F_s / m_s + g; end_step(dt) corrects v_s += dt/2 a_s. Linear momentum of
 // sphere + body is therefore conserved to round-off (when no node of the body is fixed).
 //
-// Stable step (docs/contact-time-step.md): omega_pen^2 <= max_a K_P s_a / m_a + K_P n_s / m_s,
-// with s_a = sum_q N_a(q) over the points of node a's triangles (= its number of surface
-// triangles) and n_s the number of points that can touch the sphere within the step; the limit
+// The element-scaled penalty (penalty_mode element; docs/contact-time-step.md "The
+// element-scaled penalty"). Instead of the thesis's K_P per point, surface triangle T gets
+//   k_T = s K A_T^2 / V_T   [N/m]   (s = penalty_scale, default 0.1)
+// with A_T its reference area, V_T the reference volume of the tet that owns it (T is one of its
+// faces) and K = lambda + 2 mu / 3 that tet's bulk modulus at the reference state (LS-DYNA's
+// segment-based penalty for solids). Each of T's three points gets k_q = k_T / 3: the rule's
+// weights are all A_T / 3, so "k_T / 3" and "k_T times the point's share of the area" are the
+// same, and the three sum to k_T. k_T is of order s times the stiffness of the tet behind T, so
+// that the springs never limit the step more than the plate itself does (at s = 0.1 the bound
+// below stays under the structural one: tested), whatever the mesh or the material. Everything
+// above holds with K_P replaced by the point's own k_q (the spring, its energy, the dashpot).
+//
+// Stable step (docs/contact-time-step.md): omega_pen^2 <= max_a kappa_a / m_a + k_s / m_s with
+// kappa_a = sum_q N_a(q) k_q over the points of node a's triangles and k_s the sum of k_q over
+// the points that can touch the sphere within the step. Per point (k_q = K_P) that is
+// max_a K_P s_a / m_a + K_P n_s / m_s, with s_a = sum_q N_a(q) (= node a's number of surface
+// triangles) and n_s the number of points that count; the limit
 // returned is sqrt(1 - s^2) * 2 / omega_pen for the engine's structural safety s (0.9: 0.436), so
 // that dt^2 (omega_struct^2 + omega_pen^2) <= 4; with damping times sqrt(1 + zeta^2) - zeta, the
 // central-difference bound of a damped oscillator (Belytschko, Liu & Moran, Nonlinear Finite
@@ -59,6 +74,8 @@
 #include <vector>
 
 #include "engine/contact/contact_model.hpp"
+#include "engine/contact/penalty_mode.hpp"
+#include "engine/mesh/model_mesh.hpp"
 #include "engine/mesh/tet_mesh.hpp"
 #include "engine/observe/history.hpp"
 
@@ -74,7 +91,9 @@ struct RigidSphere {
 struct RigidSpherePenaltyParams {
   std::string name = "sphere";  // the history column prefix
   RigidSphere sphere;
-  double penalty = 1e6;         // K_P [N/m] per quadrature point (thesis 2.8)
+  PenaltyMode penalty_mode = PenaltyMode::per_point;
+  double penalty = 1e6;  // per_point: K_P [N/m] per quadrature point (thesis 2.8)
+  double penalty_scale = kDefaultElementPenaltyScale;  // element: s > 0
   double damping = 0.0;         // zeta >= 0: the dashpot per point, a fraction of critical
   Vec3 gravity = Vec3::Zero();  // acceleration of the sphere [m/s^2]
   // Unit axis for the history column `<name>.contact_force_axis`; default: the direction of
@@ -90,8 +109,13 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
  public:
   // `surface`: triangles of the deformable body (global node ids), e.g. the surface
   // "<body>/boundary" of the ModelMesh. Throws std::invalid_argument for an empty surface, a
-  // radius, mass or penalty that is not > 0, a damping < 0, or a zero force axis.
+  // radius, mass, penalty or penalty scale that is not > 0, a damping < 0, or a zero force
+  // axis. Per point only: the element mode needs the mesh (it throws without it).
   RigidSpherePenalty(std::vector<Triangle> surface, RigidSpherePenaltyParams params);
+  // Either mode: `mesh` holds the tets that own the surface's triangles and their materials
+  // (read at construction only). Also throws when a triangle is no tet's face.
+  RigidSpherePenalty(const ModelMesh& mesh, std::vector<Triangle> surface,
+                     RigidSpherePenaltyParams params);
 
   std::string_view name() const override { return "rigid_penalty"; }
   void begin_step(const State& state, double dt) override;
@@ -115,7 +139,10 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   const Vec3& force_axis() const { return axis_; }
   // Of the last add_forces (at x_{n+1}):
   const Vec3& contact_force() const { return F_s_; }         // on the sphere [N]
-  double penalty_energy() const { return penalty_energy_; }  // sum_q 1/2 K_P delta^2 [J]
+  double penalty_energy() const { return penalty_energy_; }  // sum_q 1/2 k_q delta^2 [J]
+  // k_q [N/m] of each of the three points of surface triangle tri (in the surface's order).
+  double point_stiffness(size_t tri) const { return unit_ * point_weight_[tri]; }
+  size_t surface_triangles() const { return tris_.size(); }
   // Work of the dashpots on sphere and body since t = 0 (<= 0) [J]: the energy they took.
   double damping_work() const { return damping_work_; }
   double penetration_max() const { return penetration_max_; }  // max_q delta [m]
@@ -131,19 +158,30 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   const std::vector<int>& surface_nodes() const { return nodes_; }
 
  private:
+  // mesh: null for the per-point constructor.
+  RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triangle> surface,
+                     RigidSpherePenaltyParams params);
   std::array<Vec3, 3> corners(const State& state, size_t tri) const;
-  // The force of quadrature point k of triangle tri on the body, at depth delta along n (the
-  // spring and, with damping, the dashpot); adds the dashpot's power to damping_power_.
-  Vec3 point_force(const State& state, size_t tri, int k, double delta, const Vec3& n);
-  // sqrt(1 - s^2) * 2 / omega_pen for omega_pen^2 = node_term + K_P n_points / m_s, where
-  // node_term = max_a K_P s_a / m_a over the nodes that can be pushed.
-  double limit_from(double node_term, int n_points) const;
+  // The force of quadrature point k (stiffness k_q) of triangle tri on the body, at depth delta
+  // along n (the spring and, with damping, the dashpot); adds the dashpot's power to
+  // damping_power_.
+  Vec3 point_force(const State& state, size_t tri, int k, double k_q, double delta, const Vec3& n);
+  // sqrt(1 - s^2) * 2 / omega_pen for omega_pen^2 = node_term + unit_ weight_sum / m_s, where
+  // node_term = max_a kappa_a / m_a over the nodes that can be pushed and weight_sum is the sum
+  // of point_weight_ over the points that count.
+  double limit_from(double node_term, double weight_sum) const;
   double node_term(const State& state, int tri) const;
 
   RigidSpherePenaltyParams params_;
   std::vector<int> nodes_;                // global ids of the surface nodes
   std::vector<std::array<int, 3>> tris_;  // local node indices (into nodes_)
   std::vector<double> valence_;           // s_a = sum_q N_a(q) = surface triangles at a
+  // k_q = unit_ point_weight_[tri] and kappa_a = unit_ node_weight_[a]. Per point: unit_ = K_P,
+  // point weight 1 and node weight s_a, so that every product is the one the thesis's model
+  // always computed (bit for bit). Element: unit_ = 1 N/m, point weight k_T / 3.
+  double unit_ = 0.0;
+  std::vector<double> point_weight_;  // per triangle
+  std::vector<double> node_weight_;   // per surface node: sum_q N_a(q) point_weight
   Vec3 axis_ = -Vec3::UnitZ();
   double share_ = 0.0;  // sqrt(1 - s^2)
 

@@ -48,6 +48,23 @@ std::vector<Triangle> extract_boundary(std::span<const Tet> tets) {
   return boundary;
 }
 
+std::vector<int> owning_tets(std::span<const Tet> tets, std::span<const Triangle> triangles) {
+  std::unordered_map<FaceKey, int, FaceKeyHash> wanted;  // triangle face -> owning tet
+  wanted.reserve(triangles.size());
+  for (const Triangle& t : triangles) wanted.emplace(key_of(t), -1);
+  for (size_t e = 0; e < tets.size(); ++e) {
+    const Tet& tet = tets[e];
+    for (const auto& f : kFaces) {
+      const auto it = wanted.find(key_of({tet[f[0]], tet[f[1]], tet[f[2]]}));
+      if (it != wanted.end() && it->second < 0) it->second = static_cast<int>(e);
+    }
+  }
+  std::vector<int> owner;
+  owner.reserve(triangles.size());
+  for (const Triangle& t : triangles) owner.push_back(wanted.at(key_of(t)));
+  return owner;
+}
+
 Vec3 triangle_normal(const Triangle& t, std::span<const Vec3> x) {
   return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).normalized();
 }

@@ -13,6 +13,11 @@ namespace ccm {
 // every tet has positive signed volume. Deterministic order: by the owning tet, then local face.
 std::vector<Triangle> extract_boundary(std::span<const Tet> tets);
 
+// For each triangle, the index into `tets` of the tet that has it as a face (its three nodes
+// in any order), or -1 when none does. A boundary triangle has exactly one such tet; for a face
+// shared by two tets the first in `tets` is returned.
+std::vector<int> owning_tets(std::span<const Tet> tets, std::span<const Triangle> triangles);
+
 // Outward unit normal and area of a triangle at positions x.
 Vec3 triangle_normal(const Triangle& t, std::span<const Vec3> x);
 double triangle_area(const Triangle& t, std::span<const Vec3> x);

@@ -6,6 +6,7 @@
 
 #include "study/grid/point_parameters.hpp"
 #include "study/grid/strict_table.hpp"
+#include "study/scene/did_you_mean.hpp"
 #include "study/scene/scene.hpp"
 #include "study/scene/scene_file.hpp"
 
@@ -123,12 +124,47 @@ void parse_impactor(const StrictTable& root, GridSpec& g) {
   parse_contact_zone(t, g.impactor.contact_mesh_size, g.impactor.contact_radius);
 }
 
+// The rigid model's springs: penalty_mode with penalty (per_point) or penalty_scale (element),
+// or, with a penalty_scale axis, the axis alone (0: per point; docs/grid-file.md).
+void parse_penalty(const StrictTable& t, GridSpec& g) {
+  GridContact& c = g.contact;
+  const bool scale_axis = g.other_axes.contains("penalty_scale");
+  for (std::string_view key : {"penalty_mode", "penalty_scale"})
+    if (scale_axis && t.has(key))
+      t.fail(key,
+             "the penalty_scale axis chooses the mode at every point (0: the per-point K_P, "
+             "> 0: element); remove this key");
+  if (const auto mode = t.string("penalty_mode");
+      mode && !parse_penalty_mode(*mode, c.penalty_mode))
+    t.fail("penalty_mode", unknown_value_problem(*mode, kPenaltyModeNames));
+  const bool element = c.penalty_mode == PenaltyMode::element;
+  if (element && t.has("penalty"))
+    t.fail("penalty", "applies only with penalty_mode = \"per_point\"");
+  if (!element && !scale_axis && t.has("penalty_scale"))
+    t.fail("penalty_scale", "applies only with penalty_mode = \"element\"");
+  const bool penalty_axis = g.other_axes.contains("penalty");
+  if (penalty_axis && (element || scale_axis))
+    t.fail(element ? "penalty_mode" : "",
+           "a penalty (K_P) axis needs the per-point mode without a penalty_scale axis (the "
+           "element mode does not use K_P: its points would repeat)");
+  c.penalty = checked_as_axis(t, "penalty", "penalty", c.penalty);
+  if (t.has("penalty_scale")) {
+    c.penalty_scale = t.need_number("penalty_scale");
+    if (!(c.penalty_scale > 0.0))
+      t.fail("penalty_scale", fmt::format("must be > 0 (got {})", c.penalty_scale));
+  }
+}
+
 void parse_contact(const StrictTable& root, GridSpec& g) {
   const auto t = root.table("contact");
-  if (!t) return;
-  t->allow_only({"penalty", "damping", "restitution", "friction"});
+  if (!t) {
+    if (g.other_axes.contains("penalty") && g.other_axes.contains("penalty_scale"))
+      root.fail("axes", "a penalty (K_P) axis and a penalty_scale axis cannot be combined");
+    return;
+  }
+  t->allow_only({"penalty_mode", "penalty", "penalty_scale", "damping", "restitution", "friction"});
   GridContact& c = g.contact;
-  c.penalty = checked_as_axis(*t, "penalty", "penalty", c.penalty);
+  parse_penalty(*t, g);
   c.damping = checked_as_axis(*t, "damping", "damping", c.damping);
   c.restitution = checked_as_axis(*t, "restitution", "restitution", c.restitution);
   c.friction = checked_as_axis(*t, "friction", "friction", c.friction);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/contact/penalty_mode.hpp"
+
 namespace ccm::study {
 
 // How the artifact plate is held.
@@ -50,7 +52,11 @@ struct GridTime {
 };
 
 struct GridContact {
-  double penalty = 1e6;      // K_P [N/m] per quadrature point (rigid model, thesis 2.8)
+  // The rigid model's springs: per_point (K_P = penalty, thesis 2.8) or element
+  // (k = penalty_scale K A^2 / V per surface triangle); see docs/grid-file.md.
+  PenaltyMode penalty_mode = PenaltyMode::per_point;
+  double penalty = 1e6;  // K_P [N/m] per quadrature point (rigid model, thesis 2.8)
+  double penalty_scale = kDefaultElementPenaltyScale;  // s (rigid model, element mode)
   double damping = 0.0;      // zeta, fraction of critical per point (rigid model)
   double restitution = 0.0;  // e (ccm model, DCR)
   double friction = 0.0;     // mu (ccm model, DCR)

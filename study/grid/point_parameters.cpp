@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -45,6 +46,7 @@ const std::map<std::string_view, Check>& axis_checks() {
       {"impactor_mesh_ratio", mesh_ratio_problem},
       {"mesh_scale", positive_problem},
       {"penalty", positive_problem},
+      {"penalty_scale", non_negative_problem},
       {"damping", non_negative_problem},
       {"restitution", unit_interval_problem},
       {"friction", non_negative_problem},
@@ -62,6 +64,9 @@ void apply_other_axis(std::string_view name, double value, PointParameters& p) {
     p.impactor_mesh_size = value * p.impactor_diameter;
   } else if (name == "penalty") {
     p.contact.penalty = value;
+  } else if (name == "penalty_scale") {  // 0: the thesis's K_P per point
+    p.contact.penalty_mode = value > 0.0 ? PenaltyMode::element : PenaltyMode::per_point;
+    if (value > 0.0) p.contact.penalty_scale = value;
   } else if (name == "damping") {
     p.contact.damping = value;
   } else if (name == "restitution") {
@@ -81,10 +86,21 @@ const std::vector<std::string_view>& other_axis_names() {
                                                       "impactor_mesh_ratio",
                                                       "mesh_scale",
                                                       "penalty",
+                                                      "penalty_scale",
                                                       "damping",
                                                       "restitution",
                                                       "friction"};
   return names;
+}
+
+bool axis_applies_to(std::string_view name, ImpactModel model) {
+  static constexpr std::array<std::string_view, 3> kRigidOnly = {"penalty", "penalty_scale",
+                                                                 "damping"};
+  static constexpr std::array<std::string_view, 2> kCcmOnly = {"restitution", "friction"};
+  const auto in = [&](const auto& names) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
+  return model == ImpactModel::ccm ? !in(kRigidOnly) : !in(kCcmOnly);
 }
 
 std::string axis_value_problem(std::string_view name, double value) {

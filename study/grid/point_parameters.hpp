@@ -17,10 +17,17 @@ namespace ccm::study {
 //   impactor_mesh_ratio  the impactor's tet edge / D_I
 //   mesh_scale           a factor on both mesh sizes (convergence runs)
 //   penalty              K_P [N/m] (rigid model)
+//   penalty_scale        s >= 0 (rigid model): 0 is the thesis's K_P per point (penalty_mode
+//                        per_point), s > 0 the element-scaled penalty s K A^2 / V (element)
 //   damping              zeta, the penalty's dashpot, fraction of critical (rigid model)
 //   restitution          e (ccm model)
 //   friction             mu (ccm model)
 const std::vector<std::string_view>& other_axis_names();
+
+// True for the axes that only change one model's scene (rigid: penalty, penalty_scale,
+// damping; ccm: restitution, friction): the other model's scene text leaves them out, so that
+// its runs at two levels of such an axis are the same run.
+bool axis_applies_to(std::string_view name, ImpactModel model);
 
 // Empty when `value` is allowed for axis `name`, else the problem ("must be > 0 (got -1)").
 // Also checks ER, RLS and KE under the names "ER", "RLS", "KE".

@@ -24,7 +24,7 @@ std::string point_title(const GridPoint& point, ImpactModel model) {
       fmt::format("grid point ({}): ER = {}, RLS = {}, KE = {} J", to_string(model),
                   num(point.modulus_ratio), num(point.length_ratio), num(point.kinetic_energy));
   for (const auto& [name, value] : point.other_axes)
-    t += fmt::format(", {} = {}", name, num(value));
+    if (axis_applies_to(name, model)) t += fmt::format(", {} = {}", name, num(value));
   return t;
 }
 
@@ -94,11 +94,20 @@ std::string dcr_contact(const PointParameters& p) {
       kImpactorName, kArtifactBody, num(p.contact.restitution), num(p.contact.friction));
 }
 
+// The springs' keys: `penalty` per point (the text every per-point scene always had), or the
+// element mode and its scale.
+std::string penalty_keys(const GridContact& c) {
+  if (c.penalty_mode == PenaltyMode::per_point)
+    return fmt::format("penalty = {}\n", num(c.penalty));
+  return fmt::format("penalty_mode = \"{}\"\npenalty_scale = {}\n", to_string(c.penalty_mode),
+                     num(c.penalty_scale));
+}
+
 std::string rigid_contact(const PointParameters& p) {
   return fmt::format(
-      "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\npenalty = {}\ndamping = {}\n\n"
+      "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\n{}damping = {}\n\n"
       "[contact.sphere]\nname = \"{}\"\nradius = {}\ndensity = {}\ncenter = {}\nvelocity = {}\n",
-      kArtifactBody, num(p.contact.penalty), num(p.contact.damping), kImpactorName,
+      kArtifactBody, penalty_keys(p.contact), num(p.contact.damping), kImpactorName,
       num(0.5 * p.impactor_diameter), num(p.impactor_rho), sphere_center(p),
       vec(0.0, 0.0, -p.impact_speed));
 }

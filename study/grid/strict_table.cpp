@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "study/scene/did_you_mean.hpp"
 #include "study/scene/scene.hpp"
 
 namespace ccm::study {
@@ -43,10 +44,13 @@ void StrictTable::allow_only(std::initializer_list<std::string_view> allowed) co
 }
 
 void StrictTable::allow_only(const std::vector<std::string_view>& allowed) const {
-  for (auto&& [k, v] : *t_)
-    if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
-      fail(k.str(),
-           fmt::format("unknown key '{}' (allowed: {})", k.str(), fmt::join(allowed, ", ")));
+  for (auto&& [k, v] : *t_) {
+    if (std::find(allowed.begin(), allowed.end(), k.str()) != allowed.end()) continue;
+    const std::string_view best = closest_name(k.str(), allowed);
+    if (!best.empty())
+      fail(k.str(), fmt::format("unknown key '{}' (did you mean '{}'?)", k.str(), best));
+    fail(k.str(), fmt::format("unknown key '{}' (allowed: {})", k.str(), fmt::join(allowed, ", ")));
+  }
 }
 
 void StrictTable::wrong_type(const toml::node& n, std::string_view path,

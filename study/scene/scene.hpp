@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "engine/contact/penalty_mode.hpp"
 #include "engine/core/types.hpp"
 #include "engine/material/material.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
@@ -145,12 +146,14 @@ struct RigidSphereSpec {
 struct ContactSpec {
   ContactKind kind = ContactKind::none;
   // rigid_penalty:
-  std::string body;                    // the deformable body
-  std::optional<std::string> surface;  // default "<body>/boundary"
-  double penalty = 1e6;                // K_P [N/m] per quadrature point (thesis 2.8)
-  double damping = 0.0;                // zeta >= 0, fraction of critical per point
-  std::optional<Vec3> force_axis;      // rigid_penalty: default the sphere's initial velocity
-                                       // direction; dcr: pair forces are output along it
+  std::string body;                                   // the deformable body
+  std::optional<std::string> surface;                 // default "<body>/boundary"
+  PenaltyMode penalty_mode = PenaltyMode::per_point;  // per_point (thesis) or element
+  double penalty = 1e6;  // per_point: K_P [N/m] per quadrature point (thesis 2.8)
+  double penalty_scale = kDefaultElementPenaltyScale;  // element: s in k = s K A^2 / V
+  double damping = 0.0;                                // zeta >= 0, fraction of critical per point
+  std::optional<Vec3> force_axis;  // rigid_penalty: default the sphere's initial velocity
+                                   // direction; dcr: pair forces are output along it
   RigidSphereSpec sphere;
   // dcr:
   std::vector<std::string> surfaces;  // as given; a name without '/' means "<name>/boundary"

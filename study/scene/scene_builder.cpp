@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -240,6 +241,20 @@ ContactSetup build_dcr(const Scene& scene, const Model& model) {
   return setup;
 }
 
+// "K_P 1e+06 N/m per point" (the thesis's) or the element mode's scale and range of k_q.
+std::string penalty_description(const RigidSpherePenalty& model) {
+  const RigidSpherePenaltyParams& p = model.params();
+  if (p.penalty_mode == PenaltyMode::per_point)
+    return fmt::format("K_P {:.4g} N/m per point", p.penalty);
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (size_t tri = 0; tri < model.surface_triangles(); ++tri) {
+    lo = std::min(lo, model.point_stiffness(tri));
+    hi = std::max(hi, model.point_stiffness(tri));
+  }
+  return fmt::format("element penalty s {:.4g} (k = s K A^2 / V, {:.4g} .. {:.4g} N/m per point)",
+                     p.penalty_scale, lo, hi);
+}
+
 }  // namespace
 
 ContactSetup build_contact(const Scene& scene, const Model& model) {
@@ -262,23 +277,25 @@ ContactSetup build_contact(const Scene& scene, const Model& model) {
   RigidSpherePenaltyParams p;
   p.name = c.sphere.name;
   p.sphere = {c.sphere.radius, c.sphere.mass, c.sphere.center, c.sphere.velocity};
+  p.penalty_mode = c.penalty_mode;
   p.penalty = c.penalty;
+  p.penalty_scale = c.penalty_scale;
   p.damping = c.damping;
   p.gravity = scene.gravity;
   p.force_axis = c.force_axis;
   p.structural_safety = scene.time.dt_safety;
   std::unique_ptr<RigidSpherePenalty> penalty;
   try {
-    penalty = std::make_unique<RigidSpherePenalty>(it->second.triangles, p);
+    penalty = std::make_unique<RigidSpherePenalty>(mesh, it->second.triangles, p);
   } catch (const std::invalid_argument& e) {
     fail(scene, c.where, "", e.what());
   }
   setup.model_name = "rigid_penalty";
   setup.description = fmt::format(
-      "rigid_penalty: sphere '{}' (R {:.4g} m, {:.4g} kg) on '{}' ({} triangles), K_P {:.4g} N/m "
-      "per point, damping {:.4g} of critical",
-      p.name, p.sphere.radius, p.sphere.mass, name, it->second.triangles.size(), p.penalty,
-      p.damping);
+      "rigid_penalty: sphere '{}' (R {:.4g} m, {:.4g} kg) on '{}' ({} triangles), {}, damping "
+      "{:.4g} of critical",
+      p.name, p.sphere.radius, p.sphere.mass, name, it->second.triangles.size(),
+      penalty_description(*penalty), p.damping);
   setup.history = penalty.get();
   setup.model = std::move(penalty);
   return setup;

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "engine/core/time_table.hpp"
+#include "study/scene/did_you_mean.hpp"
 
 namespace ccm {
 namespace {
@@ -49,33 +50,9 @@ std::string_view type_name(toml::node_type t) {
   return "nothing";
 }
 
-size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 std::string unknown_key_problem(std::string_view key, std::span<const std::string_view> allowed) {
-  std::string_view best;
-  size_t best_d = std::numeric_limits<size_t>::max();
-  for (std::string_view k : allowed) {
-    const size_t d = edit_distance(key, k);
-    if (d < best_d) {
-      best_d = d;
-      best = k;
-    }
-  }
-  if (best_d <= 2 && best_d < key.size())
-    return fmt::format("unknown key '{}' (did you mean '{}'?)", key, best);
+  const std::string_view best = closest_name(key, allowed);
+  if (!best.empty()) return fmt::format("unknown key '{}' (did you mean '{}'?)", key, best);
   return fmt::format("unknown key '{}' (allowed: {})", key, fmt::join(allowed, ", "));
 }
 
@@ -644,6 +621,25 @@ void parse_dcr(const Table& t, ContactSpec& c) {
   c.where = t.ref();
 }
 
+// penalty_mode = "per_point" (K_P = penalty) or "element" (s = penalty_scale); each key of one
+// mode is an error with the other.
+void parse_penalty(const Table& t, ContactSpec& c) {
+  if (t.has("penalty_mode")) {
+    const std::string mode = t.need<std::string>("penalty_mode");
+    if (!parse_penalty_mode(mode, c.penalty_mode))
+      t.fail("penalty_mode", unknown_value_problem(mode, kPenaltyModeNames));
+  }
+  const bool element = c.penalty_mode == PenaltyMode::element;
+  if (element && t.has("penalty"))
+    t.fail("penalty",
+           "applies only with penalty_mode = \"per_point\" (the element mode's springs are "
+           "penalty_scale K A^2 / V)");
+  if (!element && t.has("penalty_scale"))
+    t.fail("penalty_scale", "applies only with penalty_mode = \"element\"");
+  c.penalty = positive(t, "penalty", t.get_or("penalty", c.penalty));
+  c.penalty_scale = positive(t, "penalty_scale", t.get_or("penalty_scale", c.penalty_scale));
+}
+
 void parse_contact(const Table& root, Scene& scene) {
   const auto t = root.table("contact");
   if (!t) return;
@@ -658,12 +654,13 @@ void parse_contact(const Table& root, Scene& scene) {
   }
   if (model != "rigid_penalty")
     t->fail("model", fmt::format("must be one of none, rigid_penalty, dcr (got '{}')", model));
-  t->allow_only({"model", "body", "surface", "penalty", "damping", "force_axis", "sphere"});
+  t->allow_only({"model", "body", "surface", "penalty_mode", "penalty", "penalty_scale", "damping",
+                 "force_axis", "sphere"});
   ContactSpec& c = scene.contact;
   c.kind = ContactKind::rigid_penalty;
   c.body = t->need<std::string>("body");
   if (t->has("surface")) c.surface = t->need<std::string>("surface");
-  c.penalty = positive(*t, "penalty", t->get_or("penalty", c.penalty));
+  parse_penalty(*t, c);
   c.damping = t->get_or("damping", c.damping);
   if (!(c.damping >= 0.0 && std::isfinite(c.damping)))
     t->fail("damping", fmt::format("must be >= 0 (got {})", c.damping));

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "engine/contact/rigid_sphere_penalty.hpp"
 #include "engine/core/time_table.hpp"
 #include "engine/solver/lumped_mass.hpp"
 #include "study/scene/scene_builder.hpp"
@@ -399,5 +400,53 @@ TEST_CASE("body mass and a refined mesh zone", "[scene]") {
               tmp.write("s.toml", with(sphere, "radius = 0.004,", "radius = 0.004, r = 1,"))) ==
           f + ":14: bodies[0].geometry.refine.r: unknown key 'r' (allowed: center, radius, "
               "mesh_size)");
+  }
+}
+
+TEST_CASE("[contact] rigid_penalty: penalty_mode and penalty_scale", "[scene][element_penalty]") {
+  // Line 13 [contact], 14 model, 15 body, 16 the first key below.
+  const std::string head = kBase + "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\n";
+  const std::string sphere =
+      "[contact.sphere]\nradius = 0.01\nmass = 0.1\ncenter = [0.005, 0.005, 0.02]\n";
+  SECTION("defaults: the thesis's K_P per point; the element mode's s is 0.1") {
+    const Scene s = parse_scene(head + sphere, "s.toml");
+    CHECK(s.contact.penalty_mode == PenaltyMode::per_point);
+    CHECK(s.contact.penalty == 1e6);
+    const Scene e = parse_scene(head + "penalty_mode = \"element\"\n" + sphere, "s.toml");
+    CHECK(e.contact.penalty_mode == PenaltyMode::element);
+    CHECK(e.contact.penalty_scale == 0.1);
+  }
+  SECTION("the element mode builds, with k = s K A^2 / V per triangle in its description") {
+    const Scene s =
+        parse_scene(head + "penalty_mode = \"element\"\npenalty_scale = 0.5\n" + sphere, "s.toml");
+    CHECK(s.contact.penalty_scale == 0.5);
+    const Model model = build_model(s);
+    const ContactSetup setup = build_contact(s, model);
+    const auto& rp = dynamic_cast<const RigidSpherePenalty&>(*setup.model);
+    CHECK(rp.params().penalty_mode == PenaltyMode::element);
+    CHECK(rp.params().penalty_scale == 0.5);
+    CHECK(rp.point_stiffness(0) > 0.0);
+    CHECK_THAT(setup.description, Contains("element penalty s 0.5 (k = s K A^2 / V"));
+    // The per-point description is the one it always was.
+    const Scene p = parse_scene(head + "penalty = 2e5\n" + sphere, "s.toml");
+    CHECK_THAT(build_contact(p, build_model(p)).description, Contains("K_P 2e+05 N/m per point"));
+  }
+  SECTION("errors: an unknown mode, a key of the other mode, a scale <= 0") {
+    CHECK(test::scene_error_of(head + "penalty_mode = \"elemnt\"\n" + sphere) ==
+          "s.toml:16: contact.penalty_mode: must be one of \"per_point\", \"element\" (got "
+          "\"elemnt\"; did you mean \"element\"?)");
+    CHECK(test::scene_error_of(head + "penalty_mode = \"area\"\n" + sphere) ==
+          "s.toml:16: contact.penalty_mode: must be one of \"per_point\", \"element\" (got "
+          "\"area\")");
+    CHECK(test::scene_error_of(head + "penalty_scale = 0.1\n" + sphere) ==
+          "s.toml:16: contact.penalty_scale: applies only with penalty_mode = \"element\"");
+    CHECK_THAT(test::scene_error_of(head + "penalty_mode = \"element\"\npenalty = 1e6\n" + sphere),
+               Contains("s.toml:17: contact.penalty: applies only with penalty_mode = "
+                        "\"per_point\""));
+    CHECK(test::scene_error_of(head + "penalty_mode = \"element\"\npenalty_scale = 0\n" + sphere) ==
+          "s.toml:17: contact.penalty_scale: must be > 0 (got 0)");
+    CHECK(test::scene_error_of(head + "penalty_scael = 0.1\n" + sphere) ==
+          "s.toml:16: contact.penalty_scael: unknown key 'penalty_scael' (did you mean "
+          "'penalty_scale'?)");
   }
 }

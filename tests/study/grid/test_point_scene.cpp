@@ -5,6 +5,7 @@
 #include <string>
 #include <variant>
 
+#include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/grid/point_parameters.hpp"
 #include "study/grid/point_scene.hpp"
@@ -205,4 +206,131 @@ TEST_CASE("contact zone keys: both or neither, never coarser than the body", "[g
                                            "mesh_size_ratio = 0.2\ncontact_radius = -1.0\n"
                                            "contact_mesh_size = 0.01\n")),
              Catch::Contains("impactor.contact_radius: must be > 0"));
+}
+
+TEST_CASE("the rigid model's penalty mode: [contact] keys and the penalty_scale axis",
+          "[grid][element_penalty]") {
+  const GridPoint p = point(1e2, 1.0, 50.0);
+  SECTION("[contact] penalty_mode = \"element\" reaches the rigid scene") {
+    const GridSpec g = parse_grid(
+        std::string(kSmallGrid) + "\n[contact]\npenalty_mode = \"element\"\npenalty_scale = 0.2\n",
+        "g.toml");
+    CHECK(g.contact.penalty_mode == PenaltyMode::element);
+    CHECK(g.contact.penalty_scale == 0.2);
+    const Scene rigid = point_scene(g, p, ImpactModel::rigid);
+    CHECK(rigid.contact.penalty_mode == PenaltyMode::element);
+    CHECK(rigid.contact.penalty_scale == 0.2);
+    CHECK_THAT(point_scene_text(g, p, ImpactModel::rigid),
+               Catch::Contains("penalty_mode = \"element\"\npenalty_scale = 0.2\n"));
+  }
+  SECTION("per point (the default): the scene text has no mode key, as before") {
+    const GridSpec g = parse_grid(kSmallGrid, "g.toml");
+    CHECK(g.contact.penalty_mode == PenaltyMode::per_point);
+    const std::string text = point_scene_text(g, p, ImpactModel::rigid);
+    CHECK_THAT(text, Catch::Contains("penalty = 1000000.0\ndamping = 0.0\n"));
+    CHECK(text.find("penalty_mode") == std::string::npos);
+  }
+  SECTION("the penalty_scale axis: 0 is the per-point K_P, > 0 the element mode") {
+    const GridSpec g = parse_grid(
+        small_grid_with("KE = [10.0, 100.0]", "KE = [10.0]\npenalty_scale = [0.0, 0.1]") +
+            "\n[contact]\npenalty = 2.0e5\n",
+        "g.toml");
+    const std::vector<GridPoint> points = expand_grid(g);
+    REQUIRE(points.size() == 2 * 3 * 1 * 2);
+    REQUIRE(points[0].other_axes.at("penalty_scale") == 0.0);
+    REQUIRE(points[1].other_axes.at("penalty_scale") == 0.1);
+    const Scene thesis = point_scene(g, points[0], ImpactModel::rigid);
+    CHECK(thesis.contact.penalty_mode == PenaltyMode::per_point);
+    CHECK(thesis.contact.penalty == 2e5);
+    const Scene element = point_scene(g, points[1], ImpactModel::rigid);
+    CHECK(element.contact.penalty_mode == PenaltyMode::element);
+    CHECK(element.contact.penalty_scale == 0.1);
+  }
+  SECTION("errors") {
+    const std::string with_axis =
+        small_grid_with("KE = [10.0, 100.0]", "KE = [10.0]\npenalty_scale = [0.0, 0.1]");
+    // [contact] is line 25 of kSmallGrid + "\n[contact]\n", its first key line 26.
+    CHECK_THAT(grid_error_of(with_axis + "\n[contact]\npenalty_mode = \"element\"\n"),
+               Catch::Contains("g.toml:26: contact.penalty_mode: the penalty_scale axis chooses "
+                               "the mode at every point"));
+    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\npenalty_mode = \"elment\"\n"),
+               Catch::Contains("g.toml:25: contact.penalty_mode: must be one of \"per_point\", "
+                               "\"element\" (got \"elment\"; did you mean \"element\"?)"));
+    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\npenalty_scale = 0.1\n"),
+               Catch::Contains("g.toml:25: contact.penalty_scale: applies only with "
+                               "penalty_mode = \"element\""));
+    CHECK_THAT(grid_error_of(std::string(kSmallGrid) +
+                             "\n[contact]\npenalty_mode = \"element\"\npenalty = 1e6\n"),
+               Catch::Contains("g.toml:26: contact.penalty: applies only with penalty_mode = "
+                               "\"per_point\""));
+    CHECK_THAT(grid_error_of(std::string(kSmallGrid) +
+                             "\n[contact]\npenalty_mode = \"element\"\npenalty_scale = -1\n"),
+               Catch::Contains("g.toml:26: contact.penalty_scale: must be > 0 (got -1)"));
+    CHECK_THAT(
+        grid_error_of(small_grid_with("KE = [10.0, 100.0]", "KE = [10.0]\npenalty_scale = [-0.1]")),
+        Catch::Contains("g.toml:5: axes.penalty_scale: [0] must be >= 0 (got -0.1)"));
+    CHECK_THAT(grid_error_of(small_grid_with("KE = [10.0, 100.0]",
+                                             "KE = [10.0]\npenalty = [1e5, 1e6]\n"
+                                             "penalty_scale = [0.0, 0.1]")),
+               Catch::Contains("g.toml:1: axes: a penalty (K_P) axis and a penalty_scale axis "
+                               "cannot be combined"));
+    CHECK_THAT(
+        grid_error_of(small_grid_with("KE = [10.0, 100.0]", "KE = [10.0]\npenalty = [1e5, 1e6]") +
+                      "\n[contact]\npenalty_mode = \"element\"\n"),
+        Catch::Contains("contact.penalty_mode: a penalty (K_P) axis needs the per-point "
+                        "mode"));
+    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\ndampnig = 1.0\n"),
+               Catch::Contains("g.toml:25: contact.dampnig: unknown key 'dampnig' (did you mean "
+                               "'damping'?)"));
+  }
+}
+
+TEST_CASE("a model's scene text leaves out the other model's axes (run reuse by scene text)",
+          "[grid][element_penalty]") {
+  // The ccm scene must not change with the rigid model's penalty, penalty_scale or damping, nor
+  // the rigid scene with the ccm model's restitution or friction: the same run either way.
+  const GridSpec g = parse_grid(kSmallGrid, "g.toml");
+  const GridPoint base = point(1e2, 1.0, 50.0);
+  const auto text = [&](std::map<std::string, double> axes, ImpactModel m) {
+    GridPoint q = base;
+    q.other_axes = std::move(axes);
+    return point_scene_text(g, q, m);
+  };
+  const std::string ccm_text = text({{"damping", 0.0}, {"penalty_scale", 0.0}}, ImpactModel::ccm);
+  CHECK(text({{"damping", 1.0}, {"penalty_scale", 0.1}}, ImpactModel::ccm) == ccm_text);
+  CHECK(text({{"penalty", 3e5}}, ImpactModel::ccm) == point_scene_text(g, base, ImpactModel::ccm));
+  CHECK(text({{"restitution", 0.5}}, ImpactModel::ccm) != ccm_text);  // its own axis does count
+  const std::string rigid_text =
+      text({{"restitution", 1.0}, {"friction", 0.0}}, ImpactModel::rigid);
+  CHECK(text({{"restitution", 0.5}, {"friction", 0.3}}, ImpactModel::rigid) == rigid_text);
+  CHECK(text({{"damping", 1.0}}, ImpactModel::rigid) !=
+        point_scene_text(g, base, ImpactModel::rigid));
+}
+
+TEST_CASE("default-rigid-options.toml: the default grid with damping and penalty_scale axes",
+          "[grid][element_penalty]") {
+  const GridSpec base = parse_grid_file(CCM_SOURCE_DIR "/scenes/grids/default.toml");
+  const GridSpec g = parse_grid_file(CCM_SOURCE_DIR "/scenes/grids/default-rigid-options.toml");
+  CHECK(g.other_axes.at("damping") == std::vector<double>{0.0, 1.0});
+  CHECK(g.other_axes.at("penalty_scale") == std::vector<double>{0.0, 0.1, 1.0});
+  const std::vector<GridPoint> points = expand_grid(g);
+  REQUIRE(points.size() == 36 * 6);
+  // Point 4: ER 1, RLS 0.5, KE 10, damping 1, penalty_scale 0.1 (the last axis fastest).
+  CHECK(points[4].other_axes ==
+        std::map<std::string, double>{{"damping", 1.0}, {"penalty_scale", 0.1}});
+  const Scene rigid = point_scene(g, points[4], ImpactModel::rigid);
+  CHECK(rigid.contact.penalty_mode == PenaltyMode::element);
+  CHECK(rigid.contact.damping == 1.0);
+  // The ccm scene of every one of the six is the default grid's, word for word; the rigid one at
+  // penalty_scale 0 and damping 1 is the default grid's but for the title.
+  const GridPoint first = expand_grid(base)[0];
+  for (size_t i = 0; i < 6; ++i)
+    CHECK(point_scene_text(g, points[i], ImpactModel::ccm) ==
+          point_scene_text(base, first, ImpactModel::ccm));
+  const auto untitled = [](std::string text) {
+    const size_t a = text.find("title = "), b = text.find('\n', a);
+    return text.erase(a, b - a);
+  };
+  CHECK(untitled(point_scene_text(g, points[3], ImpactModel::rigid)) ==
+        untitled(point_scene_text(base, first, ImpactModel::rigid)));
 }
