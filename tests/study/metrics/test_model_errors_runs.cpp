@@ -1,7 +1,15 @@
-// The cumulative errors (eqs. 2.34-2.36, time averages: docs/metrics.md) of two real runs of a
-// small point, CCM and rigid, each run twice: at an output interval of 1 ms and of 0.5 ms. The
-// error must not follow the sampling: the two readings agree within 1 % (the criterion),
-// while the sum over samples as printed in the thesis doubles.
+// The cumulative errors (eqs. 2.34-2.36, time averages: docs/metrics.md) of real runs of a small
+// point, CCM and rigid, each run twice: at an output interval of 0.5 ms and of 0.25 ms (30 and 60
+// samples over the 15 ms after contact). The error must not follow the sampling: the two
+// readings agree within 1 % (the criterion), while the sum over samples as printed in
+// the thesis doubles.
+//
+// What is left is the trapezoidal rule's resolution of the histories, O(dt^2), not a dependence
+// on the rate. Measured (u_max; u_mean alike): 3.4796e-3, 3.3028e-3, 3.2543e-3, 3.2386e-3,
+// 3.2346e-3 at 2, 1, 0.5, 0.25, 0.125 ms, successive changes shrinking 3.6, 3.1 and 3.9 times per
+// halving; the runs themselves agree (u_max on a common 2 ms grid within 0.3 % across all five).
+// Between 1 and 0.5 ms (15 samples over the contact) the change is 1.5 %, between 0.5 and 0.25
+// ms 0.49 % (u_max), 0.56 % (u_mean), 0.02 % (KE): hence the pair used here.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -76,19 +84,21 @@ Errors errors_at(const char* output_interval) {
 
 }  // namespace
 
-TEST_CASE("cumulative errors of real runs do not follow the output interval",
-          "[metrics][heavy]") {
-  const Errors coarse = errors_at("1e-3");
-  const Errors fine = errors_at("5e-4");
-  INFO("1 ms: u_mean " << coarse.u_mean << ", u_max " << coarse.u_max << ", KE "
-                       << coarse.kinetic_energy << "; 0.5 ms: u_mean " << fine.u_mean
-                       << ", u_max " << fine.u_max << ", KE " << fine.kinetic_energy);
-  CHECK(coarse.samples == 21);
-  CHECK(fine.samples == 41);
+TEST_CASE("cumulative errors of real runs do not follow the output interval", "[metrics][heavy]") {
+  const Errors coarse = errors_at("5e-4");
+  const Errors fine = errors_at("2.5e-4");
+  INFO("0.5 ms: u_mean " << coarse.u_mean << ", u_max " << coarse.u_max << ", KE "
+                         << coarse.kinetic_energy << "; 0.25 ms: u_mean " << fine.u_mean
+                         << ", u_max " << fine.u_max << ", KE " << fine.kinetic_energy);
+  CHECK(coarse.samples == 41);
+  CHECK(fine.samples == 81);
   CHECK(coarse.u_max > 0.0);
   CHECK(relative_error(fine.u_mean, coarse.u_mean) < 0.01);
   CHECK(relative_error(fine.u_max, coarse.u_max) < 0.01);
   CHECK(relative_error(fine.kinetic_energy, coarse.kinetic_energy) < 0.01);
-  // The printed sum over samples roughly doubles with the samples (what the time average fixes).
+  // The printed sum over samples about doubles with the samples (what the time average fixes):
+  // measured 1.86, not 2, because the sum weighs its end samples fully, and the last is the
+  // largest difference.
+  INFO("printed sums " << coarse.printed_u_max << ", " << fine.printed_u_max);
   CHECK(fine.printed_u_max / coarse.printed_u_max > 1.8);
 }
