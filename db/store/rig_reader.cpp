@@ -108,13 +108,24 @@ std::optional<rig::ContactWindow> window(const Statement& s, int onset, int dura
   return rig::ContactWindow{s.column_double(onset), s.column_double(duration), true};
 }
 
+// The trials a run was scored on: those with per-trial metrics.
+std::vector<int> read_scored_trials(Connection& c, long long id) {
+  Statement s(c, "SELECT DISTINCT trial FROM rig_channel_metrics WHERE run_id = ?1 ORDER BY 1");
+  s.bind(1, id);
+  std::vector<int> out;
+  while (s.step()) out.push_back(static_cast<int>(s.column_int(0)));
+  return out;
+}
+
 std::optional<rig::CaseComparison> read_comparison(Connection& c, long long id) {
-  rig::CaseComparison k{read_channel(c, id, "velocity"),
-                        read_channel(c, id, "angle"),
-                        read_channel(c, id, "pressure"),
-                        {},
-                        std::nullopt,
-                        std::nullopt};
+  rig::CaseComparison k;
+  k.trials = read_scored_trials(c, id);
+  k.velocity = read_channel(c, id, "velocity");
+  k.angle = read_channel(c, id, "angle");
+  k.pressure = read_channel(c, id, "pressure");
+  // V_i in the contact windows: only its spread over the trials is stored (per_trial stays empty).
+  k.velocity_in_contact.rmse = read_spread(c, id, "velocity", "contact_window_rmse");
+  k.velocity_in_contact.nrmse = read_spread(c, id, "velocity", "contact_window_nrmse");
   if (k.velocity.per_trial.empty() && k.angle.per_trial.empty() && k.pressure.per_trial.empty())
     return std::nullopt;
   Statement s(c,

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <span>
 
@@ -121,9 +122,10 @@ void insert_spread(Connection& c, long long run, const char* channel, const char
   q.run();
 }
 
-// Over the trials: the simulation's error spread per channel, and the measurement's own spread.
+// Over the scored trials: the simulation's error spread per channel (V_i also inside the
+// measured contact windows); over every trial: the measurement's own spread.
 void insert_spreads(Connection& c, long long run, const RigRunRecord& r) {
-  const int n = static_cast<int>(r.trials.size());
+  const int n = static_cast<int>(r.comparison->trials.size());
   const std::array<std::pair<const char*, const rig::ChannelAgainstTrials*>, 3> channels = {
       std::pair{"velocity", &r.comparison->velocity}, std::pair{"angle", &r.comparison->angle},
       std::pair{"pressure", &r.comparison->pressure}};
@@ -132,6 +134,13 @@ void insert_spreads(Connection& c, long long run, const RigRunRecord& r) {
     insert_spread(c, run, name, "peak_error", a->peak_error, n);
     insert_spread(c, run, name, "peak_time_error", a->peak_time_error, n);
   }
+  const rig::ChannelInContact& in_contact = r.comparison->velocity_in_contact;
+  const int n_in_contact = static_cast<int>(std::count_if(
+      in_contact.per_trial.begin(), in_contact.per_trial.end(), [](const auto& p) { return p; }));
+  if (in_contact.rmse)
+    insert_spread(c, run, "velocity", "contact_window_rmse", *in_contact.rmse, n_in_contact);
+  if (in_contact.nrmse)
+    insert_spread(c, run, "velocity", "contact_window_nrmse", *in_contact.nrmse, n_in_contact);
   if (r.comparison->onset_error) {
     insert_spread(c, run, "contact", "onset_error", *r.comparison->onset_error, n);
     insert_spread(c, run, "contact", "duration_error", *r.comparison->duration_error, n);
@@ -160,7 +169,7 @@ void insert_contact(Connection& c, long long run, const RigRunRecord& r) {
   for (size_t k = 0; k < r.comparison->contact.size(); ++k) {
     const rig::ContactComparison& cc = r.comparison->contact[k];
     q.reset();
-    q.bind(1, run).bind(2, r.trials.at(k));
+    q.bind(1, run).bind(2, r.comparison->trials.at(k));
     q.bind(3, cc.measured ? std::optional(cc.measured->onset) : std::nullopt);
     q.bind(4, cc.measured ? std::optional(cc.measured->duration) : std::nullopt);
     q.bind(5, cc.simulated ? std::optional(cc.simulated->onset) : std::nullopt);
@@ -221,9 +230,10 @@ long long RigStore::record_run(const RigRunRecord& r) {
   Transaction transaction(*connection_);
   const long long run = insert_run_row(*connection_, r.row, current_provenance(""));
   if (r.comparison) {
-    insert_channel(*connection_, run, "velocity", r.comparison->velocity, r.trials);
-    insert_channel(*connection_, run, "angle", r.comparison->angle, r.trials);
-    insert_channel(*connection_, run, "pressure", r.comparison->pressure, r.trials);
+    const std::vector<int>& scored = r.comparison->trials;
+    insert_channel(*connection_, run, "velocity", r.comparison->velocity, scored);
+    insert_channel(*connection_, run, "angle", r.comparison->angle, scored);
+    insert_channel(*connection_, run, "pressure", r.comparison->pressure, scored);
     insert_spreads(*connection_, run, r);
     insert_contact(*connection_, run, r);
   }

@@ -42,7 +42,10 @@ struct RigRunRow {
 
 struct RigRunRecord {
   RigRunRow row;
-  std::vector<int> trials;  // trial numbers, in the order of the comparison's per-trial lists
+  // Every trial the run was read with, in the order of measured_channels; the comparison names
+  // the trials it scored (comparison->trials: all but an open-loop run's driving trial, unless
+  // asked for) and only those get per-trial rows.
+  std::vector<int> trials;
   std::optional<rig::CaseComparison> comparison;
   std::optional<rig::MeasuredSpread> measured;
   rig::RigChannels channels;  // as compared (sensor model applied)

@@ -62,6 +62,22 @@ ChannelComparison compare_channel(const TimeSeries& measured, const TimeSeries& 
   return c;
 }
 
+std::optional<ChannelComparison> compare_channel_within(const TimeSeries& measured,
+                                                        const TimeSeries& simulated, double t0,
+                                                        double t1) {
+  check_time_series(simulated, "simulated channel");
+  TimeSeries inside;
+  for (size_t k = 0; k < measured.t.size(); ++k) {
+    const double t = measured.t[k];
+    if (t >= t0 && t <= t1 && t >= simulated.t.front() && t <= simulated.t.back()) {
+      inside.t.push_back(t);
+      inside.value.push_back(measured.value[k]);
+    }
+  }
+  if (inside.t.size() < 2) return std::nullopt;
+  return compare_channel(inside, simulated);
+}
+
 std::optional<ContactWindow> first_contact(const TimeSeries& pressure, double threshold) {
   if (!(threshold > 0.0))
     throw std::invalid_argument(fmt::format("contact threshold must be > 0 (got {})", threshold));

@@ -29,6 +29,13 @@ struct ChannelComparison {
 // Throws std::invalid_argument when fewer than two measurement samples overlap the simulation.
 ChannelComparison compare_channel(const TimeSeries& measured, const TimeSeries& simulated);
 
+// The same on the measurement's samples inside [t0, t1] alone (both ends included; peaks and
+// the range of nRMSE are those inside it). None when fewer than two of them lie there and in the
+// simulated span.
+std::optional<ChannelComparison> compare_channel_within(const TimeSeries& measured,
+                                                        const TimeSeries& simulated, double t0,
+                                                        double t1);
+
 struct ContactWindow {
   double onset = 0.0;     // s
   double duration = 0.0;  // s

@@ -1,4 +1,4 @@
-// One measured benchtop trial, as read from its CSV (../shared/design/MEASUREMENTS_CSV.md):
+// One measured benchtop trial, as read from its CSV (docs/measurements.md):
 // one time series per sensor, each holding only the rows at which that sensor sampled.
 #pragma once
 

@@ -9,6 +9,7 @@
 
 #include "rig_models/cases/case_code.hpp"
 #include "rig_models/core/rig_error.hpp"
+#include "rig_models/measurement/clock_jump.hpp"
 #include "rig_models/measurement/csv_cells.hpp"
 
 namespace ccm::rig {
@@ -91,6 +92,7 @@ class TrialReader {
     }
     if (n_rows == 0) throw error(header_line, "", "header only: no data rows");
     require_samples(columns, header_line);
+    refuse_clock_jump(columns);
     identify_case();
     return std::move(trial_);
   }
@@ -172,6 +174,22 @@ class TrialReader {
                   fmt::format("no sensor value at {} s (every sensor cell is empty)", t));
     previous_time_ = t;
     previous_line_ = line.number;
+    row_times_.push_back(t);
+    row_lines_.push_back(line.number);
+  }
+
+  // A forward jump of the clock far beyond the file's sampling interval (clock_jump.hpp).
+  void refuse_clock_jump(const ColumnMap& columns) const {
+    const auto jump = find_clock_jump(row_times_);
+    if (!jump) return;
+    const size_t k = jump->row;
+    throw error(row_lines_[k], column_label(columns, columns.index[0]),
+                fmt::format("time jumps by {:.6g} s, from {} s (line {}) to {} s: {:.3g} times "
+                            "the file's median step between rows ({:.3g} s; the limit is {:g} "
+                            "times). A logger clock glitch? Correct the timestamps or cut the "
+                            "file at the jump",
+                            jump->step, row_times_[k - 1], row_lines_[k - 1], row_times_[k],
+                            jump->step / jump->median_step, jump->median_step, kClockJumpFactor));
   }
 
   double read_time(const Line& line, const ColumnMap& columns, std::string_view cell) const {
@@ -261,6 +279,8 @@ class TrialReader {
   std::map<std::string, int> metadata_line_;
   double previous_time_ = 0.0;
   int previous_line_ = 0;
+  std::vector<double> row_times_;  // of every data row, with its line number
+  std::vector<int> row_lines_;
 };
 
 }  // namespace

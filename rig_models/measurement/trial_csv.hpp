@@ -1,10 +1,11 @@
-// Reading a measured trial CSV (../shared/design/MEASUREMENTS_CSV.md). Accepts CRLF line
+// Reading a measured trial CSV (docs/measurements.md). Accepts CRLF line
 // endings, a UTF-8 byte-order mark, blank lines, columns in any order and unknown extra
 // columns (ignored, with a warning). Refuses with RigInputError, naming file, line and
 // column: an empty or header-only file, a wrong delimiter, a missing or repeated column, a
 // row with the wrong number of cells, a non-numeric cell, a non-finite number, an empty time,
-// time going backwards or repeating, a row where no sensor sampled, a sensor with no sample
-// at all, and a case code or trial number the metadata and the file name disagree on.
+// time going backwards or repeating, a forward jump of the clock beyond 100 times the file's
+// median step between rows (clock_jump.hpp), a row where no sensor sampled, a sensor with no
+// sample at all, and a case code or trial number the metadata and the file name disagree on.
 #pragma once
 
 #include <filesystem>

@@ -4,11 +4,13 @@
 // node's lumped nodal mass ... projected along the axis of motion of the impactor" and summed
 // over the sensor surface Gamma_s:
 //   F_c = sum_{j in Gamma_s} m_j (v_j,after - v_j,before) . d / dt          (EQUATIONS.md)
-// A contact model decorator: it forwards every call to the model it wraps and, around its
-// correction, reads the velocities of the sensor's nodes. It keeps the running impulse
-// sum_steps F_c dt, so that a sampler can report the mean force over each output interval
-// (a step-by-step F_c aliases at any output rate below the step rate). The wrapped model is not
-// touched: no accessor into the DCR is needed.
+// A contact model decorator: it forwards every hook of ContactModel (all nine, the figures the
+// monitor checks included: a dropped injected_energy would switch off the contact-energy check
+// in every rig run) to the model it wraps and, around its correction, reads the velocities of
+// the sensor's nodes. It keeps the running impulse sum_steps F_c dt, so that a sampler can
+// report the mean force over each output interval (a step-by-step F_c aliases at any output
+// rate below the step rate). The wrapped model is not touched: no accessor into the DCR is
+// needed.
 #pragma once
 
 #include <vector>
@@ -29,6 +31,8 @@ class ContactProbe : public ContactModel {
   void end_step(const State& s, double dt) override { inner_.end_step(s, dt); }
   double stable_dt_limit(const State& s) const override { return inner_.stable_dt_limit(s); }
   double work() const override { return inner_.work(); }
+  // Forwarded like every other hook: the monitor's contact-energy check reads it.
+  double injected_energy() const override { return inner_.injected_energy(); }
   std::string failure() const override { return inner_.failure(); }
 
   // sum over the steps so far of F_c dt [N s], along the axis.

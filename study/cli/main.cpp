@@ -38,6 +38,9 @@ void add_rig_options(CLI::App* app, ccm::RigCommonArgs& a) {
   app->add_option("--set", a.set,
                   "Run parameter name=value (mu_s, mu_k, track_friction, track_damping, "
                   "spring_stiffness); repeatable");
+  app->add_flag("--score-drive-trial", a.score_drive_trial,
+                "Open loop: score the run on the trial that drives it too (left out by default: "
+                "its V_i before contact and its contact onset are the run's input)");
   app->add_option("--cases", a.cases, "Case file (TOML)")->capture_default_str();
   app->add_option("--geometry", a.geometry, "Rig geometry file (TOML)")->capture_default_str();
   app->add_option("--out,-o", a.out,

@@ -1,7 +1,8 @@
 // `ccm rig calibrate`: read and check every input, then a derivative-free bounded search
-// (rig_models/calibrate/bounded_search.hpp) of the named parameters against every measured
-// trial of the case; the starting and the best run are stored with their comparisons, the
-// calibration with its parameters and every evaluation, and before/after are printed.
+// (rig_models/calibrate/bounded_search.hpp) of the named parameters against the measured trials
+// the run is scored on (all but the open-loop drive's, unless --score-drive-trial); the starting
+// and the best run are stored with their comparisons, the calibration with its parameters and every
+// evaluation, and before/after are printed.
 #include <fmt/format.h>
 
 #include <charconv>
@@ -105,6 +106,11 @@ int calibrate(const RigCalibrateArgs& args) {
   const RigInputs in = read_rig_inputs(common);
   if (in.trials.empty())
     throw std::invalid_argument("calibration fits the measured trials: give --data DIR");
+  if (in.scored.empty())
+    throw std::invalid_argument(fmt::format(
+        "--data {}: {} has no trial but trial {}, which drives the run: a calibration on it "
+        "would fit the run's own input; add trials, or --score-drive-trial to fit it anyway",
+        common.data->string(), in.rig_case->code, *in.left_out));
   if (args.max_evaluations < 1 || args.max_evaluations > 500)
     throw std::invalid_argument("--max-evals must lie in [1, 500]");
   const std::vector<rig::SearchParameter> params = search_parameters(args, in);
@@ -139,8 +145,7 @@ int calibrate(const RigCalibrateArgs& args) {
   };
   if (!common.quiet)
     fmt::print("ccm rig calibrate {} ({} drive): {} of {}\n", in.rig_case->code, name_of(in.drive),
-               rig::kObjectiveName,
-               in.trials.size() == 1 ? "1 trial" : fmt::format("{} trials", in.trials.size()));
+               rig::kObjectiveName, scored_trials_text(in));
   const rig::SearchResult result =
       rig::bounded_search(params, objective, {args.max_evaluations, 1e-3});
   const RigRunOutcome& before = first_and_best[0];

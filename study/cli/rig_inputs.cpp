@@ -9,6 +9,7 @@
 
 #include "rig_models/cases/case_code.hpp"
 #include "rig_models/cases/case_file.hpp"
+#include "rig_models/compare/case_comparison.hpp"
 #include "rig_models/core/rig_error.hpp"
 #include "rig_models/geometry/geometry_file.hpp"
 #include "rig_models/measurement/trial_folder.hpp"
@@ -78,6 +79,19 @@ void read_trials(const RigCommonArgs& args, RigInputs& in) {
   in.data_hash = study::fnv1a64(bytes);
 }
 
+// The open-loop drive's trial is the run's input (its V_i before contact and its contact onset
+// are matched by construction, rig_models/compare/case_comparison.hpp): left out of the scores
+// unless --score-drive-trial. A physical run has no driving trial and is scored on every trial.
+void choose_scored_trials(const RigCommonArgs& args, RigInputs& in) {
+  const bool open_loop = in.drive == rig::DriveKind::open_loop;
+  if (args.score_drive_trial && !open_loop)
+    throw std::invalid_argument(
+        "--score-drive-trial: only an open-loop run has a driving trial (a physical run is "
+        "scored on every trial)");
+  if (open_loop && in.drive_trial && !args.score_drive_trial) in.left_out = in.drive_trial->trial;
+  in.scored = rig::scored_trials(in.trials, in.left_out);
+}
+
 void check_out(const std::optional<fs::path>& out) {
   if (!out) return;
   std::error_code ec;
@@ -115,6 +129,7 @@ RigInputs read_rig_inputs(const RigCommonArgs& args) {
     throw std::invalid_argument(
         "the open-loop drive (the default) follows a measured trial: give --data DIR (and "
         "--trial N), or use --drive physical");
+  choose_scored_trials(args, in);
   check_out(args.out);
   in.cases_hash = study::fnv1a64(in.cases_text);
   in.geometry_hash = study::fnv1a64(in.geometry_text);

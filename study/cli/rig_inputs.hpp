@@ -23,7 +23,8 @@ struct RigCommonArgs {
   std::string drive = "open-loop";
   std::optional<double> start, end;  // s, trial time
   double mesh_scale = 1.0;
-  std::vector<std::string> set;  // name=value run parameters
+  std::vector<std::string> set;    // name=value run parameters
+  bool score_drive_trial = false;  // open loop: score the run on its driving trial too
   std::filesystem::path cases = CCM_RIG_CASES;
   std::filesystem::path geometry = CCM_RIG_GEOMETRY;
   std::optional<std::filesystem::path> out;
@@ -41,6 +42,10 @@ struct RigInputs {
   rig::DriveKind drive = rig::DriveKind::open_loop;
   std::vector<rig::MeasuredTrial> trials;  // of this case, in trial order; empty without data
   const rig::MeasuredTrial* drive_trial = nullptr;
+  // The trials the run is scored on: every trial but the open-loop drive's (unless
+  // --score-drive-trial), in trial order; the trial left out, if one is.
+  std::vector<rig::MeasuredTrial> scored;
+  std::optional<int> left_out;
   rig::RunParameters parameters;
   std::string cases_hash, geometry_hash, data_hash;
   std::filesystem::path db;  // --db, else <out>/rig.sqlite, else ./rig.sqlite

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <fstream>
 #include <stdexcept>
 
@@ -30,18 +32,57 @@ std::string instability(const Instability& i) {
   return s;
 }
 
+// summary.toml's [comparison]: which trials scored the run and each channel's mean RMSE and
+// nRMSE over them, V_i also inside the measured contact windows.
+std::string comparison_toml(const RigInputs& in, const RigRunOutcome& o) {
+  std::vector<int> scored;
+  for (const rig::MeasuredTrial& m : in.scored) scored.push_back(m.trial);
+  std::string t = fmt::format("\n[comparison]\nscored_trials = [{}]\n", fmt::join(scored, ", "));
+  if (in.left_out) t += fmt::format("left_out_trial = {}\n", *in.left_out);
+  if (!o.comparison) return t;
+  const rig::CaseComparison& c = *o.comparison;
+  const std::array<std::pair<const char*, const rig::ChannelAgainstTrials*>, 3> channels = {
+      std::pair{"velocity", &c.velocity}, std::pair{"angle", &c.angle},
+      std::pair{"pressure", &c.pressure}};
+  for (const auto& [name, a] : channels) {
+    t += fmt::format("{}_rmse = {}\n", name, toml_float(a->rmse.mean));
+    if (const auto n = rig::mean_nrmse(*a))
+      t += fmt::format("{}_nrmse = {}\n", name, toml_float(*n));
+  }
+  const rig::ChannelInContact& vc = c.velocity_in_contact;
+  if (vc.rmse) t += fmt::format("velocity_in_contact_rmse = {}\n", toml_float(vc.rmse->mean));
+  if (vc.nrmse) t += fmt::format("velocity_in_contact_nrmse = {}\n", toml_float(vc.nrmse->mean));
+  return t;
+}
+
 }  // namespace
+
+std::string scored_trials_text(const RigInputs& in) {
+  std::vector<int> numbers;
+  for (const rig::MeasuredTrial& m : in.scored) numbers.push_back(m.trial);
+  std::string t = numbers.empty() ? "no trial"
+                                  : fmt::format("{} {}", numbers.size() == 1 ? "trial" : "trials",
+                                                fmt::join(numbers, ", "));
+  if (in.left_out)
+    t += fmt::format(" (trial {} drives the run and is left out; --score-drive-trial scores it)",
+                     *in.left_out);
+  else if (in.drive == rig::DriveKind::open_loop && in.drive_trial)
+    t += fmt::format(" (trial {} drives the run and is scored: --score-drive-trial)",
+                     in.drive_trial->trial);
+  return t;
+}
 
 void compare_with_trials(const RigInputs& in, RigRunOutcome& o) {
   // A run that went unstable early may hold too few samples to compare (metrics need two
   // measured samples inside the simulated span of every channel): then it is not compared.
+  // It is scored on in.scored; the trials' own spread is that of every trial.
   const rig::RigChannels& ch = o.result.channels;
-  if (in.trials.empty()) return;
+  if (in.scored.empty()) return;
   for (const rig::TimeSeries* s :
        {&ch.impactor_velocity_mps, &ch.artifact_angle_deg, &ch.pressure_kpa})
     if (s->t.size() < 2) return;
   const double threshold = in.cases.rig.sensor_deadband.value;
-  o.comparison = rig::compare_case(in.trials, o.result.channels, threshold);
+  o.comparison = rig::compare_case(in.scored, o.result.channels, threshold);
   o.measured = rig::measured_spread(in.trials, threshold);
   o.objective = rig::calibration_objective(*o.comparison);
 }
@@ -97,15 +138,15 @@ std::string run_table(const RigInputs& in, const RigRunOutcome& o) {
 }
 
 std::string comparison_table(const RigInputs& in, const RigRunOutcome& o) {
+  if (in.trials.empty()) return {};
+  if (in.scored.empty()) return fmt::format("  not scored: {}\n", scored_trials_text(in));
   if (!o.comparison)
-    return in.trials.empty() ? std::string()
-                             : "  not compared: the run holds fewer than two measured "
-                               "timestamps of a channel\n";
+    return "  not compared: the run holds fewer than two measured timestamps of a channel\n";
   const rig::CaseComparison& c = *o.comparison;
   const rig::MeasuredSpread& m = *o.measured;
   std::string t = fmt::format(
-      "Simulation against each of {} trials (mean +- sample std. dev. over the trials)\n",
-      in.trials.size());
+      "Simulation scored on {}: mean +- sample std. dev. over them; trial spread over all {}\n",
+      scored_trials_text(in), in.trials.size());
   t += fmt::format("  {:<8} {:<4} {:>20} {:>7} {:>10} {:>20} {:>20} {:>18} {:>13}\n", "channel",
                    "unit", "RMSE", "nRMSE", "peak sim", "peak measured", "peak error",
                    "peak time err [s]", "trial spread");
@@ -122,12 +163,24 @@ std::string comparison_table(const RigInputs& in, const RigRunOutcome& o) {
                      a->per_trial.front().peak_simulated, pm(spread->peak), pm(a->peak_error),
                      pm(a->peak_time_error, "{:.4f}"), spread->spread_rms);
   }
+  const rig::ChannelInContact& vc = c.velocity_in_contact;
+  const auto n_windows = std::count_if(vc.per_trial.begin(), vc.per_trial.end(),
+                                       [](const auto& p) { return p.has_value(); });
+  if (vc.rmse)
+    t += fmt::format(
+        "  V_i inside each trial's measured contact window alone: RMSE {} m/s, nRMSE {} ({} of "
+        "{} trials)\n",
+        pm(*vc.rmse), vc.nrmse ? fmt::format("{:.3f}", vc.nrmse->mean) : "-", n_windows,
+        vc.per_trial.size());
+  else
+    t += "  V_i inside the contact windows: none (no measured contact with two V_i samples)\n";
   if (c.onset_error)
     t += fmt::format(
         "  contact onset error {} s, duration error {} s ({} trials with contact in "
         "both)\n",
         pm(*c.onset_error, "{:.4f}"), pm(*c.duration_error, "{:.4f}"),
-        c.onset_error ? std::to_string(c.contact.size()) : "0");
+        std::count_if(c.contact.begin(), c.contact.end(),
+                      [](const rig::ContactComparison& k) { return k.onset_error.has_value(); }));
   else
     t += "  contact: none in the simulation's sensed pressure or in the trials\n";
   if (m.onset)
@@ -242,6 +295,7 @@ void write_run_files(const fs::path& out, const RigInputs& in, const RigRunOutco
   if (s.verdict == Verdict::unstable)
     t += fmt::format("instability = {}\n", toml_string(instability(s.instability)));
   if (o.objective) t += fmt::format("objective = {}\n", toml_float(*o.objective));
+  if (!in.trials.empty()) t += comparison_toml(in, o);
   write_atomic(out / "summary.toml", t);
 }
 

@@ -1,6 +1,7 @@
 // What the rig commands print, write and store for one rig simulation: the run table (model,
 // steps, time step, wall time, energy balance, verdict), the comparison table (per channel, the
-// simulation against every trial and the trials' own spread), the files of --out
+// simulation against each trial it is scored on, V_i also inside the measured contact windows,
+// and the trials' own spread), the files of --out
 // (channels.csv, history.csv, summary.toml, each written whole or not at all) and the store's
 // record.
 #pragma once
@@ -27,8 +28,12 @@ struct RigRunOutcome {
   std::string started_at, ended_at;
 };
 
-// Compares the run with every trial of the inputs (none without data).
+// Compares the run with the trials it is scored on (in.scored; none without data) and measures
+// the spread of every trial.
 void compare_with_trials(const RigInputs& in, RigRunOutcome& outcome);
+
+// "trials 1, 3 (trial 2 drives the run and is left out; ...)": which trials score the run.
+std::string scored_trials_text(const RigInputs& in);
 
 std::string run_table(const RigInputs& in, const RigRunOutcome& outcome);
 std::string comparison_table(const RigInputs& in, const RigRunOutcome& outcome);

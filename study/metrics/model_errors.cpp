@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace ccm::study {
 
@@ -17,8 +18,25 @@ void require_paired(std::span<const double> ccm, std::span<const double> rigid) 
                                 std::to_string(rigid.size()) + " samples)");
 }
 
-double mean(std::span<const double> x) {
-  return std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
+void require_times(std::span<const double> time, std::size_t n) {
+  if (time.size() != n || n < 2)
+    throw std::invalid_argument(
+        "cumulative error needs at least two samples and one time per "
+        "sample (" +
+        std::to_string(time.size()) + " times, " + std::to_string(n) + " samples)");
+  for (std::size_t i = 1; i < n; ++i)
+    if (!(time[i] > time[i - 1]))
+      throw std::invalid_argument("cumulative error: sample times must increase (sample " +
+                                  std::to_string(i) + ")");
+}
+
+// (1 / (t_N - t_0)) int g dt by the trapezoidal rule over the sample times.
+template <typename G>
+double time_average(std::span<const double> time, G g) {
+  double integral = 0.0;
+  for (std::size_t i = 1; i < time.size(); ++i)
+    integral += 0.5 * (g(i - 1) + g(i)) * (time[i] - time[i - 1]);
+  return integral / (time.back() - time.front());
 }
 
 double max_abs(std::span<const double> x) {
@@ -29,15 +47,25 @@ double max_abs(std::span<const double> x) {
 
 }  // namespace
 
-double cumulative_error(std::span<const double> ccm, std::span<const double> rigid) {
+double cumulative_error(std::span<const double> time, std::span<const double> ccm,
+                        std::span<const double> rigid) {
   require_paired(ccm, rigid);
-  double sum_sq = 0.0;  // numerator of 2.34-2.36
-  for (std::size_t i = 0; i < ccm.size(); ++i) sum_sq += (ccm[i] - rigid[i]) * (ccm[i] - rigid[i]);
-  const double mean_of_means = 0.5 * (mean(ccm) + mean(rigid));
-  if (sum_sq == 0.0) return 0.0;
+  require_times(time, ccm.size());
+  // numerator of 2.34-2.36, as a time average
+  const double mean_sq =
+      time_average(time, [&](std::size_t i) { return (ccm[i] - rigid[i]) * (ccm[i] - rigid[i]); });
+  const double mean_of_means = 0.5 * (time_average(time, [&](std::size_t i) { return ccm[i]; }) +
+                                      time_average(time, [&](std::size_t i) { return rigid[i]; }));
+  if (mean_sq == 0.0) return 0.0;
   if (mean_of_means == 0.0)
     throw std::domain_error("cumulative error: the two histories have zero combined mean");
-  return sum_sq / mean_of_means;
+  return mean_sq / mean_of_means;
+}
+
+double cumulative_error(std::span<const double> ccm, std::span<const double> rigid) {
+  std::vector<double> index(ccm.size());
+  std::iota(index.begin(), index.end(), 0.0);
+  return cumulative_error(index, ccm, rigid);
 }
 
 double final_state_error(std::span<const double> ccm, std::span<const double> rigid) {

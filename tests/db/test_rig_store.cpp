@@ -98,6 +98,36 @@ TEST_CASE("rig store: a run is written whole and read back", "[db][rig-store]") 
   CHECK(test::integrity_check(c) == "ok");
 }
 
+TEST_CASE("rig store: a run scored on some trials stores those by number, every trial's samples",
+          "[db][rig-store]") {
+  // Trial 2 drove the run and is left out of the scores: the per-trial rows are trial 1's alone
+  // (under its own number), the measured samples are both trials', V_i in contact is stored.
+  test::ScratchDir dir("rig-scored");
+  db::RigStore store(dir / "rig.sqlite");
+  db::RigRunRecord r = record();
+  const std::vector<rig::MeasuredTrial> scored{trial(1, 1.0)};
+  r.comparison = rig::compare_case(scored, r.channels, 1.0);
+  REQUIRE(r.comparison->velocity_in_contact.rmse);
+  const long long id = store.record_run(r);
+  db::Connection& c = store.connection();
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_channel_metrics WHERE trial = 1") == 3);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_channel_metrics WHERE trial = 2") == 0);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_contact") == 1);
+  CHECK(test::count_rows(c, "SELECT count(DISTINCT trial) FROM rig_measured_samples") == 2);
+  CHECK(test::count_rows(c,
+                         "SELECT count(*) FROM rig_channel_spread WHERE channel = 'velocity' "
+                         "AND metric IN ('contact_window_rmse', 'contact_window_nrmse') AND "
+                         "n = 1") == 2);
+  const db::RigRunRecord b = db::load_rig_run(c, id).record;
+  CHECK(b.trials == std::vector<int>{1, 2});
+  REQUIRE(b.comparison);
+  CHECK(b.comparison->trials == std::vector<int>{1});
+  REQUIRE(b.comparison->velocity_in_contact.rmse);
+  CHECK(b.comparison->velocity_in_contact.rmse->mean ==
+        r.comparison->velocity_in_contact.rmse->mean);
+  CHECK(b.measured->n_trials == 2);
+}
+
 TEST_CASE("rig store: a run reads back as written, the trials cut to the run window",
           "[db][rig-store]") {
   test::ScratchDir dir("rig-read");

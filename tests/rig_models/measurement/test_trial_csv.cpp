@@ -1,15 +1,18 @@
-// The measured-CSV reader (../shared/design/MEASUREMENTS_CSV.md): a good file gives one
+// The measured-CSV reader (docs/measurements.md): a good file gives one
 // series per sensor; every defect class of the spec is refused with the exact message, naming
 // file, line and column.
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "rig_models/core/rig_error.hpp"
+#include "rig_models/measurement/clock_jump.hpp"
 #include "rig_models/measurement/trial_csv.hpp"
 
 namespace fs = std::filesystem;
@@ -127,6 +130,45 @@ TEST_CASE("trial CSV: time going backwards or repeating", "[rig]") {
         "(line 5)");
   CHECK(error_of(with(kGood, "0.010,0.12,,", ",0.12,,")) ==
         "RX025_t2.csv:6: column 1 (time_s): empty time cell");
+}
+
+TEST_CASE("trial CSV: a forward jump of the clock (a logger glitch) is refused", "[rig]") {
+  // 40 rows every 10 ms, then the logger's clock jumps by +1000 s from the 31st row (line 34:
+  // two metadata lines and the header come first) and runs on.
+  std::string text =
+      "# case: RX025\n# trial: 2\n"
+      "time_s,impactor_velocity_mps,artifact_angle_deg,pressure_kpa\n";
+  for (int k = 0; k < 40; ++k)
+    text += fmt::format("{},0.1,0.0,0\n", 0.01 * k + (k >= 30 ? 1000.0 : 0.0));
+  CHECK(error_of(text) ==
+        "RX025_t2.csv:34: column 1 (time_s): time jumps by 1000.01 s, from 0.29 s (line 33) to "
+        "1000.3 s: 1e+05 times the file's median step between rows (0.01 s; the limit is 100 "
+        "times). A logger clock glitch? Correct the timestamps or cut the file at the jump");
+  // Without the glitch the same file is good; a gap of 50 missed samples (0.5 s) is a dropout,
+  // not a glitch: it stays under the limit and is read.
+  std::string dropout = "time_s,impactor_velocity_mps,artifact_angle_deg,pressure_kpa\n";
+  for (int k = 0; k < 40; ++k)
+    dropout += fmt::format("{},0.1,0.0,0\n", 0.01 * k + (k >= 30 ? 0.5 : 0.0));
+  CHECK(parse_trial_csv(dropout, kName).pressure_kpa.t.size() == 40);
+}
+
+TEST_CASE("clock jump: the first step beyond the factor times the median row step", "[rig]") {
+  // Steps 1, 1, 2, 1, 250, 1: median 1; 250 > 100 (row 5); at a factor of 300 none.
+  const std::vector<double> t = {0.0, 1.0, 2.0, 4.0, 5.0, 255.0, 256.0};
+  const auto jump = find_clock_jump(t);
+  REQUIRE(jump);
+  CHECK(jump->row == 5);
+  CHECK(jump->step == 250.0);
+  CHECK(jump->median_step == 1.0);
+  CHECK_FALSE(find_clock_jump(t, 300.0));
+  // Multi-rate rows (100 Hz and 128 Hz merged, as in the dev trials) are far from the limit.
+  std::vector<double> merged;
+  for (int k = 0; k <= 60; ++k) merged.push_back(0.01 * k);
+  for (int k = 1; k <= 76; ++k) merged.push_back(k / 128.0);
+  std::sort(merged.begin(), merged.end());
+  merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+  CHECK_FALSE(find_clock_jump(merged, 10.0));
+  CHECK_FALSE(find_clock_jump(std::vector<double>{0.0, 1000.0}));  // two rows: no median
 }
 
 TEST_CASE("trial CSV: an empty or header-only file", "[rig]") {

@@ -16,12 +16,13 @@ TEST_CASE("point metrics of two synthetic runs match the hand computation", "[me
       compute_point_metrics(synthetic_run(ImpactModel::ccm), synthetic_run(ImpactModel::rigid));
   REQUIRE(m.usable);
   CHECK(m.t_final == 0.15);
-  // u_mean: diffs 0,0,1,2 -> 5; means 1.25, 2 -> 1.625        (2.34)
-  CHECK(relative_error(m.cumulative.u_mean, 5.0 / 1.625) < kRounding);
-  // u_max: diffs 0,0,1,3 -> 10; means 2.25, 3.25 -> 2.75       (2.35)
-  CHECK(relative_error(m.cumulative.u_max, 10.0 / 2.75) < kRounding);
-  // KE: diffs 0,0,2,3 -> 13; means 1.75, 3 -> 2.375            (2.36)
-  CHECK(relative_error(m.cumulative.kinetic_energy, 13.0 / 2.375) < kRounding);
+  // Cumulative errors as time averages (trapezoids on the uniform samples, docs/metrics.md):
+  // u_mean: (c-r)^2 0,0,1,4 -> <.> = 3/3 = 1; <c> 4/3, <r> 2 -> 5/3; 1 / (5/3)      (2.34)
+  CHECK(relative_error(m.cumulative.u_mean, 0.6) < kRounding);
+  // u_max: (c-r)^2 0,0,1,9 -> 5.5/3; <c> 2.5, <r> 10/3 -> 35/12; 22/35              (2.35)
+  CHECK(relative_error(m.cumulative.u_max, 22.0 / 35.0) < kRounding);
+  // KE: (c-r)^2 0,0,4,9 -> 8.5/3; <c> 6.5/3, <r> 10/3 -> 2.75; 34/33                (2.36)
+  CHECK(relative_error(m.cumulative.kinetic_energy, 34.0 / 33.0) < kRounding);
   // final: |2-4|/4, |3-6|/6, |1-4|/4                          (2.37-2.39)
   CHECK(relative_error(m.final_state.u_mean, 0.5) < kRounding);
   CHECK(relative_error(m.final_state.u_max, 0.5) < kRounding);
