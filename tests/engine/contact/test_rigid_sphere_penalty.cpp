@@ -423,12 +423,18 @@ TEST_CASE("rigid sphere penalty: the stable step limit", "[contact][rigid_penalt
     RigidSpherePenalty with_dashpot(boundary(model, "tet"), damped);
     CHECK(test::relative_error(with_dashpot.stable_dt_limit(s), (std::sqrt(2.0) - 1.0) * expected) <
           1e-14);
-    // Far away and at rest: no limit. Far away and approaching: the time to come within reach.
+    // Far away and at rest: no limit. Far away and approaching: the time to come within reach
+    // (docs/contact-time-step.md): gap - 0.1 R at 2 m/s, or, falling from rest under gravity,
+    // g tau^2 / 2 = gap - 0.1 R.
     RigidSpherePenalty far(boundary(model, "tet"), on_q0(1.0, 0.0));
     CHECK(std::isinf(far.stable_dt_limit(s)));
+    const double reach = 1.0 - kTetR - 0.1 * kTetR;
     RigidSpherePenalty coming(boundary(model, "tet"), on_q0(1.0, -2.0));
-    const double tau = (1.0 - kTetR - 0.1 * kTetR) / (2.0 * 2.0);
-    CHECK(test::relative_error(coming.stable_dt_limit(s), tau) < 1e-12);
+    CHECK(test::relative_error(coming.stable_dt_limit(s), reach / 2.0) < 1e-12);
+    RigidSpherePenaltyParams dropped = on_q0(1.0, 0.0);
+    dropped.gravity = Vec3(0.0, 0.0, -9.81);
+    RigidSpherePenalty falling(boundary(model, "tet"), dropped);
+    CHECK(test::relative_error(falling.stable_dt_limit(s), std::sqrt(2.0 * reach / 9.81)) < 1e-12);
   }
 
   SECTION("a huge K_P shortens the step of a run, which stays stable") {
