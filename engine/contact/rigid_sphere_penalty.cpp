@@ -27,9 +27,11 @@ constexpr std::array<double, 3> shape_at(int k) {
   return N;
 }
 
-// Margin of the stable-step search (see stable_dt_limit): points closer to the sphere's surface
-// than this fraction of R always count as touching.
-constexpr double kReachMargin = 0.1;
+// The stable-step search's safety (see stable_dt_limit, docs/contact-time-step.md): a point counts
+// when twice the predictor's reach bound could bring it within kRoundOffMargin R of the sphere's
+// surface within the step; points closer than that always count.
+constexpr double kReachSafety = 2.0;
+constexpr double kRoundOffMargin = 1e-6;
 
 }  // namespace
 
@@ -244,14 +246,14 @@ double RigidSpherePenalty::limit_from(double node_term, int n_points) const {
 // a_s, so no point's distance from the sphere's centre falls by more than
 //   b(h) = h v_rel + h^2/2 a_rel,  v_rel = |v_s| + max |v_a|,  a_rel = |a_s| + max |a_a|
 // (maxima over the surface nodes, at the start of the step). A point counts when it is within
-// kReachMargin R of the sphere's surface now, or when b(L) reaches that far for the step L being
-// returned, i.e. its reach time tau (b(tau) = gap - kReachMargin R) is below L. A counted point
-// brings the nodes of its triangle into the node term. The limit is the largest L with
-// L <= f(S(L)), S(L) the points with tau < L and f the bound of a set; f falls as S grows, so the
-// points are taken in the order of tau until the next one cannot arrive within the current L, or
-// until taking it would cut L below its own tau (then the step ends at that tau, before the
-// point can arrive). Far from contact the limit is thus infinite or the time the sphere needs to
-// come within reach: the penalty costs nothing until it can act.
+// kRoundOffMargin R of the sphere's surface now, or when kReachSafety b(L) reaches that far for
+// the step L being returned, i.e. its reach time tau (kReachSafety b(tau) = gap - kRoundOffMargin
+// R) is below L. A counted point brings the nodes of its triangle into the node term. The limit
+// is the largest L with L <= f(S(L)), S(L) the points with tau < L and f the bound of a set; f
+// falls as S grows, so the points are taken in the order of tau until the next one cannot arrive
+// within the current L, or until taking it would cut L below its own tau (then the step ends at
+// that tau, before the point can arrive). Far from contact the limit is thus infinite or the
+// time the sphere needs to come within reach: the penalty costs nothing until it can act.
 double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   // The squared distances of the points from the sphere's centre: those add_forces computed,
   // when they are of this state (the engine asks for the limit of a step after the evaluation
@@ -269,15 +271,16 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   }
 
   const double R = params_.sphere.radius;
-  const double near = (1.0 + kReachMargin) * R;  // closer than this: the point counts
+  const double near = (1.0 + kRoundOffMargin) * R;  // closer than this: the point counts
   const double near2 = near * near;
   double v_max = 0.0, a_max = 0.0;
   for (int n : nodes_) {
     v_max = std::max(v_max, state.v[static_cast<size_t>(n)].squaredNorm());
     a_max = std::max(a_max, state.a[static_cast<size_t>(n)].squaredNorm());
   }
-  const double v_rel = v_s_.norm() + std::sqrt(v_max);
-  const double a_rel = a_s_.norm() + std::sqrt(a_max);
+  // The reach bound with its safety factor: kReachSafety b(h) = h v_rel + h^2/2 a_rel.
+  const double v_rel = kReachSafety * (v_s_.norm() + std::sqrt(v_max));
+  const double a_rel = kReachSafety * (a_s_.norm() + std::sqrt(a_max));
 
   double A = 0.0;  // max_a K_P s_a / m_a over the nodes of the counted points' triangles
   int n_points = 0;

@@ -487,14 +487,14 @@ double DcrContact::stable_dt_limit(const State& state) const {
   return std::max(limit, bodies_reach_time(state));
 }
 
-// Without self-contact: the shortest time in which two bodies' surfaces can come within the
-// proximity distance plus step_fraction of the shortest edge of each other (0 when they are that
-// close now; with self-contact always 0). Over a step h the predictor moves a node by
-// h v_a + h^2/2 a_a, so each body's surface stays inside its box at t_n grown by
-// b(h) = h max|v| + h^2/2 max|a| (its nodes' maxima) on every axis, and the largest per-axis gap
-// between two boxes falls by at most b_A(h) + b_B(h). A contact (a CCD hit or a node within
-// the proximity distance of a face) needs that gap below the proximity distance: none can
-// arise within the time returned (docs/contact-time-step.md, "DCR").
+// Without self-contact: the shortest time in which two bodies' surfaces could come within the
+// proximity distance plus step_fraction of the shortest edge of each other, at twice the
+// predictor's reach (0 when they are that close now; with self-contact always 0). Over a step h
+// the predictor moves a node by h v_a + h^2/2 a_a, so each body's surface stays inside its box
+// at t_n grown by b(h) = h max|v| + h^2/2 max|a| (its nodes' maxima) on every axis, and the
+// largest per-axis gap between two boxes falls by at most b_A(h) + b_B(h). A contact (a CCD hit
+// or a node within the proximity distance of a face) needs that gap below the proximity
+// distance: none can arise within the time returned (docs/contact-time-step.md, "DCR").
 double DcrContact::bodies_reach_time(const State& state) const {
   if (settings_.self_contact) return 0.0;
   struct Reach {
@@ -520,7 +520,8 @@ double DcrContact::bodies_reach_time(const State& state) const {
       const Eigen::Vector3d gaps = (A.box.min() - B.box.max()).cwiseMax(B.box.min() - A.box.max());
       const double s = gaps.maxCoeff() - near;
       if (!(s > 0.0)) return 0.0;
-      const double v = A.v + B.v, a = A.a + B.a;
+      constexpr double kReachSafety = 2.0;  // as the rigid penalty's
+      const double v = kReachSafety * (A.v + B.v), a = kReachSafety * (A.a + B.a);
       if (!(v > 0.0 || a > 0.0)) continue;
       // b(tau) = s: the root of a/2 tau^2 + v tau = s without cancellation.
       tau_min = std::min(tau_min, 2.0 * s / (v + std::sqrt(v * v + 2.0 * a * s)));

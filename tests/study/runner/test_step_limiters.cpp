@@ -19,7 +19,7 @@ using namespace ccm::study;
 namespace {
 
 // A fast approach over a long gap: v_I = sqrt(2 KE / m_I) = 5.53 m/s (m_I = 65.4 kg), gap
-// v_I t_c = 1.1 m, much more than the rigid model's margin 0.1 R = 0.025 m. At this speed (1.5 x
+// v_I t_c = 1.1 m, much more than the reach of a structural step. At this speed (1.5 x
 // the plate's dilatational wave speed) the DCR limit 0.25 h_min / v_I is shorter than the
 // structural step, so a DCR limit that ignored the distance would bind from t = 0. Coarse meshes (a
 // few thousand tets); one output, at t_f.
@@ -108,25 +108,25 @@ TEST_CASE("rigid and DCR runs take no contact-limited step before the sphere can
   REQUIRE(gap == Approx(0.2 * v));
   const double t_touch = gap / v;  // the sphere's lowest point reaches the plate's top face
 
-  SECTION("rigid: structural steps until the sphere is within one step of the margin 0.1 R") {
+  SECTION("rigid: structural steps until the sphere is within two steps' reach of the plate") {
     const Run run = run_model(spec, ImpactModel::rigid);
     const RunSummary& s = run.summary;
     check_accounting(s, 0.21);
     CHECK(s.dt_first == Approx(s.dt_initial).epsilon(1e-12));  // structural, not contact
     REQUIRE(s.limiters.contact > 0);
     // The plate's quadrature points lie in its top face, at least gap + R from the sphere's
-    // centre: none can come within 0.1 R of the sphere before t_m. The first contact-limited
-    // step may start one step earlier (it ends there); with the structural step dt_s as the
-    // longest step before contact:
-    const double t_m = (gap - 0.1 * R) / v;
+    // centre, and the plate is at rest: the limit counts a point once twice the sphere's travel
+    // in the step could bring it within 1e-6 R of the sphere (docs/contact-time-step.md), so the
+    // first contact-limited step starts no earlier than 2 structural steps dt_s before
+    // t_m = (gap - 1e-6 R) / v.
+    const double t_m = (gap - 1e-6 * R) / v;
     INFO("first contact-limited step at " << s.first_contact_step_time << " s; t_m " << t_m
                                           << " s, structural step " << s.dt_initial << " s");
-    CHECK(s.first_contact_step_time >= t_m - s.dt_initial * (1.0 + 1e-9));
+    CHECK(s.first_contact_step_time >= t_m - 2.0 * s.dt_initial * (1.0 + 1e-9));
     // ... and the limit is on before the sphere touches.
     CHECK(s.first_contact_step_time < t_touch);
-    // Before it, the steps were structural or landed on an output time: at least
-    // t_m / dt_s - 1 of them were structural (no output time before t_f).
-    CHECK(s.limiters.structure >= static_cast<long>(t_m / s.dt_initial) - 1);
+    // Before it, every step was structural (no output time before t_f): at least t_m / dt_s - 2.
+    CHECK(s.limiters.structure >= static_cast<long>(t_m / s.dt_initial) - 2);
   }
 
   SECTION("DCR: structural steps until the bodies are within 0.6 h_min of each other") {
@@ -141,13 +141,15 @@ TEST_CASE("rigid and DCR runs take no contact-limited step before the sphere can
     CHECK(s.dt_first == Approx(s.dt_initial).epsilon(1e-12));
     REQUIRE(s.limiters.contact > 0);
     // The meshed sphere's nodes lie on or inside its analytic surface, so the gap between the
-    // two bodies' boxes is at least `gap` at t = 0; it closes at v. The limit engages at
-    // p + 0.5 h_min = 0.6 h_min (docs/contact-time-step.md, DCR "Only near contact").
+    // two bodies' boxes is at least `gap` at t = 0; it closes at v. The limit engages when
+    // twice the step's reach covers the gap less p + 0.5 h_min = 0.6 h_min
+    // (docs/contact-time-step.md, DCR "Only near contact"): not before 2 steps before t_m.
     const dcr::DcrSettings defaults;
     const double near = (defaults.proximity + defaults.step_fraction) * run.dcr_min_edge;
     const double t_m = (gap - near) / v;
     INFO("first contact-limited step at " << s.first_contact_step_time << " s; t_m " << t_m
                                           << " s, structural step " << s.dt_initial << " s");
-    CHECK(s.first_contact_step_time >= t_m - s.dt_initial * (1.0 + 1e-9));
+    CHECK(s.first_contact_step_time >= t_m - 2.0 * s.dt_initial * (1.0 + 1e-9));
+    CHECK(s.limiters.structure >= static_cast<long>(t_m / s.dt_initial) - 2);
   }
 }
