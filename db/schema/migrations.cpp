@@ -240,7 +240,43 @@ CREATE TABLE rig_calibration_evaluations (
 );
 )sql";
 
-constexpr std::array<const char*, 3> kSteps = {kStep1, kStep2, kStep3};
+// Step 4: the measured cost (issue 13). Each run stores what its step loop cost (thread CPU and
+// wall seconds), its first and mean step, what set its steps and the smallest contact-limited
+// step, and which run it reuses when its scene text repeats another run's. The metrics store
+// the measured TR and RTR in tr_ccm, tr_rigid, rtr and the thesis's estimate (t_f AIR / ISTS)
+// beside them. Rows written before this step have no measured cost: their runs keep NULL in the
+// new columns, and their metrics keep the estimate they stored (moved to the *_thesis_estimate
+// columns) and become unusable, with the reason, instead of being given an invented figure.
+constexpr const char* kStep4 = R"sql(
+ALTER TABLE runs ADD COLUMN step_cpu_seconds REAL;
+ALTER TABLE runs ADD COLUMN step_wall_seconds REAL;
+ALTER TABLE runs ADD COLUMN dt_first REAL;
+ALTER TABLE runs ADD COLUMN dt_mean REAL;
+ALTER TABLE runs ADD COLUMN steps_structure INTEGER;
+ALTER TABLE runs ADD COLUMN steps_contact INTEGER;
+ALTER TABLE runs ADD COLUMN steps_max_dt INTEGER;
+ALTER TABLE runs ADD COLUMN steps_landing INTEGER;
+ALTER TABLE runs ADD COLUMN dt_contact_min REAL;
+ALTER TABLE runs ADD COLUMN reuses_run_id INTEGER;  -- a runs.id (no REFERENCES: droppable)
+ALTER TABLE metrics ADD COLUMN tr_ccm_thesis_estimate REAL;
+ALTER TABLE metrics ADD COLUMN tr_rigid_thesis_estimate REAL;
+ALTER TABLE metrics ADD COLUMN rtr_thesis_estimate REAL;
+UPDATE metrics SET
+  tr_ccm_thesis_estimate = tr_ccm, tr_rigid_thesis_estimate = tr_rigid, rtr_thesis_estimate = rtr,
+  tr_ccm = NULL, tr_rigid = NULL, rtr = NULL,
+  w_u_mean = NULL, w_u_max = NULL, w_kinetic_energy = NULL,
+  excluded_reason = CASE WHEN usable = 1
+    THEN 'measured cost unknown: the runs were stored before store schema 4; run the study again in a new store to measure it'
+    ELSE excluded_reason END,
+  usable = 0;
+DELETE FROM fit_terms WHERE fit_id IN
+  (SELECT id FROM fits WHERE metric IN ('rtr', 'w_u_mean', 'w_u_max', 'w_kinetic_energy'));
+DELETE FROM fit_points WHERE fit_id IN
+  (SELECT id FROM fits WHERE metric IN ('rtr', 'w_u_mean', 'w_u_max', 'w_kinetic_energy'));
+DELETE FROM fits WHERE metric IN ('rtr', 'w_u_mean', 'w_u_max', 'w_kinetic_energy');
+)sql";
+
+constexpr std::array<const char*, 4> kSteps = {kStep1, kStep2, kStep3, kStep4};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

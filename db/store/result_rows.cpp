@@ -21,8 +21,10 @@ void StudyStore::save_metrics(const study::PointMetrics& m) {
     INSERT OR REPLACE INTO metrics (grid_point_id, usable, excluded_reason,
       cumulative_u_mean, cumulative_u_max, cumulative_kinetic_energy,
       final_u_mean, final_u_max, final_kinetic_energy, nt_ccm, nt_rigid, tr_ccm, tr_rigid, rtr,
-      w_u_mean, w_u_max, w_kinetic_energy, t_final, computed_at)
-    VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19))sql");
+      w_u_mean, w_u_max, w_kinetic_energy, t_final, computed_at, tr_ccm_thesis_estimate,
+      tr_rigid_thesis_estimate, rtr_thesis_estimate)
+    VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19,
+            ?20, ?21, ?22))sql");
   s.bind(1, point_id(m.point)).bind(2, m.usable ? 1 : 0).bind(3, m.excluded_reason);
   s.bind(4, if_usable(m, m.cumulative.u_mean)).bind(5, if_usable(m, m.cumulative.u_max));
   s.bind(6, if_usable(m, m.cumulative.kinetic_energy));
@@ -35,6 +37,9 @@ void StudyStore::save_metrics(const study::PointMetrics& m) {
   s.bind(15, if_usable(m, m.weighting.u_mean)).bind(16, if_usable(m, m.weighting.u_max));
   s.bind(17, if_usable(m, m.weighting.kinetic_energy)).bind(18, if_usable(m, m.t_final));
   s.bind(19, utc_now());
+  s.bind(20, if_usable(m, m.ccm.total_runtime_thesis_estimate));
+  s.bind(21, if_usable(m, m.rigid.total_runtime_thesis_estimate));
+  s.bind(22, if_usable(m, m.runtime_ratio_thesis_estimate));
   s.run();
   transaction.commit();
 }
@@ -62,7 +67,8 @@ std::vector<study::PointMetrics> StudyStore::load_metrics() const {
            m.nt_ccm, m.nt_rigid, m.tr_ccm, m.tr_rigid, m.rtr,
            m.w_u_mean, m.w_u_max, m.w_kinetic_energy, m.t_final,
            c.status, c.steps, c.wall_seconds, c.average_iteration_seconds, c.initial_stable_dt,
-           r.status, r.steps, r.wall_seconds, r.average_iteration_seconds, r.initial_stable_dt
+           r.status, r.steps, r.wall_seconds, r.average_iteration_seconds, r.initial_stable_dt,
+           m.tr_ccm_thesis_estimate, m.tr_rigid_thesis_estimate, m.rtr_thesis_estimate
     FROM metrics m JOIN grid_points gp ON gp.id = m.grid_point_id
     LEFT JOIN runs c ON c.grid_point_id = gp.id AND c.model = 'ccm'
     LEFT JOIN runs r ON r.grid_point_id = gp.id AND r.model = 'rigid'
@@ -85,6 +91,9 @@ std::vector<study::PointMetrics> StudyStore::load_metrics() const {
     m.rigid.total_runtime = v(17);
     m.runtime_ratio = v(18);
     m.weighting = {v(19), v(20), v(21)};
+    m.ccm.total_runtime_thesis_estimate = v(33);
+    m.rigid.total_runtime_thesis_estimate = v(34);
+    m.runtime_ratio_thesis_estimate = v(35);
     m.t_final = v(22);
     out.push_back(std::move(m));
   }

@@ -14,7 +14,7 @@ namespace ccm::db {
 namespace {
 
 // Column order of the upsert; the binds in upsert_run follow it.
-constexpr std::array<const char*, 26> kRunColumns = {"grid_point_id",
+constexpr std::array<const char*, 36> kRunColumns = {"grid_point_id",
                                                      "model",
                                                      "status",
                                                      "reason",
@@ -39,7 +39,17 @@ constexpr std::array<const char*, 26> kRunColumns = {"grid_point_id",
                                                      "ranks",
                                                      "jobs",
                                                      "started_at",
-                                                     "ended_at"};
+                                                     "ended_at",
+                                                     "step_cpu_seconds",
+                                                     "step_wall_seconds",
+                                                     "dt_first",
+                                                     "dt_mean",
+                                                     "steps_structure",
+                                                     "steps_contact",
+                                                     "steps_max_dt",
+                                                     "steps_landing",
+                                                     "dt_contact_min",
+                                                     "reuses_run_id"};
 
 // INSERT ... ON CONFLICT (grid_point_id, model) DO UPDATE: one row per point and model, so a
 // redone run replaces its row instead of duplicating it. `guard` limits which rows may be
@@ -72,6 +82,28 @@ void bind_provenance(Statement& s, const RunProvenance& p) {
   s.bind(22, static_cast<long long>(p.pid)).bind(23, p.ranks).bind(24, p.jobs);
 }
 
+// Columns 27-35: the measured cost (NULL when the record has none).
+void bind_cost(Statement& s, const study::MeasuredCost& c) {
+  s.bind(27, c.step_cpu_seconds).bind(28, c.step_wall_seconds).bind(29, c.dt_first);
+  s.bind(30, c.dt_mean).bind(31, c.steps_structure).bind(32, c.steps_contact);
+  s.bind(33, c.steps_max_dt).bind(34, c.steps_landing).bind(35, c.dt_contact_min);
+}
+
+std::optional<study::MeasuredCost> cost_from_row(const Statement& q, int first) {
+  if (q.is_null(first)) return std::nullopt;  // stored before schema 4: not measured
+  study::MeasuredCost c;
+  c.step_cpu_seconds = q.column_double(first);
+  c.step_wall_seconds = q.column_double(first + 1);
+  c.dt_first = q.column_double(first + 2);
+  c.dt_mean = q.column_double(first + 3);
+  c.steps_structure = static_cast<long>(q.column_int(first + 4));
+  c.steps_contact = static_cast<long>(q.column_int(first + 5));
+  c.steps_max_dt = static_cast<long>(q.column_int(first + 6));
+  c.steps_landing = static_cast<long>(q.column_int(first + 7));
+  c.dt_contact_min = q.column_optional_double(first + 8);
+  return c;
+}
+
 }  // namespace
 
 void StudyStore::upsert_run(long long point_id, const study::RunRecord& run,
@@ -87,12 +119,24 @@ void StudyStore::upsert_run(long long point_id, const study::RunRecord& run,
     s.bind(9, run.average_iteration_seconds).bind(10, run.dt_min).bind(11, run.dt_max);
     s.bind(12, run.max_energy_error).bind(13, run.n_elements).bind(14, run.n_nodes);
     s.bind(15, history_file).bind(16, kArtifactGroup);
+    if (run.cost) bind_cost(s, *run.cost);
+    if (run.reuses_point) s.bind(36, reused_run_id(*run.reuses_point, run.model));
   }
   s.bind(17, run.scene_hash);
   bind_provenance(s, prov);
   s.bind(25, run.started_at.empty() ? utc_now() : run.started_at);
   if (status != RunStatus::running) s.bind(26, run.ended_at.empty() ? utc_now() : run.ended_at);
   s.run();
+}
+
+long long StudyStore::reused_run_id(int point_index, study::ImpactModel model) const {
+  Statement q(*connection_, "SELECT id FROM runs WHERE grid_point_id = ?1 AND model = ?2");
+  q.bind(1, point_id_by_index(point_index)).bind(2, study::to_string(model));
+  if (!q.step())
+    throw StoreError(
+        fmt::format("{}: the {} run of grid point {} that another run reuses is not stored",
+                    file_.string(), study::to_string(model), point_index));
+  return q.column_int(0);
 }
 
 std::optional<RunStatus> StudyStore::run_status(const std::string& point_hash,
@@ -157,8 +201,12 @@ std::optional<study::RunRecord> StudyStore::load_run(const study::GridPoint& poi
            gp.kinetic_energy, gp.other_axes, r.status, r.reason, r.unstable_time, r.steps,
            r.wall_seconds, r.initial_stable_dt, r.average_iteration_seconds, r.dt_min, r.dt_max,
            r.max_energy_error, r.n_elements, r.n_nodes, r.scene_hash, r.started_at, r.ended_at,
-           r.history_file, r.history_dataset
+           r.history_file, r.history_dataset, r.step_cpu_seconds, r.step_wall_seconds,
+           r.dt_first, r.dt_mean, r.steps_structure, r.steps_contact, r.steps_max_dt,
+           r.steps_landing, r.dt_contact_min, reused.point_index
     FROM runs r JOIN grid_points gp ON gp.id = r.grid_point_id
+    LEFT JOIN runs rr ON rr.id = r.reuses_run_id
+    LEFT JOIN grid_points reused ON reused.id = rr.grid_point_id
     WHERE gp.study_id = ?1 AND gp.content_hash = ?2 AND r.model = ?3
       AND r.status IN ('completed', 'unstable'))sql");
   q.bind(1, study_id()).bind(2, grid_point_hash(point)).bind(3, study::to_string(model));
@@ -181,6 +229,8 @@ std::optional<study::RunRecord> StudyStore::load_run(const study::GridPoint& poi
   run.scene_hash = q.column_text(18);
   run.started_at = q.column_text(19);
   run.ended_at = q.column_text(20);
+  run.cost = cost_from_row(q, 23);
+  if (!q.is_null(32)) run.reuses_point = static_cast<int>(q.column_int(32));
   const std::string dataset = q.column_text(22);
   run.artifact = read_history_file(file_.parent_path() / q.column_text(21), dataset.c_str());
   return run;

@@ -108,6 +108,7 @@ class StudyStore {
   long long point_id(const study::GridPoint& point);
   long long point_id_by_index(int point_index) const;
   std::optional<long long> find_point_id(const std::string& point_hash) const;
+  long long reused_run_id(int point_index, study::ImpactModel model) const;
   void upsert_run(long long point_id, const study::RunRecord& run, const RunProvenance& prov,
                   RunStatus status, const std::string& history_file);
 

@@ -28,9 +28,11 @@ constexpr std::array<double, 3> shape_at(int k) {
   return N;
 }
 
-// Margin of the stable-step search (see stable_dt_limit): points closer to the sphere's surface
-// than this fraction of R always count as touching.
-constexpr double kReachMargin = 0.1;
+// The stable-step search's safety (see stable_dt_limit, docs/contact-time-step.md): a point counts
+// when twice the predictor's reach bound could bring it within kRoundOffMargin R of the sphere's
+// surface within the step; points closer than that always count.
+constexpr double kReachSafety = 2.0;
+constexpr double kRoundOffMargin = 1e-6;
 
 // Bulk modulus at the reference state: K = lambda + 2 mu / 3 (Neo-Hookean and linear elastic).
 double bulk_modulus(const MaterialParams& m) {
@@ -300,17 +302,19 @@ double RigidSpherePenalty::limit_from(double node_term, double weight_sum) const
   return share_ * damping_bound_factor_ * 2.0 / std::sqrt(omega2);
 }
 
-// Which points count. A point counts when it is within kReachMargin R of the sphere's surface
-// now, or could get there within the step L being returned: its reach time
-// tau = (gap - kReachMargin R) / (2 v_rel) < L, with v_rel = |v_s| + max |v_a| over the surface
-// nodes (the factor 2 covers the change of velocity within a step). A counted point brings the
-// nodes of its triangle into the node term. The limit is the largest L with L <= f(S(L)), S(L) the
-// points with tau < L and f the bound of a set; f falls as S grows, so the points are taken in
-// the order of tau until the next one cannot arrive within the current L, or until taking it
-// would cut L below its own tau (then the step ends at that tau, before the point can arrive).
-// Far from contact the limit is thus infinite or the time the sphere needs to come within
-// reach: the penalty costs nothing until it can act. Approaching, the second case shortens the
-// step at most a few times (each halves tau) before the point is taken.
+// Which points count (the proof: docs/contact-time-step.md, "Which points count"). Over a step
+// of length h the predictor moves a node by h v_a + h^2/2 a_a and the sphere by h v_s + h^2/2
+// a_s, so no point's distance from the sphere's centre falls by more than
+//   b(h) = h v_rel + h^2/2 a_rel,  v_rel = |v_s| + max |v_a|,  a_rel = |a_s| + max |a_a|
+// (maxima over the surface nodes, at the start of the step). A point counts when it is within
+// kRoundOffMargin R of the sphere's surface now, or when kReachSafety b(L) reaches that far for
+// the step L being returned, i.e. its reach time tau (kReachSafety b(tau) = gap - kRoundOffMargin
+// R) is below L. A counted point brings the nodes of its triangle into the node term. The limit
+// is the largest L with L <= f(S(L)), S(L) the points with tau < L and f the bound of a set; f
+// falls as S grows, so the points are taken in the order of tau until the next one cannot arrive
+// within the current L, or until taking it would cut L below its own tau (then the step ends at
+// that tau, before the point can arrive). Far from contact the limit is thus infinite or the
+// time the sphere needs to come within reach: the penalty costs nothing until it can act.
 double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   // The squared distances of the points from the sphere's centre: those add_forces computed,
   // when they are of this state (the engine asks for the limit of a step after the evaluation
@@ -328,11 +332,16 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   }
 
   const double R = params_.sphere.radius;
-  const double near = (1.0 + kReachMargin) * R;  // closer than this: the point counts
+  const double near = (1.0 + kRoundOffMargin) * R;  // closer than this: the point counts
   const double near2 = near * near;
-  double v_max = 0.0;
-  for (int n : nodes_) v_max = std::max(v_max, state.v[static_cast<size_t>(n)].squaredNorm());
-  const double v_rel = v_s_.norm() + std::sqrt(v_max);
+  double v_max = 0.0, a_max = 0.0;
+  for (int n : nodes_) {
+    v_max = std::max(v_max, state.v[static_cast<size_t>(n)].squaredNorm());
+    a_max = std::max(a_max, state.a[static_cast<size_t>(n)].squaredNorm());
+  }
+  // The reach bound with its safety factor: kReachSafety b(h) = h v_rel + h^2/2 a_rel.
+  const double v_rel = kReachSafety * (v_s_.norm() + std::sqrt(v_max));
+  const double a_rel = kReachSafety * (a_s_.norm() + std::sqrt(a_max));
 
   double A = 0.0;         // max_a kappa_a / m_a over the nodes of the counted points' triangles
   double n_points = 0.0;  // sum of the counted points' weights (per point: their number)
@@ -347,8 +356,13 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
     }
   }
   double L = limit_from(A, n_points);
-  if (nearest == d2_.size() || !(v_rel > 0.0)) return L;
-  const auto tau_of = [&](double d2) { return (std::sqrt(d2) - near) / (2.0 * v_rel); };
+  if (nearest == d2_.size() || !(v_rel > 0.0 || a_rel > 0.0)) return L;
+  // tau with b(tau) = s: the root of a_rel/2 tau^2 + v_rel tau - s = 0 in the form that has no
+  // cancellation (and is s / v_rel for a_rel = 0, sqrt(2 s / a_rel) for v_rel = 0).
+  const auto tau_of = [&](double d2) {
+    const double s = std::sqrt(d2) - near;
+    return 2.0 * s / (v_rel + std::sqrt(v_rel * v_rel + 2.0 * a_rel * s));
+  };
 
   // The usual cases end here: the nearest point cannot arrive within L (in contact, or far and
   // slow), or taking it would cut L below its tau (far: the step may run until it can arrive).
@@ -362,7 +376,7 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
 
   // Approaching contact: take the points that can arrive within L (L only falls from here) in
   // the order of their distance, from a min-heap.
-  const double reach = near + 2.0 * v_rel * L;
+  const double reach = near + L * v_rel + 0.5 * L * L * a_rel;
   scratch_.clear();
   for (size_t q = 0; q < d2_.size(); ++q)
     if (q != nearest && d2_[q] >= near2 && d2_[q] < reach * reach)

@@ -1,6 +1,7 @@
 #include "engine/solver/explicit_integrator.hpp"
 
 #include <fmt/format.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -14,6 +15,34 @@ namespace ccm {
 
 std::string_view to_string(Verdict v) { return v == Verdict::completed ? "completed" : "unstable"; }
 
+std::string_view to_string(StepLimiter l) {
+  switch (l) {
+    case StepLimiter::structure:
+      return "structure";
+    case StepLimiter::contact:
+      return "contact";
+    case StepLimiter::max_dt:
+      return "max_dt";
+    case StepLimiter::landing:
+      return "landing";
+  }
+  return "?";
+}
+
+long& StepLimiterCounts::operator[](StepLimiter l) {
+  switch (l) {
+    case StepLimiter::structure:
+      return structure;
+    case StepLimiter::contact:
+      return contact;
+    case StepLimiter::max_dt:
+      return max_dt;
+    case StepLimiter::landing:
+      return landing;
+  }
+  return landing;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -21,6 +50,19 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+// CPU time of the calling thread [s]: the cost of the step loop, unaffected by other processes
+// sharing the machine (wall time is not).
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+struct StepChoice {
+  double dt;
+  StepLimiter limiter;
+};
 
 // Work of the prescribed surface loads, by the trapezoidal rule over each step.
 class LoadWork {
@@ -59,7 +101,8 @@ class CentralDifference {
 
  private:
   void initialise();
-  double next_dt() const;
+  StepChoice next_dt() const;
+  void count_step(const StepChoice& step, double t_n);
   void predict(double dt);
   void evaluate(bool with_energy);
   void apply_fixed_nodes();
@@ -107,15 +150,30 @@ void CentralDifference::initialise() {
   summary_.n_elements = mesh.n_elements();
 }
 
-double CentralDifference::next_dt() const {
-  double dt = std::min(opt_.time.dt_safety * last_eval_.stable_dt, opt_.time.max_dt);
-  if (opt_.contact) dt = std::min(dt, opt_.contact->stable_dt_limit(s_));
+StepChoice CentralDifference::next_dt() const {
+  StepChoice step{opt_.time.dt_safety * last_eval_.stable_dt, StepLimiter::structure};
+  if (opt_.time.max_dt < step.dt) step = {opt_.time.max_dt, StepLimiter::max_dt};
+  if (opt_.contact) {
+    const double limit = opt_.contact->stable_dt_limit(s_);
+    if (limit < step.dt) step = {limit, StepLimiter::contact};
+  }
   double stop = opt_.time.end_time;
   if (opt_.time.output_interval > 0.0)
     stop = std::min(stop, static_cast<double>(next_output_index_) * opt_.time.output_interval);
   // Land exactly on the next output time or the end, rather than step a hair short of it.
-  if (s_.t + dt * (1.0 + 1e-9) >= stop) dt = stop - s_.t;
-  return dt;
+  if (s_.t + step.dt * (1.0 + 1e-9) >= stop) step = {stop - s_.t, StepLimiter::landing};
+  return step;
+}
+
+void CentralDifference::count_step(const StepChoice& step, double t_n) {
+  if (summary_.steps == 0) summary_.dt_first = step.dt;
+  ++summary_.steps;
+  ++summary_.limiters[step.limiter];
+  summary_.dt_min = std::min(summary_.dt_min, step.dt);
+  summary_.dt_max = std::max(summary_.dt_max, step.dt);
+  if (step.limiter != StepLimiter::contact) return;
+  summary_.dt_contact_min = std::min(summary_.dt_contact_min, step.dt);
+  if (summary_.first_contact_step_time < 0.0) summary_.first_contact_step_time = t_n;
 }
 
 // x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28)
@@ -224,6 +282,7 @@ RunSummary CentralDifference::run() {
   const auto start = Clock::now();
   initialise();
   const auto loop_start = Clock::now();
+  const double loop_cpu_start = thread_cpu_seconds();
   if (auto bad = check(true)) {
     summary_.verdict = Verdict::unstable;
     summary_.instability = *bad;
@@ -237,7 +296,8 @@ RunSummary CentralDifference::run() {
       summary_.instability = {s_.t, "step limit reached before the end time", -1, -1};
       break;
     }
-    const double dt = next_dt();
+    const StepChoice step = next_dt();
+    const double dt = step.dt;
     const bool output_step = (s_.t + dt >= t_end * (1.0 - 1e-12));
     const double t_n = s_.t;
     if (auto bad = check_time_step(opt_.time.dt_safety * last_eval_.stable_dt, summary_.dt_initial,
@@ -269,9 +329,7 @@ RunSummary CentralDifference::run() {
     for (StateLoad* load : opt_.loads) load->end_step(s_, dt);
     last_dt_ = dt;
     load_work_.after_step(s_, t_n, s_.t);
-    ++summary_.steps;
-    summary_.dt_min = std::min(summary_.dt_min, dt);
-    summary_.dt_max = std::max(summary_.dt_max, dt);
+    count_step(step, t_n);
     if (auto bad = check(energy_check)) {
       summary_.verdict = Verdict::unstable;
       summary_.instability = *bad;
@@ -283,10 +341,14 @@ RunSummary CentralDifference::run() {
     }
     report_progress(dt, start, last_report);
   }
+  summary_.step_cpu_seconds = thread_cpu_seconds() - loop_cpu_start;
+  summary_.step_wall_seconds = seconds_since(loop_start);
   summary_.end_time = s_.t;
   summary_.wall_seconds = seconds_since(start);
+  if (summary_.steps > 0)
+    summary_.dt_mean = summary_.end_time / static_cast<double>(summary_.steps);
   if (summary_.steps > 0 && summary_.n_elements > 0)
-    summary_.ns_per_element_step = 1e9 * seconds_since(loop_start) /
+    summary_.ns_per_element_step = 1e9 * summary_.step_wall_seconds /
                                    (static_cast<double>(summary_.steps) * summary_.n_elements);
   return summary_;
 }

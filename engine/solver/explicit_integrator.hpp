@@ -35,6 +35,21 @@ struct TimeControl {
 enum class Verdict { completed, unstable };
 std::string_view to_string(Verdict v);
 
+// What set a step's length (each step counted once, by the bound that was smallest; a step cut
+// short to land on an output time or the end time counts as `landing`).
+enum class StepLimiter { structure, contact, max_dt, landing };
+std::string_view to_string(StepLimiter l);
+
+// Steps per limiter; the four counts sum to RunSummary::steps.
+struct StepLimiterCounts {
+  long structure = 0;  // dt_safety x the elements' stable step (docs/time-step.md)
+  long contact = 0;    // the contact model's limit (docs/contact-time-step.md)
+  long max_dt = 0;     // the scene's [time] max_dt
+  long landing = 0;    // shortened to land on an output time or the end time
+  long total() const { return structure + contact + max_dt + landing; }
+  long& operator[](StepLimiter l);
+};
+
 struct RunSummary {
   Verdict verdict = Verdict::completed;
   Instability instability;  // meaningful when unstable
@@ -42,8 +57,17 @@ struct RunSummary {
   double end_time = 0.0;  // time reached
   double dt_min = std::numeric_limits<double>::infinity();
   double dt_max = 0.0;
-  double dt_initial = 0.0;
-  double wall_seconds = 0.0;
+  double dt_initial = 0.0;  // dt_safety x the structural stable step at t = 0 (ISTS, eq. 2.42)
+  double dt_first = 0.0;    // the first step actually taken (0: none)
+  double dt_mean = 0.0;     // end_time / steps (0: no step)
+  // The smallest step the contact model set (infinity when it never set one) and the time at
+  // which the first such step started (-1 when none).
+  double dt_contact_min = std::numeric_limits<double>::infinity();
+  double first_contact_step_time = -1.0;
+  StepLimiterCounts limiters;
+  double wall_seconds = 0.0;       // whole run, initialisation included
+  double step_wall_seconds = 0.0;  // the step loop alone (set-up and meshing excluded)
+  double step_cpu_seconds = 0.0;   // thread CPU time of the step loop (CLOCK_THREAD_CPUTIME_ID)
   double ns_per_element_step = 0.0;
   double energy_balance_error = 0.0;  // largest relative error seen at the checks
   int n_nodes = 0;

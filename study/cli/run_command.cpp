@@ -101,7 +101,13 @@ void print_summary_table(const RunRecord& r) {
   fmt::print("  {:<15}{}\n", "steps", s.steps);
   fmt::print("  {:<15}initial {:.4g} s, min {:.4g} s, max {:.4g} s\n", "dt", s.dt_initial, s.dt_min,
              s.dt_max);
-  fmt::print("  {:<15}{:.3f} s\n", "wall time", s.wall_seconds);
+  fmt::print("  {:<15}first {:.4g} s, mean {:.4g} s, smallest contact-limited {}\n", "", s.dt_first,
+             s.dt_mean,
+             s.limiters.contact > 0 ? fmt::format("{:.4g} s", s.dt_contact_min) : "none");
+  fmt::print("  {:<15}structure {}, contact {}, max_dt {}, output/end landing {}\n", "dt set by",
+             s.limiters.structure, s.limiters.contact, s.limiters.max_dt, s.limiters.landing);
+  fmt::print("  {:<15}{:.3f} s (stepping: {:.3f} s wall, {:.3f} s thread CPU)\n", "wall time",
+             s.wall_seconds, s.step_wall_seconds, s.step_cpu_seconds);
   fmt::print("  {:<15}{:.1f} ns\n", "per elem-step", s.ns_per_element_step);
   fmt::print("  {:<15}{:.3g} % (largest energy-balance error)\n", "energy error",
              100.0 * s.energy_balance_error);
@@ -131,10 +137,21 @@ std::string summary_toml(const RunRecord& r) {
                    toml_float(s.end_time), s.steps);
   t += fmt::format("dt_initial = {}\ndt_min = {}\ndt_max = {}\n", toml_float(s.dt_initial),
                    toml_float(s.dt_min), toml_float(s.dt_max));
+  t += fmt::format("dt_first = {}\ndt_mean = {}\n", toml_float(s.dt_first), toml_float(s.dt_mean));
+  if (s.limiters.contact > 0)
+    t += fmt::format("dt_contact_min = {}\nfirst_contact_step_time = {}\n",
+                     toml_float(s.dt_contact_min), toml_float(s.first_contact_step_time));
   t += fmt::format("wall_seconds = {}\nns_per_element_step = {}\n", toml_float(s.wall_seconds),
                    toml_float(s.ns_per_element_step));
+  t += fmt::format(
+      "step_wall_seconds = {}\nstep_cpu_seconds = {}  # thread CPU time of the step loop\n",
+      toml_float(s.step_wall_seconds), toml_float(s.step_cpu_seconds));
   t += fmt::format("energy_balance_error = {}  # largest relative error (0.01 = 1 %)\n",
                    toml_float(s.energy_balance_error));
+  t += fmt::format(
+      "\n[run.steps_limited_by]  # each step once, by what set its length\n"
+      "structure = {}\ncontact = {}\nmax_dt = {}\nlanding = {}  # output or end time\n",
+      s.limiters.structure, s.limiters.contact, s.limiters.max_dt, s.limiters.landing);
   if (s.verdict == Verdict::unstable) {
     const Instability& i = s.instability;
     t += fmt::format("\n[instability]\ntime = {}\nreason = {}\nelement = {}\nnode = {}\n",

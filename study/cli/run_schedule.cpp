@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <new>
 #include <stdexcept>
 
 #include "study/grid/grid_expand.hpp"
+#include "study/grid/point_scene.hpp"
 #include "study/metrics/convergence.hpp"
+#include "study/runner/content_hash.hpp"
 
 namespace ccm {
 
@@ -18,8 +21,20 @@ std::vector<PlannedRun> plan_runs(const study::GridSpec& spec) {
   for (const auto& points : {study::expand_grid(spec), study::expand_convergence(spec)})
     for (const study::GridPoint& p : points)
       for (study::ImpactModel m : {study::ImpactModel::ccm, study::ImpactModel::rigid})
-        runs.push_back({p, m});
+        runs.push_back({p, m, study::fnv1a64(study::point_scene_text(spec, p, m))});
   return runs;
+}
+
+std::vector<std::vector<std::size_t>> group_by_scene(const std::vector<PlannedRun>& runs) {
+  std::vector<std::vector<std::size_t>> groups;
+  std::map<std::pair<study::ImpactModel, std::string>, std::size_t> group_of;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto key = std::make_pair(runs[i].model, runs[i].scene_hash);
+    const auto [it, is_new] = group_of.emplace(key, groups.size());
+    if (is_new) groups.emplace_back();
+    groups[it->second].push_back(i);
+  }
+  return groups;
 }
 
 double expected_run_cost(const study::GridPoint& point, study::ImpactModel model) {
@@ -39,6 +54,13 @@ std::vector<std::size_t> longest_first(const std::vector<PlannedRun>& runs) {
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   return order;
+}
+
+std::vector<std::size_t> longest_first(const std::vector<PlannedRun>& runs,
+                                       const std::vector<std::vector<std::size_t>>& groups) {
+  std::vector<PlannedRun> first;
+  for (const auto& g : groups) first.push_back(runs[g.front()]);
+  return longest_first(first);
 }
 
 using Counter = std::atomic<std::size_t>;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "study/grid/grid_point.hpp"
@@ -17,11 +18,19 @@ namespace ccm {
 struct PlannedRun {
   study::GridPoint point;
   study::ImpactModel model;
+  std::string scene_hash;  // FNV-1a 64 of the run's scene text (study/grid/point_scene.hpp)
 };
 
 // Every run of the grid file, in a fixed order: the grid's points, then the convergence
 // points, each with its CCM run before its rigid run.
 std::vector<PlannedRun> plan_runs(const study::GridSpec& spec);
+
+// The runs that share a model and a scene text, as indices into `runs` in plan order: each
+// group is simulated once (by its first run) and its record stored for every member. A rigid
+// run does not read ER, a CCM run does not read the penalty or its damping, and a convergence
+// point at mesh scale 1 repeats its grid point: those repeat a scene. Groups are in the order
+// of their first run.
+std::vector<std::vector<std::size_t>> group_by_scene(const std::vector<PlannedRun>& runs);
 
 // The expected cost of a run, in relative units: a CCM run sqrt(ER) / s^4, a rigid run 60 / s^4,
 // s the mesh scale. The stiff sphere's stable step falls as 1 / c_I ~ 1 / sqrt(E_I); the element
@@ -33,6 +42,11 @@ double expected_run_cost(const study::GridPoint& point, study::ImpactModel model
 // Indices into `runs`, the highest expected cost first; ties keep the plan's order, so the order
 // is deterministic.
 std::vector<std::size_t> longest_first(const std::vector<PlannedRun>& runs);
+
+// Indices into `groups` (of group_by_scene), by the expected cost of each group's first run,
+// the highest first; ties keep the groups' order.
+std::vector<std::size_t> longest_first(const std::vector<PlannedRun>& runs,
+                                       const std::vector<std::vector<std::size_t>>& groups);
 
 // A counter shared by forked worker processes (an anonymous shared mapping, created before the
 // fork): next() hands out 0, 1, 2, ... once each across all of them.

@@ -7,10 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -55,25 +57,66 @@ void prepare_store(const fs::path& db, const GridSpec& spec, const std::string& 
   for (const PlannedRun& r : runs) store.add_grid_point(r.point);
 }
 
-// Runs the runs `next_run` hands out (an index into `runs`; >= runs.size() when there are no
-// more) that are not done yet; each run is committed on its own. Returns the number of failed
-// runs.
+// The record a group of runs that share a scene stores: a member's stored result when one is
+// done already (a resumed study), else the group's first run simulated now (claimed first, so
+// that no other process runs it at the same time). Empty when another process claimed it.
+std::optional<study::RunRecord> group_record(db::StudyStore& store, const GridSpec& spec,
+                                             const std::vector<PlannedRun>& runs,
+                                             const std::vector<std::size_t>& group,
+                                             const db::RunProvenance& provenance) {
+  for (std::size_t i : group)
+    if (store.is_done(runs[i].point, runs[i].model))
+      return store.load_run(runs[i].point, runs[i].model);
+  const PlannedRun& first = runs[group.front()];
+  if (!store.mark_running(first.point, first.model, provenance, db::utc_now()))
+    return store.load_run(first.point, first.model);  // finished meanwhile by another process
+  study::RunRecord run = study::run_point(spec, first.point, first.model);
+  store.record_run(run, provenance);
+  return run;
+}
+
+// The group's record stored for every member not done yet, each as a reuse of the simulated run.
+void store_reuses(db::StudyStore& store, const study::RunRecord& source,
+                  const std::vector<PlannedRun>& runs, const std::vector<std::size_t>& group,
+                  const db::RunProvenance& provenance) {
+  for (std::size_t i : group) {
+    if (store.is_done(runs[i].point, runs[i].model)) continue;
+    study::RunRecord copy = source;
+    copy.point = runs[i].point;
+    copy.reuses_point = source.reuses_point.value_or(source.point.index);
+    store.record_run(copy, provenance);
+  }
+}
+
+// Runs the groups of runs that share a scene (run_schedule.hpp) that `next_group` hands out (an
+// index into `groups`; >= groups.size() when there are no more), each simulated once and stored
+// for every member not done yet; each record is committed on its own. Returns the number of
+// failed runs.
 long run_share(const fs::path& db, const GridSpec& spec, const std::string& grid_hash,
-               const std::vector<PlannedRun>& runs, const std::function<std::size_t()>& next_run,
+               const std::vector<PlannedRun>& runs,
+               const std::vector<std::vector<std::size_t>>& groups,
+               const std::function<std::size_t()>& next_group,
                const db::RunProvenance& provenance) {
   db::StudyStore store(db);
   store.open_study(spec.title, grid_hash);
   long failed = 0;
-  for (std::size_t i = next_run(); i < runs.size(); i = next_run()) {
-    const PlannedRun& r = runs[i];
-    if (!store.mark_running(r.point, r.model, provenance, db::utc_now())) continue;  // done
+  for (std::size_t g = next_group(); g < groups.size(); g = next_group()) {
+    const std::vector<std::size_t>& group = groups[g];
+    const bool all_done = std::all_of(group.begin(), group.end(), [&](std::size_t i) {
+      return store.is_done(runs[i].point, runs[i].model);
+    });
+    if (all_done) continue;
     try {
-      store.record_run(study::run_point(spec, r.point, r.model), provenance);
+      if (const auto record = group_record(store, spec, runs, group, provenance))
+        store_reuses(store, *record, runs, group, provenance);
     } catch (const db::StoreError&) {
       throw;  // the store itself is broken: stop this worker
     } catch (const std::exception& e) {
-      store.record_failure(r.point, r.model, e.what(), provenance);
-      ++failed;
+      for (std::size_t i : group)
+        if (!store.is_done(runs[i].point, runs[i].model)) {
+          store.record_failure(runs[i].point, runs[i].model, e.what(), provenance);
+          ++failed;
+        }
     }
   }
   return failed;
@@ -176,7 +219,8 @@ int run_all(const StudyRunArgs& args, const study::RankContext& ranks, const Gri
             const std::string& grid_hash, const std::vector<PlannedRun>& runs) {
   const int jobs = ranks.size() > 1 ? 1 : args.jobs;
   const auto provenance = db::current_provenance(grid_hash, ranks.size(), jobs);
-  const std::vector<std::size_t> order = longest_first(runs);
+  const std::vector<std::vector<std::size_t>> groups = group_by_scene(runs);
+  const std::vector<std::size_t> order = longest_first(runs, groups);
   SharedCounter shared;                                        // forked workers
   std::size_t dealt = static_cast<std::size_t>(ranks.rank());  // MPI ranks
   const std::function<std::size_t()> next_run = [&]() -> std::size_t {
@@ -187,10 +231,10 @@ int run_all(const StudyRunArgs& args, const study::RankContext& ranks, const Gri
     } else {
       k = shared.next();
     }
-    return k < order.size() ? order[k] : runs.size();
+    return k < order.size() ? order[k] : groups.size();
   };
   auto work = [&](int /*worker*/) {
-    return run_share(args.db, spec, grid_hash, runs, next_run, provenance) > 0
+    return run_share(args.db, spec, grid_hash, runs, groups, next_run, provenance) > 0
                ? exit_code::internal_error
                : exit_code::completed;
   };
@@ -220,9 +264,11 @@ int study_run(const StudyRunArgs& args, const study::RankContext& ranks) {
     return exit_code::bad_input;
   }
   if (ranks.is_root() && !args.quiet)
-    fmt::print("study \"{}\": {} runs ({} points x 2 models) on {} worker(s), store {}\n",
-               spec.title, runs.size(), runs.size() / 2, ranks.size() * args.jobs,
-               args.db.string());
+    fmt::print(
+        "study \"{}\": {} runs ({} points x 2 models; {} distinct scenes, each simulated once) "
+        "on {} worker(s), store {}\n",
+        spec.title, runs.size(), runs.size() / 2, group_by_scene(runs).size(),
+        ranks.size() * args.jobs, args.db.string());
 
   run_all(args, ranks, spec, grid_hash, runs);
   ranks.barrier();

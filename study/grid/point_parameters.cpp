@@ -93,16 +93,6 @@ const std::vector<std::string_view>& other_axis_names() {
   return names;
 }
 
-bool axis_applies_to(std::string_view name, ImpactModel model) {
-  static constexpr std::array<std::string_view, 3> kRigidOnly = {"penalty", "penalty_scale",
-                                                                 "damping"};
-  static constexpr std::array<std::string_view, 2> kCcmOnly = {"restitution", "friction"};
-  const auto in = [&](const auto& names) {
-    return std::find(names.begin(), names.end(), name) != names.end();
-  };
-  return model == ImpactModel::ccm ? !in(kRigidOnly) : !in(kCcmOnly);
-}
-
 std::string axis_value_problem(std::string_view name, double value) {
   const auto it = axis_checks().find(name);
   if (it == axis_checks().end()) return fmt::format("unknown grid axis '{}'", name);

@@ -24,11 +24,6 @@ namespace ccm::study {
 //   friction             mu (ccm model)
 const std::vector<std::string_view>& other_axis_names();
 
-// True for the axes that only change one model's scene (rigid: penalty, penalty_scale,
-// damping; ccm: restitution, friction): the other model's scene text leaves them out, so that
-// its runs at two levels of such an axis are the same run.
-bool axis_applies_to(std::string_view name, ImpactModel model);
-
 // Empty when `value` is allowed for axis `name`, else the problem ("must be > 0 (got -1)").
 // Also checks ER, RLS and KE under the names "ER", "RLS", "KE".
 std::string axis_value_problem(std::string_view name, double value);

@@ -49,6 +49,11 @@ std::string sample_mismatch(const ArtifactHistory& c, const ArtifactHistory& r) 
 std::string unusable_reason(const RunRecord& ccm, const RunRecord& rigid) {
   if (!ccm.completed()) return "ccm run " + ccm.verdict + ": " + ccm.reason;
   if (!rigid.completed()) return "rigid run " + rigid.verdict + ": " + rigid.reason;
+  for (const RunRecord* run : {&ccm, &rigid})
+    if (!run->cost)
+      return std::string(to_string(run->model)) +
+             " run: its cost was not measured (stored before store schema 4); run the study "
+             "again in a new store to measure it";
   return sample_mismatch(ccm.artifact, rigid.artifact);
 }
 
@@ -72,9 +77,13 @@ PointMetrics compute_point_metrics(const RunRecord& ccm, const RunRecord& rigid)
                    final_state_error(c.kinetic_energy, r.kinetic_energy)};
   for (ModelTiming* t : {&m.ccm, &m.rigid}) {
     t->normalised_runtime = normalised_runtime(t->average_iteration_seconds, t->initial_stable_dt);
-    t->total_runtime = total_runtime(m.t_final, t->normalised_runtime);
+    t->total_runtime_thesis_estimate = total_runtime(m.t_final, t->normalised_runtime);
   }
-  m.runtime_ratio = runtime_ratio(m.ccm.normalised_runtime, m.rigid.normalised_runtime);
+  m.ccm.total_runtime = ccm.cost->step_cpu_seconds;  // measured TR
+  m.rigid.total_runtime = rigid.cost->step_cpu_seconds;
+  m.runtime_ratio = runtime_ratio(m.ccm.total_runtime, m.rigid.total_runtime);
+  m.runtime_ratio_thesis_estimate =
+      runtime_ratio(m.ccm.normalised_runtime, m.rigid.normalised_runtime);
   m.weighting = {m.final_state.u_mean / m.runtime_ratio, m.final_state.u_max / m.runtime_ratio,
                  m.final_state.kinetic_energy / m.runtime_ratio};
   m.usable = true;

@@ -54,7 +54,18 @@ void record_summary(const RunSummary& s, RunRecord& r) {
   r.wall_seconds = s.wall_seconds;
   r.initial_stable_dt = s.dt_initial;  // ISTS, eq. 2.42
   r.average_iteration_seconds =
-      s.steps > 0 ? s.wall_seconds / static_cast<double>(s.steps) : 0.0;  // AIR, eq. 2.41
+      s.steps > 0 ? s.step_cpu_seconds / static_cast<double>(s.steps) : 0.0;  // AIR, eq. 2.41
+  MeasuredCost c;
+  c.step_cpu_seconds = s.step_cpu_seconds;
+  c.step_wall_seconds = s.step_wall_seconds;
+  c.dt_first = s.dt_first;
+  c.dt_mean = s.dt_mean;
+  c.steps_structure = s.limiters.structure;
+  c.steps_contact = s.limiters.contact;
+  c.steps_max_dt = s.limiters.max_dt;
+  c.steps_landing = s.limiters.landing;
+  if (s.limiters.contact > 0) c.dt_contact_min = s.dt_contact_min;
+  r.cost = c;
   r.dt_min = s.dt_min;
   r.dt_max = s.dt_max;
   r.max_energy_error = s.energy_balance_error;

@@ -33,6 +33,19 @@ void check_same_run(const study::RunRecord& a, const study::RunRecord& b) {
   CHECK(a.n_elements == b.n_elements);
   CHECK(a.scene_hash == b.scene_hash);
   CHECK(a.started_at == b.started_at);
+  REQUIRE(a.cost.has_value() == b.cost.has_value());
+  if (a.cost) {
+    CHECK(a.cost->step_cpu_seconds == b.cost->step_cpu_seconds);
+    CHECK(a.cost->step_wall_seconds == b.cost->step_wall_seconds);
+    CHECK(a.cost->dt_first == b.cost->dt_first);
+    CHECK(a.cost->dt_mean == b.cost->dt_mean);
+    CHECK(a.cost->steps_structure == b.cost->steps_structure);
+    CHECK(a.cost->steps_contact == b.cost->steps_contact);
+    CHECK(a.cost->steps_max_dt == b.cost->steps_max_dt);
+    CHECK(a.cost->steps_landing == b.cost->steps_landing);
+    CHECK(a.cost->dt_contact_min == b.cost->dt_contact_min);
+  }
+  CHECK(a.reuses_point == b.reuses_point);
   CHECK(a.artifact.time == b.artifact.time);  // bit-exact through HDF5 (IEEE f64 LE)
   CHECK(a.artifact.u_mean == b.artifact.u_mean);
   CHECK(a.artifact.u_max == b.artifact.u_max);
@@ -56,11 +69,25 @@ TEST_CASE("runs and their HDF5 histories round-trip bit-exactly, with provenance
   REQUIRE(loaded);
   check_same_run(*loaded, ccm_run);
   CHECK_FALSE(store.load_run(ccm_run.point, ImpactModel::rigid));
+  // A run stored as a reuse of another point's run (same model and scene) says which; a run
+  // with no contact-limited step has no smallest contact-limited step.
+  study::RunRecord reused = test::synthetic_run(ImpactModel::ccm, 8);
+  reused.point.modulus_ratio = 1.0;
+  reused.reuses_point = ccm_run.point.index;
+  REQUIRE_FALSE(reused.cost->dt_contact_min.has_value());
+  store.record_run(reused, prov);
+  const auto reused_back = store.load_run(reused.point, ImpactModel::ccm);
+  REQUIRE(reused_back);
+  check_same_run(*reused_back, reused);
+  const auto rigid_run = test::synthetic_run(ImpactModel::rigid);
+  REQUIRE(rigid_run.cost->dt_contact_min.has_value());
+  store.record_run(rigid_run, prov);
+  check_same_run(*store.load_run(rigid_run.point, ImpactModel::rigid), rigid_run);
 
   db::Statement row(
       store.connection(),
       "SELECT ccm_version, git_hash, grid_hash, host, pid, ranks, jobs, history_file, "
-      "history_dataset, status FROM runs");
+      "history_dataset, status FROM runs ORDER BY id");
   REQUIRE(row.step());
   CHECK(row.column_text(0) == CCM_VERSION);
   CHECK(row.column_text(1) == CCM_GIT_HASH);
@@ -72,7 +99,7 @@ TEST_CASE("runs and their HDF5 histories round-trip bit-exactly, with provenance
   CHECK(std::filesystem::exists(dir.path() / row.column_text(7)));
   CHECK(row.column_text(8) == "/artifact");
   CHECK(row.column_text(9) == "completed");
-  CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM grid_points") == 1);
+  CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM grid_points") == 2);
   db::Statement mode(store.connection(), "PRAGMA journal_mode");
   mode.step();
   CHECK(mode.column_text(0) == "wal");
@@ -167,6 +194,9 @@ TEST_CASE("metrics and fits round-trip; unusable points stay visible", "[db]") {
     CHECK(loaded[i].weighting.u_max == points[i].weighting.u_max);
     CHECK(loaded[i].runtime_ratio == points[i].runtime_ratio);
     CHECK(loaded[i].ccm.total_runtime == points[i].ccm.total_runtime);
+    CHECK(loaded[i].runtime_ratio_thesis_estimate == points[i].runtime_ratio_thesis_estimate);
+    CHECK(loaded[i].rigid.total_runtime_thesis_estimate ==
+          points[i].rigid.total_runtime_thesis_estimate);
   }
 
   const study::StudyFits fits = study::fit_study(points);

@@ -47,7 +47,7 @@ TEST_CASE("a version-1 store (runs only) is migrated to the latest schema, data 
   }
   db::StudyStore store(file);
   CHECK(db::schema_version(store.connection()) == db::latest_schema_version());
-  CHECK(db::latest_schema_version() == 3);
+  CHECK(db::latest_schema_version() == 4);
   CHECK(store.study_name() == "old");
   const auto status = store.status();
   REQUIRE(status.size() == 1);
@@ -60,6 +60,64 @@ TEST_CASE("a version-1 store (runs only) is migrated to the latest schema, data 
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM rig_runs") == 0);
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM rig_calibrations") == 0);
   CHECK(test::integrity_check(store.connection()) == "ok");
+}
+
+TEST_CASE("a version-3 store's runs and metrics migrate without an invented measured cost",
+          "[db]") {
+  test::ScratchDir dir("db-migrate-cost");
+  const auto file = dir / "v3.sqlite";
+  {
+    db::Connection c(file);
+    db::migrate(c, 3);  // what a ccm before the measured cost wrote
+    c.exec(R"sql(
+      INSERT INTO studies VALUES (1, 'old', 'g1', '2026-01-01T00:00:00Z', '0.0.9', 'abc');
+      INSERT INTO grid_points VALUES (1, 1, 0, 'h0', 100.0, 0.5, 10.0, '');
+      INSERT INTO grid_points VALUES (2, 1, 1, 'h1', 1.0, 0.5, 10.0, '');
+      INSERT INTO runs (grid_point_id, model, status, steps, wall_seconds, initial_stable_dt,
+                        average_iteration_seconds, grid_hash, ccm_version, git_hash, host, pid,
+                        ranks, jobs, started_at)
+        VALUES (1, 'rigid', 'completed', 9000, 3.0, 1e-3, 3.3e-4, 'g1', '0.0.9', 'abc', 'hostA',
+                42, 1, 1, 'then');
+      INSERT INTO metrics (grid_point_id, usable, nt_ccm, nt_rigid, tr_ccm, tr_rigid, rtr,
+                           w_u_mean, final_u_mean, computed_at)
+        VALUES (1, 1, 40.0, 0.33, 6.0, 0.05, 121.0, 0.001, 0.2, 'then');
+      INSERT INTO metrics (grid_point_id, usable, excluded_reason, computed_at)
+        VALUES (2, 0, 'rigid run unstable: energy', 'then');
+      INSERT INTO fits (id, study_id, metric, kinetic_energy, degree_log_er, degree_rls,
+                        r_squared, loo_rmse, n_points, fitted_at)
+        VALUES (1, 1, 'rtr', 10.0, 1, 0, 0.9, 1.0, 4, 'then'),
+               (2, 1, 'final_u_mean', 10.0, 1, 0, 0.9, 1.0, 4, 'then');
+      INSERT INTO fit_terms VALUES (1, 0, 0, 1.0), (2, 0, 0, 2.0);)sql");
+  }
+  db::StudyStore store(file);
+  db::Connection& c = store.connection();
+  CHECK(db::schema_version(c) == 4);
+  // The old run keeps its figures; what was not measured stays NULL, not a made-up number.
+  CHECK(test::count_rows(c,
+                         "SELECT count(*) FROM runs WHERE steps = 9000 AND "
+                         "step_cpu_seconds IS NULL AND steps_contact IS NULL AND "
+                         "dt_first IS NULL AND reuses_run_id IS NULL") == 1);
+  // The thesis's estimate moves to its own columns; the measured ones are unknown, and so are
+  // the weighting functions divided by it; the point is left out of the fits, saying why.
+  const auto metrics = store.load_metrics();
+  REQUIRE(metrics.size() == 2);
+  CHECK_FALSE(metrics[0].usable);
+  CHECK(metrics[0].excluded_reason.find("measured cost unknown") != std::string::npos);
+  CHECK(metrics[0].runtime_ratio == 0.0);  // NULL in the store
+  CHECK(metrics[0].runtime_ratio_thesis_estimate == 121.0);
+  CHECK(metrics[0].ccm.total_runtime_thesis_estimate == 6.0);
+  CHECK(metrics[0].rigid.total_runtime_thesis_estimate == 0.05);
+  CHECK(metrics[0].final_state.u_mean == 0.2);  // the errors are kept
+  CHECK(test::count_rows(c,
+                         "SELECT count(*) FROM metrics WHERE rtr IS NOT NULL OR "
+                         "tr_ccm IS NOT NULL OR w_u_mean IS NOT NULL") == 0);
+  // An unusable point keeps its own reason.
+  CHECK(metrics[1].excluded_reason == "rigid run unstable: energy");
+  // Fits of RTR (and of w = error / RTR) were fits of the estimate: removed; the others stay.
+  CHECK(test::count_rows(c, "SELECT count(*) FROM fits") == 1);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM fits WHERE metric = 'final_u_mean'") == 1);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM fit_terms") == 1);
+  CHECK(test::integrity_check(c) == "ok");
 }
 
 TEST_CASE("foreign files are refused with a message naming the file, and left untouched", "[db]") {
@@ -104,6 +162,6 @@ TEST_CASE("foreign files are refused with a message naming the file, and left un
     }
     CHECK(open_error(file) == file.string() +
                                   ": schema version 99 was written by a newer ccm (this build "
-                                  "knows up to 3); upgrade ccm to open it");
+                                  "knows up to 4); upgrade ccm to open it");
   }
 }

@@ -477,12 +477,56 @@ void DcrContact::collect_pair_impulses(const std::vector<Vec3>& x) {
 
 // No surface may move, relative to another, more than step_fraction of the shortest surface
 // edge in one step: the projection then stays a small correction, and the end-of-step
-// configuration of a pair stays close to the linear path the CCD assumed.
+// configuration of a pair stays close to the linear path the CCD assumed. The limit applies
+// only while two bodies can come near each other within it (bodies_reach_time).
 double DcrContact::stable_dt_limit(const State& state) const {
   double v_max = 0.0;
   for (int n : features_.nodes) v_max = std::max(v_max, state.v[static_cast<size_t>(n)].norm());
   if (!(v_max > 0.0)) return std::numeric_limits<double>::infinity();
-  return settings_.step_fraction * min_edge_ / (2.0 * v_max);
+  const double limit = settings_.step_fraction * min_edge_ / (2.0 * v_max);
+  return std::max(limit, bodies_reach_time(state));
+}
+
+// Without self-contact: the shortest time in which two bodies' surfaces could come within the
+// proximity distance plus step_fraction of the shortest edge of each other, at twice the
+// predictor's reach (0 when they are that close now; with self-contact always 0). Over a step h
+// the predictor moves a node by h v_a + h^2/2 a_a, so each body's surface stays inside its box
+// at t_n grown by b(h) = h max|v| + h^2/2 max|a| (its nodes' maxima) on every axis, and the
+// largest per-axis gap between two boxes falls by at most b_A(h) + b_B(h). A contact (a CCD hit
+// or a node within the proximity distance of a face) needs that gap below the proximity
+// distance: none can arise within the time returned (docs/contact-time-step.md, "DCR").
+double DcrContact::bodies_reach_time(const State& state) const {
+  if (settings_.self_contact) return 0.0;
+  struct Reach {
+    Eigen::AlignedBox3d box;
+    double v = 0.0, a = 0.0;
+  };
+  std::vector<Reach> bodies;
+  for (size_t i = 0; i < features_.nodes.size(); ++i) {
+    const auto body = static_cast<size_t>(features_.node_body[i]);
+    if (bodies.size() <= body) bodies.resize(body + 1);
+    const auto n = static_cast<size_t>(features_.nodes[i]);
+    bodies[body].box.extend(state.x[n]);
+    bodies[body].v = std::max(bodies[body].v, state.v[n].norm());
+    bodies[body].a = std::max(bodies[body].a, state.a[n].norm());
+  }
+  const double near = proximity_ + settings_.step_fraction * min_edge_;
+  double tau_min = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < bodies.size(); ++i)
+    for (size_t j = i + 1; j < bodies.size(); ++j) {
+      const Reach& A = bodies[i];
+      const Reach& B = bodies[j];
+      if (A.box.isEmpty() || B.box.isEmpty()) continue;
+      const Eigen::Vector3d gaps = (A.box.min() - B.box.max()).cwiseMax(B.box.min() - A.box.max());
+      const double s = gaps.maxCoeff() - near;
+      if (!(s > 0.0)) return 0.0;
+      constexpr double kReachSafety = 2.0;  // as the rigid penalty's
+      const double v = kReachSafety * (A.v + B.v), a = kReachSafety * (A.a + B.a);
+      if (!(v > 0.0 || a > 0.0)) continue;
+      // b(tau) = s: the root of a/2 tau^2 + v tau = s without cancellation.
+      tau_min = std::min(tau_min, 2.0 * s / (v + std::sqrt(v * v + 2.0 * a * s)));
+    }
+  return tau_min;
 }
 
 std::vector<std::string> DcrContact::history_columns() const {

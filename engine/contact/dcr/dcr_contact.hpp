@@ -104,6 +104,7 @@ class DcrContact : public ContactModel, public HistorySource {
   void add_node_face(const State& s, int p, const Triangle& t);
   void add_edge_edge(const State& s, const std::array<int, 2>& ea, const std::array<int, 2>& eb);
   bool bodies_may_touch(const State& s) const;
+  double bodies_reach_time(const State& state) const;
   void project_positions(State& s);
   void exchange_momentum(State& s, double dt);
   ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const;

@@ -27,19 +27,24 @@ TEST_CASE("point metrics of two synthetic runs match the hand computation", "[me
   CHECK(relative_error(m.final_state.u_mean, 0.5) < kRounding);
   CHECK(relative_error(m.final_state.u_max, 0.5) < kRounding);
   CHECK(relative_error(m.final_state.kinetic_energy, 0.75) < kRounding);
-  // NT 4e-3/1e-6 = 4000, 1e-3/2e-6 = 500; RTR 8; TR 600 s and 75 s (2.40-2.43)
+  // Thesis estimate: NT 4e-3/1e-6 = 4000, 1e-3/2e-6 = 500; RTR 8; TR 600 s and 75 s (2.40-2.43)
   CHECK(relative_error(m.ccm.normalised_runtime, 4000.0) < kRounding);
   CHECK(relative_error(m.rigid.normalised_runtime, 500.0) < kRounding);
+  CHECK(relative_error(m.ccm.total_runtime_thesis_estimate, 600.0) < kRounding);
+  CHECK(relative_error(m.rigid.total_runtime_thesis_estimate, 75.0) < kRounding);
+  CHECK(relative_error(m.runtime_ratio_thesis_estimate, 8.0) < kRounding);
+  // Measured: the step loops' CPU seconds, 600 s and 300 s (the rigid run took 4 x the steps
+  // the estimate assumes); RTR 2
   CHECK(relative_error(m.ccm.total_runtime, 600.0) < kRounding);
-  CHECK(relative_error(m.rigid.total_runtime, 75.0) < kRounding);
-  CHECK(relative_error(m.runtime_ratio, 8.0) < kRounding);
-  // w = final-state error / RTR
-  CHECK(relative_error(m.weighting.u_mean, 0.0625) < kRounding);
-  CHECK(relative_error(m.weighting.u_max, 0.0625) < kRounding);
-  CHECK(relative_error(m.weighting.kinetic_energy, 0.09375) < kRounding);
+  CHECK(relative_error(m.rigid.total_runtime, 300.0) < kRounding);
+  CHECK(relative_error(m.runtime_ratio, 2.0) < kRounding);
+  // w = final-state error / measured RTR
+  CHECK(relative_error(m.weighting.u_mean, 0.25) < kRounding);
+  CHECK(relative_error(m.weighting.u_max, 0.25) < kRounding);
+  CHECK(relative_error(m.weighting.kinetic_energy, 0.375) < kRounding);
   // Measured timings are carried along.
   CHECK(m.ccm.steps == 150000);
-  CHECK(m.rigid.wall_seconds == Approx(75.0).epsilon(1e-14));
+  CHECK(m.rigid.wall_seconds == Approx(300.0).epsilon(1e-14));
 }
 
 TEST_CASE("a point with an unstable run is kept but marked unusable, with the reason",
@@ -65,4 +70,15 @@ TEST_CASE("runs sampled at different times are not compared", "[metrics]") {
       compute_point_metrics(synthetic_run(ImpactModel::rigid), synthetic_run(ImpactModel::ccm)));
   CHECK_THROWS(compute_point_metrics(synthetic_run(ImpactModel::ccm, 1),
                                      synthetic_run(ImpactModel::rigid, 2)));
+}
+
+TEST_CASE(
+    "a point whose run has no measured cost (an old store's row) is unusable, with the reason",
+    "[metrics]") {
+  RunRecord rigid_run = synthetic_run(ImpactModel::rigid);
+  rigid_run.cost.reset();
+  const PointMetrics m = compute_point_metrics(synthetic_run(ImpactModel::ccm), rigid_run);
+  CHECK_FALSE(m.usable);
+  CHECK(m.excluded_reason.find("rigid run: its cost was not measured") != std::string::npos);
+  CHECK(m.runtime_ratio == 0.0);
 }
