@@ -47,7 +47,7 @@ TEST_CASE("a version-1 store (runs only) is migrated to the latest schema, data 
   }
   db::StudyStore store(file);
   CHECK(db::schema_version(store.connection()) == db::latest_schema_version());
-  CHECK(db::latest_schema_version() == 3);
+  CHECK(db::latest_schema_version() == 4);
   CHECK(store.study_name() == "old");
   const auto status = store.status();
   REQUIRE(status.size() == 1);
@@ -58,6 +58,11 @@ TEST_CASE("a version-1 store (runs only) is migrated to the latest schema, data 
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM fits") == 0);
   // ... and so do the step-3 (benchtop rig) tables.
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM rig_runs") == 0);
+  // ... and step 4's: fits keyed by the other axes' levels, the grid file.
+  CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM study_grids") == 0);
+  CHECK(test::count_rows(store.connection(),
+                         "SELECT count(*) FROM pragma_table_info('fits') WHERE name = "
+                         "'other_axes'") == 1);
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM rig_calibrations") == 0);
   CHECK(test::integrity_check(store.connection()) == "ok");
 }

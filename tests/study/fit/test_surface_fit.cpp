@@ -111,3 +111,20 @@ TEST_CASE("leave-one-out picks the true degree on noisy data", "[fit]") {
   CHECK(*leave_one_out_rmse(samples, {1, 1}) > fit->loo_rmse);
   CHECK(*leave_one_out_rmse(samples, {3, 2}) > fit->loo_rmse);
 }
+
+TEST_CASE("leave-one-out keeps the constant surface when the data have no trend", "[fit]") {
+  // Pure pseudo-noise around 0.3 on the 4 x 3 grid of Table 2.2: every non-constant degree
+  // fits the noise and predicts a left-out point worse than the mean of the others does.
+  PseudoNoise noise;
+  auto samples = table_grid([](double, double) { return 0.3; });
+  for (SurfaceSample& s : samples) s.z += 0.05 * noise.next();
+  const auto fit = fit_surface(samples);
+  REQUIRE(fit);
+  CHECK(fit->surface.degree == SurfaceDegree{0, 0});
+  // The constant is the samples' mean.
+  double mean = 0.0;
+  for (const SurfaceSample& s : samples) mean += s.z / static_cast<double>(samples.size());
+  CHECK(fit->surface(3.0, 1.0) == Approx(mean).epsilon(1e-12));
+  for (const SurfaceDegree d : {SurfaceDegree{1, 0}, SurfaceDegree{0, 1}, SurfaceDegree{1, 1}})
+    CHECK(*leave_one_out_rmse(samples, d) > fit->loo_rmse);
+}
