@@ -26,10 +26,13 @@ std::string group_id(const study::AxisLevels& axes) {
 
 // The measured grid points of one map, as markers coloured by their measured answer.
 void add_measured_points(const ReportData& data, const study::AxisLevels& axes, double ke,
-                         double max_error, PlotSpec& plot) {
-  Series ccm{.title = "measured point: CCM by the rule", .style = SeriesStyle::points, .color = 3};
-  Series rigid{
-      .title = "measured point: rigid by the rule", .style = SeriesStyle::points, .color = 4};
+                         double max_error, const std::string& at, PlotSpec& plot) {
+  Series ccm{.title = "measured point at " + at + ": CCM by the rule",
+             .style = SeriesStyle::points,
+             .color = 3};
+  Series rigid{.title = "measured point at " + at + ": rigid by the rule",
+               .style = SeriesStyle::points,
+               .color = 4};
   for (const study::PointMetrics& m : data.grid) {
     if (!m.usable || m.point.kinetic_energy != ke || study::fit_axes(m.point) != axes) continue;
     const auto d = study::decide_model(study::measured_inputs(m), max_error);
@@ -72,7 +75,8 @@ std::optional<Figure> map_figure(const ReportData& data, const study::AxisLevels
                         .cell_dx = dx,
                         .cell_dy = dy,
                         .color = 1}};
-  Series unreliable{.title = "unreliable: leave-one-out error exceeds the decision margin",
+  Series unreliable{.title = "unreliable answer (CCM or rigid) at " + at +
+                             ": leave-one-out error exceeds the decision margin",
                     .style = SeriesStyle::points,
                     .color = 2};
   for (const MapCell& c : cells) {
@@ -85,7 +89,7 @@ std::optional<Figure> map_figure(const ReportData& data, const study::AxisLevels
     }
   }
   if (!unreliable.empty()) plot.series.push_back(std::move(unreliable));
-  add_measured_points(data, axes, ke, max_error, plot);
+  add_measured_points(data, axes, ke, max_error, at, plot);
   return make_figure(
       fmt::format("fig-recommendation-ke-{:g}{}", ke, group_id(axes)),
       fmt::format("Model recommended at {} by the rule (rigid where all three predicted "

@@ -108,12 +108,14 @@ struct Predictor {
     const double raw = f->fit.surface(x, y);
     loo = std::max(loo, f->fit.loo_rmse);
     if (f->fit.samples.empty()) return raw;
-    const double value = std::clamp(raw, lo->z, hi->z);
+    // An error is never negative (the measured minimum may be -1e-17 of rounding).
+    const double floor = fitted_in_log10(metric) ? lo->z : std::max(lo->z, 0.0);
+    const double value = std::clamp(raw, floor, std::max(floor, hi->z));
     if (value != raw)
       clamped.push_back(
           fmt::format("{} at KE {:g} J: the surface gives {:.3g}, outside the range measured there "
                       "[{:.3g}, {:.3g}]; clamped to {:.3g}",
-                      to_string(metric), level, raw, lo->z, hi->z, value));
+                      to_string(metric), level, raw, floor, hi->z, value));
     return value;
   }
 

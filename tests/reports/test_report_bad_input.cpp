@@ -119,7 +119,7 @@ TEST_CASE("ccm report migrates an older store holding runs and reports them", "[
   const fs::path file = dir.path / "v1.sqlite";
   test::write_synthetic_study(file);
   {
-    // A schema-1 store: the run ledger (schema step 1) without the tables of steps 2 and 3.
+    // A schema-1 store: the run ledger (schema step 1) without the tables of steps 2 to 4.
     db::Connection c(file);
     c.exec(
         "DROP TABLE rig_calibration_evaluations; DROP TABLE rig_calibration_parameters; "
@@ -127,6 +127,7 @@ TEST_CASE("ccm report migrates an older store holding runs and reports them", "[
         "DROP TABLE rig_channel_samples; DROP TABLE rig_contact; "
         "DROP TABLE rig_channel_spread; DROP TABLE rig_channel_metrics; DROP TABLE rig_runs;");
     c.exec("DROP TABLE fit_points; DROP TABLE fit_terms; DROP TABLE fits; DROP TABLE metrics;");
+    c.exec("DROP TABLE study_grids;");
     c.exec("PRAGMA user_version = 1");
   }
   const fs::path out = dir.path / "report";
