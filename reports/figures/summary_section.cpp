@@ -63,9 +63,8 @@ std::map<study::AxisLevels, GroupCounts> count_groups(
 }
 
 std::string group_sentence(const study::AxisLevels& axes, const GroupCounts& g, double max_error) {
-  std::string s = axes.empty() ? "" : "With " + study::axes_text(axes) + ": ";
-  s += fmt::format("the rule recommends the rigid model at {} of {} measured points", g.rigid,
-                   g.points);
+  std::string s = axes.empty() ? "The rule" : "With " + study::axes_text(axes) + ", the rule";
+  s += fmt::format(" recommends the rigid model at {} of {} measured points", g.rigid, g.points);
   if (g.rigid > 0)
     s += g.rigid_above_all
              ? fmt::format(", all at ER >= {:g}, and every point at such an ER", g.rigid_er_min)

@@ -254,7 +254,11 @@ std::vector<PointDecision> decide_grid_points(const StudyFits& fits,
     if (fits.find(Metric::log10_runtime_ratio, m.point.kinetic_energy, fit_axes(m.point))) {
       RecommendQuery q{m.point.modulus_ratio, m.point.length_ratio, m.point.kinetic_energy,
                        fit_axes(m.point), max_error};
-      d.fitted = recommend(fits, measured, q);
+      try {
+        d.fitted = recommend(fits, measured, q);
+      } catch (const std::runtime_error&) {  // a metric the rule needs has no fit here
+        d.fitted.reset();
+      }
     }
     out.push_back(std::move(d));
   }

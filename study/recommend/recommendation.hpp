@@ -76,7 +76,8 @@ Recommendation recommend(const StudyFits& fits, std::span<const PointMetrics> me
 struct PointDecision {
   const PointMetrics* point = nullptr;
   Decision measured;
-  std::optional<Recommendation> fitted;  // empty when the point's group has no fits
+  // Empty when the point's group lacks a fit the rule needs (too few usable points).
+  std::optional<Recommendation> fitted;
   // The fitted answer differs from the measured one, or it is unreliable.
   bool flagged() const { return fitted && !fitted->reliability.reliable; }
 };

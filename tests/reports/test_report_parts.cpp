@@ -190,7 +190,7 @@ TEST_CASE("synthetic study: stability table and recommendation map against close
     REQUIRE(sentences.size() == 2);
     // 6 points at ER 1e6 (3 RLS x 2 KE) of 23 usable; RTR = 2 sqrt(ER) / 2^RLS is below 1 only
     // at ER 1, RLS 1.5 (and 1 to rounding at RLS 1).
-    CHECK(sentences[0].find("the rule recommends the rigid model at 6 of 23 measured points, "
+    CHECK(sentences[0].find("The rule recommends the rigid model at 6 of 23 measured points, "
                             "all at ER >= 1e+06") != std::string::npos);
     CHECK(sentences[0].find("point(s), up to ER 1, CCM is not dearer") != std::string::npos);
     CHECK(sentences[0].find("The fitted surfaces give the measured answer at 23 of 23 points; 0 "
