@@ -276,7 +276,53 @@ DELETE FROM fit_points WHERE fit_id IN
 DELETE FROM fits WHERE metric IN ('rtr', 'w_u_mean', 'w_u_max', 'w_kinetic_energy');
 )sql";
 
-constexpr std::array<const char*, 4> kSteps = {kStep1, kStep2, kStep3, kStep4};
+// Step 5 (issue 13): fits per combination of the grid's other axes (`fits.other_axes`, part of
+// the unique key: a grid with a damping axis gets one surface per damping level), and the grid
+// file's text (`study_grids`), from which every answer states its modelling choices. Fits are
+// derived data: the older ones (RTR and w fitted as values, one group per KE) are dropped;
+// `ccm study run GRID` on the same grid recomputes them without rerunning anything.
+constexpr const char* kStep5 = R"sql(
+DROP TABLE fit_points;
+DROP TABLE fit_terms;
+DROP TABLE fits;
+CREATE TABLE fits (
+  id INTEGER PRIMARY KEY,
+  study_id INTEGER NOT NULL REFERENCES studies(id),
+  metric TEXT NOT NULL,
+  kinetic_energy REAL NOT NULL,
+  other_axes TEXT NOT NULL DEFAULT '',
+  degree_log_er INTEGER NOT NULL,
+  degree_rls INTEGER NOT NULL,
+  r_squared REAL NOT NULL,
+  loo_rmse REAL NOT NULL,
+  n_points INTEGER NOT NULL,
+  fitted_at TEXT NOT NULL,
+  UNIQUE (study_id, metric, kinetic_energy, other_axes)
+);
+CREATE TABLE fit_terms (
+  fit_id INTEGER NOT NULL REFERENCES fits(id) ON DELETE CASCADE,
+  power_log_er INTEGER NOT NULL,
+  power_rls INTEGER NOT NULL,
+  coefficient REAL NOT NULL,
+  PRIMARY KEY (fit_id, power_log_er, power_rls)
+);
+CREATE TABLE fit_points (
+  fit_id INTEGER NOT NULL REFERENCES fits(id) ON DELETE CASCADE,
+  grid_point_id INTEGER NOT NULL REFERENCES grid_points(id),
+  log10_er REAL NOT NULL,
+  rls REAL NOT NULL,
+  value REAL NOT NULL,
+  PRIMARY KEY (fit_id, grid_point_id)
+);
+CREATE TABLE study_grids (
+  study_id INTEGER PRIMARY KEY REFERENCES studies(id),
+  source TEXT NOT NULL,
+  grid_text TEXT NOT NULL,
+  saved_at TEXT NOT NULL
+);
+)sql";
+
+constexpr std::array<const char*, 5> kSteps = {kStep1, kStep2, kStep3, kStep4, kStep5};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "db/sqlite/statement.hpp"
+#include "db/store/point_key.hpp"
 #include "db/store/row_codes.hpp"
 #include "db/store/study_store.hpp"
 
@@ -107,7 +108,8 @@ void StudyStore::save_fits(const study::StudyFits& fits) {
   clear.run();
   Statement fit_row(*connection_, R"sql(
     INSERT INTO fits (study_id, metric, kinetic_energy, degree_log_er, degree_rls, r_squared,
-                      loo_rmse, n_points, fitted_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9))sql");
+                      loo_rmse, n_points, fitted_at, other_axes)
+    VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10))sql");
   Statement term_row(*connection_,
                      "INSERT INTO fit_terms (fit_id, power_log_er, power_rls, coefficient) "
                      "VALUES (?1, ?2, ?3, ?4)");
@@ -121,6 +123,7 @@ void StudyStore::save_fits(const study::StudyFits& fits) {
     fit_row.bind(1, study_id()).bind(2, study::to_string(f.metric)).bind(3, f.kinetic_energy);
     fit_row.bind(4, s.surface.degree.x).bind(5, s.surface.degree.y).bind(6, s.r_squared);
     fit_row.bind(7, s.loo_rmse).bind(8, static_cast<long long>(s.samples.size())).bind(9, now);
+    fit_row.bind(10, other_axes_text(study::GridPoint{.other_axes = f.axes}));
     fit_row.run();
     const long long fit_id = connection_->last_insert_rowid();
     for (const study::SurfaceTerm& t : s.surface.terms) {
@@ -171,11 +174,26 @@ void load_samples(Connection& c, long long fit_id, study::SurfaceFit& fit) {
 
 }  // namespace
 
+void StudyStore::save_grid(const StoredGrid& grid) {
+  Statement row(*connection_, R"sql(
+    INSERT INTO study_grids (study_id, source, grid_text, saved_at) VALUES (?1, ?2, ?3, ?4)
+    ON CONFLICT (study_id) DO UPDATE SET source = ?2, grid_text = ?3, saved_at = ?4)sql");
+  row.bind(1, study_id()).bind(2, grid.source).bind(3, grid.text).bind(4, utc_now());
+  row.run();
+}
+
+std::optional<StoredGrid> StudyStore::load_grid() const {
+  Statement q(*connection_, "SELECT source, grid_text FROM study_grids WHERE study_id = ?1");
+  q.bind(1, study_id());
+  if (!q.step()) return std::nullopt;
+  return StoredGrid{q.column_text(0), q.column_text(1)};
+}
+
 study::StudyFits StudyStore::load_fits() const {
   study::StudyFits out;
   Statement q(*connection_, R"sql(
-    SELECT id, metric, kinetic_energy, degree_log_er, degree_rls, r_squared, loo_rmse
-    FROM fits WHERE study_id = ?1 ORDER BY kinetic_energy, id)sql");
+    SELECT id, metric, kinetic_energy, degree_log_er, degree_rls, r_squared, loo_rmse, other_axes
+    FROM fits WHERE study_id = ?1 ORDER BY other_axes, kinetic_energy, id)sql");
   q.bind(1, study_id());
   while (q.step()) {
     const auto metric = study::metric_from_string(q.column_text(1));
@@ -186,6 +204,7 @@ study::StudyFits StudyStore::load_fits() const {
     f.fit.surface.degree = {static_cast<int>(q.column_int(3)), static_cast<int>(q.column_int(4))};
     f.fit.r_squared = q.column_double(5);
     f.fit.loo_rmse = q.column_double(6);
+    f.axes = other_axes_from_text(q.column_text(7));
     load_terms(*connection_, q.column_int(0), f.fit.surface);
     load_samples(*connection_, q.column_int(0), f.fit);
     out.fits.push_back(std::move(f));

@@ -18,18 +18,24 @@ study::ImpactModel model_from_text(const std::string& text) {
   throw StoreError("unknown model \"" + text + "\" in the store");
 }
 
+std::map<std::string, double> other_axes_from_text(const std::string& text) {
+  std::map<std::string, double> axes;
+  std::istringstream items(text);
+  for (std::string item; std::getline(items, item, ';');) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) continue;
+    axes[item.substr(0, eq)] = std::strtod(item.c_str() + eq + 1, nullptr);
+  }
+  return axes;
+}
+
 study::GridPoint point_from_row(const Statement& row, int first) {
   study::GridPoint p;
   p.index = static_cast<int>(row.column_int(first));
   p.modulus_ratio = row.column_double(first + 2);
   p.length_ratio = row.column_double(first + 3);
   p.kinetic_energy = row.column_double(first + 4);
-  std::istringstream axes(row.column_text(first + 5));  // "name=value;name=value"
-  for (std::string item; std::getline(axes, item, ';');) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) continue;
-    p.other_axes[item.substr(0, eq)] = std::strtod(item.c_str() + eq + 1, nullptr);
-  }
+  p.other_axes = other_axes_from_text(row.column_text(first + 5));
   return p;
 }
 

@@ -39,6 +39,12 @@ std::string_view to_string(RunStatus status);
 enum class PointState { pending, running, done, unstable, failed };
 std::string_view to_string(PointState state);
 
+// The grid file a study was run from, as `ccm study run` read it (schema step 4).
+struct StoredGrid {
+  std::string source;  // the path as given
+  std::string text;    // the file's text
+};
+
 struct PointStatus {
   study::GridPoint point;
   std::string content_hash;
@@ -95,6 +101,11 @@ class StudyStore {
   std::vector<study::PointMetrics> load_metrics() const;
   void save_fits(const study::StudyFits& fits);
   study::StudyFits load_fits() const;
+
+  // The study's grid file (replacing an earlier one); empty when the store predates schema
+  // step 4 or no `ccm study run` has saved it since.
+  void save_grid(const StoredGrid& grid);
+  std::optional<StoredGrid> load_grid() const;
 
   // Groups several writes into one atomic transaction (the store's own writes nest in it).
   Transaction begin() { return Transaction(*connection_); }

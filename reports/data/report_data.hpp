@@ -2,12 +2,14 @@
 // (reports/data/report_loader.hpp): rendering never touches the database.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "db/store/rig_reader.hpp"
 #include "db/store/study_store.hpp"
 #include "study/fit/study_fits.hpp"
+#include "study/grid/grid_spec.hpp"
 #include "study/metrics/point_metrics.hpp"
 #include "study/runner/run_record.hpp"
 
@@ -38,11 +40,15 @@ struct ReportData {
   std::vector<study::RunRecord> runs{};          // every completed or unstable run, with histories
   std::vector<study::PointMetrics> grid{};       // metrics of the main grid's points
   std::vector<study::PointMetrics> convergence;  // metrics of convergence points (mesh_scale)
+  // Fitted to `grid` when loaded (study::fit_study), so that they always match the measured
+  // points and this ccm's fitting rules.
   study::StudyFits fits{};
+  // The grid file the study was run from (schema step 4); empty for an older store.
+  std::optional<study::GridSpec> grid_spec{};
   RigReportData rig{};
 };
 
 // True for the points of the convergence mode (they carry other_axes["mesh_scale"]).
-bool is_convergence_point(const study::GridPoint& point);
+using study::is_convergence_point;
 
 }  // namespace ccm::reports

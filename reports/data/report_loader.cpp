@@ -5,6 +5,7 @@
 
 #include "db/sqlite/statement.hpp"
 #include "reports/data/rig_loader.hpp"
+#include "study/grid/grid_file.hpp"
 
 namespace ccm::reports {
 namespace {
@@ -50,7 +51,9 @@ ReportData load_report_data(const db::StudyStore& store) {
       if (auto run = store.load_run(s.point, m)) data.runs.push_back(std::move(*run));
   for (study::PointMetrics& m : store.load_metrics())
     (is_convergence_point(m.point) ? data.convergence : data.grid).push_back(std::move(m));
-  data.fits = store.load_fits();
+  data.fits = study::fit_study(data.grid);
+  if (const auto grid = store.load_grid())
+    data.grid_spec = study::parse_grid(grid->text, grid->source);
   data.rig = load_rig_report_data(store.connection());
   return data;
 }

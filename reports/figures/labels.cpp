@@ -25,14 +25,14 @@ std::string case_label(const study::GridPoint& p) {
 std::string metric_label(study::Metric metric) {
   using study::Metric;
   switch (metric) {
-    case Metric::w_u_mean:
-      return "w = final-state error in u_mean / RTR [-]";
-    case Metric::w_u_max:
-      return "w = final-state error in u_max / RTR [-]";
-    case Metric::w_kinetic_energy:
-      return "w = final-state error in artifact KE / RTR [-]";
-    case Metric::runtime_ratio:
-      return "RTR = NT_CCM / NT_rigid [-]";
+    case Metric::log10_w_u_mean:
+      return "log10 w, w = final-state error in u_mean / RTR [log10 -]";
+    case Metric::log10_w_u_max:
+      return "log10 w, w = final-state error in u_max / RTR [log10 -]";
+    case Metric::log10_w_kinetic_energy:
+      return "log10 w, w = final-state error in artifact KE / RTR [log10 -]";
+    case Metric::log10_runtime_ratio:
+      return "log10 RTR, RTR = TR_CCM / TR_rigid (measured) [log10 -]";
     case Metric::final_u_mean:
       return "final-state error in u_mean [-]";
     case Metric::final_u_max:

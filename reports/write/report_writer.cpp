@@ -4,9 +4,9 @@
 
 #include "reports/figures/error_runtime_section.hpp"
 #include "reports/figures/fit_section.hpp"
-#include "reports/figures/recommendation_map.hpp"
 #include "reports/figures/rig_section.hpp"
 #include "reports/figures/stability_section.hpp"
+#include "reports/figures/summary_section.hpp"
 #include "reports/figures/trade_study_section.hpp"
 #include "reports/html/html_page.hpp"
 #include "reports/report_error.hpp"
@@ -29,11 +29,11 @@ void write_text(const fs::path& file, const std::string& text) {
 ReportContent plan_report(const ReportData& data, const ReportOptions& options,
                           const ReportStamp& stamp) {
   ReportContent content{.title = "ccm trade study report: " + data.provenance.study_name};
+  content.sections.push_back(summary_section(data, options.max_error));  // the answer first
   content.sections.push_back(trade_study_section(data));
   content.sections.push_back(stability_section(data));
   content.sections.push_back(fit_section(data));
   content.sections.push_back(error_runtime_section(data));
-  content.sections.push_back(recommendation_section(data, options.max_error));
   content.sections.push_back(rig_section(data.rig));
   content.sections.push_back(provenance_section(data, stamp));
   return content;

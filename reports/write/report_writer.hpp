@@ -8,11 +8,12 @@
 #include "reports/data/report_data.hpp"
 #include "reports/figures/provenance_section.hpp"
 #include "reports/figures/report_content.hpp"
+#include "study/recommend/decision_rule.hpp"
 
 namespace ccm::reports {
 
 struct ReportOptions {
-  double max_error = 0.1;  // error threshold of the recommendation map
+  double max_error = study::kDefaultMaxError;  // the decision rule's error threshold
 };
 
 // Every section of the report, in page order, with the figures' plots but no SVG yet (no

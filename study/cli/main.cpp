@@ -1,7 +1,7 @@
 // The ccm command line: `ccm --version`, `ccm run SCENE --out DIR [--quiet]`,
 // `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE`,
 // `ccm study scene GRID --point N [--model ccm|rigid]`,
-// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]`,
+// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--axis N=V]... [--json]`,
 // `ccm report --db FILE --out DIR [--max-error E]`, `ccm rig list`,
 // `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]`,
 // `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`.
@@ -111,8 +111,13 @@ int main(int argc, char** argv) {
   recommend->add_option("--er", rec.er, "Modulus ratio E_impactor / E_artifact")->required();
   recommend->add_option("--rls", rec.rls, "Length ratio D_impactor / L_artifact")->required();
   recommend->add_option("--ke", rec.ke, "Impactor kinetic energy [J]")->required();
-  recommend->add_option("--max-error", rec.max_error,
-                        "Use rigid when all its predicted final-state errors are below this");
+  recommend
+      ->add_option("--max-error", rec.max_error,
+                   "Use rigid where its final-state errors are all within this and it is cheaper")
+      ->capture_default_str();
+  recommend->add_option("--axis", rec.axes,
+                        "Level of another grid axis, name=value (repeatable; required for an "
+                        "axis with several levels)");
   recommend->add_flag("--json", rec.json, "Print the recommendation as JSON");
 
   ccm::ReportArgs report_args;
@@ -122,8 +127,8 @@ int main(int argc, char** argv) {
   report->add_option("--out,-o", report_args.out, "Report folder (replaced whole)")->required();
   report
       ->add_option("--max-error", report_args.max_error,
-                   "Error threshold of the recommendation map")
-      ->default_val(0.1);
+                   "Error threshold of the decision rule (as `ccm recommend --max-error`)")
+      ->capture_default_str();
   report->footer("Exit codes: 0 written, 1 internal error (e.g. gnuplot missing), 2 bad input.");
 
   ccm::RigListArgs rig_list_args;

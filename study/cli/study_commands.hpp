@@ -1,11 +1,15 @@
 // `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE` and
-// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--json]` and
+// `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--axis NAME=VALUE]... [--json]`
+// and
 // `ccm report --db FILE --out DIR [--max-error E]`.
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "study/recommend/decision_rule.hpp"
 
 namespace ccm {
 
@@ -29,14 +33,15 @@ struct StudyStatusArgs {
 struct RecommendArgs {
   std::filesystem::path db;
   double er = 1.0, rls = 1.0, ke = 0.0;
-  std::optional<double> max_error;
+  double max_error = study::kDefaultMaxError;  // the decision rule's error threshold
+  std::vector<std::string> axes;               // "name=value", one per other grid axis
   bool json = false;
 };
 
 struct ReportArgs {
   std::filesystem::path db;
   std::filesystem::path out;
-  double max_error = 0.1;  // error threshold of the recommendation map
+  double max_error = study::kDefaultMaxError;  // the decision rule's error threshold
 };
 
 struct RigListArgs {

@@ -49,12 +49,16 @@ std::string read_text(const fs::path& file) {
   return text.str();
 }
 
-// Binds the store to the study and registers every point (rank 0, before any worker starts).
+// Binds the store to the study, keeps the grid file's text (every answer states its modelling
+// choices from it) and registers every point (rank 0, before any worker starts).
 void prepare_store(const fs::path& db, const GridSpec& spec, const std::string& grid_hash,
                    const std::vector<PlannedRun>& runs) {
   db::StudyStore store(db);
   store.open_study(spec.title, grid_hash);
+  auto transaction = store.begin();
+  store.save_grid({spec.source.string(), read_text(spec.source)});
   for (const PlannedRun& r : runs) store.add_grid_point(r.point);
+  transaction.commit();
 }
 
 // The record a group of runs that share a scene stores: a member's stored result when one is

@@ -1,4 +1,5 @@
-// `ccm study status --db FILE`: done / running / failed / unstable per grid point.
+// `ccm study status --db FILE`: done / running / failed / unstable per grid point, and the
+// study's modelling choices (from the grid file the store keeps).
 #include <fmt/format.h>
 
 #include <map>
@@ -6,8 +7,10 @@
 #include "db/store/study_store.hpp"
 #include "study/cli/command_errors.hpp"
 #include "study/cli/run_command.hpp"
+#include "study/cli/stored_grid.hpp"
 #include "study/cli/study_commands.hpp"
 #include "study/cli/study_store_open.hpp"
+#include "study/recommend/modelling_choices.hpp"
 
 namespace ccm {
 namespace {
@@ -35,12 +38,23 @@ void print_status(const std::vector<db::PointStatus>& points) {
   fmt::print("{} points: {}\n", points.size(), line.empty() ? "none" : line);
 }
 
+void print_choices(const std::optional<study::GridSpec>& grid) {
+  if (!grid) {
+    fmt::print("{}\n", kNoStoredGrid);
+    return;
+  }
+  fmt::print("modelling choices (grid file {}):\n", grid->source.string());
+  for (const study::ModellingChoice& c : study::modelling_choices(*grid))
+    fmt::print("  {}\n", c.text());
+}
+
 }  // namespace
 
 int study_status_command(const StudyStatusArgs& args) {
   return run_reporting_errors([&] {
     auto store = open_study_store(args.db);
     print_status(store->status());
+    print_choices(stored_grid_spec(*store));
     return exit_code::completed;
   });
 }

@@ -2,50 +2,67 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <utility>
+
 #include "study/recommend/recommendation.hpp"
 
 namespace ccm {
 namespace {
 
-// "ccm" or "rigid" with the reason when the fits cannot say.
-std::string recommended(const study::StudyFits& fits, const study::GridPoint& p) {
-  try {
-    study::RecommendQuery query;
-    query.modulus_ratio = p.modulus_ratio;
-    query.length_ratio = p.length_ratio;
-    query.kinetic_energy = p.kinetic_energy;
-    const auto r = study::recommend(fits, query);
-    return std::string(study::to_string(r.model));
-  } catch (const std::exception&) {
-    return "-";
-  }
+// The fitted answer and its flag: "ok", "UNRELIABLE" (the fits' leave-one-out error exceeds
+// the decision margin) or "DIFFERS" (the fitted surfaces give the other model here).
+std::pair<std::string, std::string> fitted_columns(const study::PointDecision& d) {
+  if (!d.fitted) return {"-", "no fit"};
+  const auto model = std::string(study::to_string(d.fitted->model));
+  if (d.fitted->measured_disagrees) return {model, "DIFFERS"};
+  return {model, d.fitted->reliability.reliable ? "ok" : "UNRELIABLE"};
+}
+
+double largest(const study::ArtifactErrors& e) {
+  return std::max({e.u_mean, e.u_max, e.kinetic_energy});
 }
 
 }  // namespace
 
 void print_point_table(std::FILE* out, const std::vector<study::PointMetrics>& points,
-                       const study::StudyFits& fits) {
+                       const study::StudyFits& fits, double max_error) {
   fmt::print(out,
-             "\nGrid points: final-state errors of rigid against CCM (eqs. 2.37-2.39); RTR "
-             "measured = CPU seconds of the ccm run's step loop / the rigid run's (2.40 with the "
-             "time spent stepping; used by every decision); RTR thesis est. = t_f AIR/ISTS "
-             "ratio with the structural initial step (2.40-2.43; for comparison only); "
-             "recommendation from the fitted surfaces\n");
-  fmt::print(out, "{:>8} {:>5} {:>6}  {:>9} {:>9}  {:>8} {:>8} {:>8}  {:>12} {:>12}  {:>9}  {}\n",
-             "ER", "RLS", "KE[J]", "ccm", "rigid", "e_umean", "e_umax", "e_KE", "RTR measured",
-             "RTR thes.est", "wall[s]", "use");
+             "\nGrid points: final-state errors of rigid against CCM (eqs. 2.37-2.39); RTR = "
+             "measured cost ratio TR_ccm/TR_rigid (CPU seconds of the step loops; used by every "
+             "decision); RTR est. = the thesis's t_f AIR/ISTS ratio with the structural initial "
+             "step (2.40-2.43; for comparison only, never decides); w = error/RTR (largest; "
+             "informational); use = the rule on the measured values, fit = on the fitted "
+             "surfaces\n{}\n",
+             study::decision_rule_text(max_error));
+  fmt::print(out,
+             "{:>8} {:>5} {:>6}  {:>9} {:>9}  {:>8} {:>8} {:>8}  {:>9} {:>9} {:>9}  {:>9}  {:>5} "
+             "{:>5} {}\n",
+             "ER", "RLS", "KE[J]", "ccm", "rigid", "e_umean", "e_umax", "e_KE", "RTR", "RTR est.",
+             "w_max", "wall[s]", "use", "fit", "flag");
+  const std::vector<study::PointDecision> decisions =
+      study::decide_grid_points(fits, points, max_error);
+  std::size_t next = 0;
   for (const auto& m : points) {
     const auto& p = m.point;
+    std::string extra;
+    for (const auto& [name, value] : study::fit_axes(p))
+      extra += fmt::format(" {}={:g}", name, value);
     fmt::print(out, "{:>8.0e} {:>5.2f} {:>6g}  {:>9} {:>9}  ", p.modulus_ratio, p.length_ratio,
                p.kinetic_energy, m.ccm.verdict, m.rigid.verdict);
-    if (!m.usable) {
-      fmt::print(out, "left out of the fits: {}\n", m.excluded_reason);
+    if (next >= decisions.size() || decisions[next].point != &m) {
+      fmt::print(out, "left out of the fits: {}{}\n", m.excluded_reason, extra);
       continue;
     }
-    fmt::print(out, "{:>8.3f} {:>8.3f} {:>8.3f}  {:>12.3g} {:>12.3g}  {:>9.3g}  {}\n",
+    const study::PointDecision& d = decisions[next++];
+    const auto [fitted, flag] = fitted_columns(d);
+    fmt::print(out,
+               "{:>8.3f} {:>8.3f} {:>8.3f}  {:>9.3g} {:>9.3g} {:>9.3g}  {:>9.3g}  {:>5} {:>5} "
+               "{}{}\n",
                m.final_state.u_mean, m.final_state.u_max, m.final_state.kinetic_energy,
-               m.runtime_ratio, m.runtime_ratio_thesis_estimate,
-               m.ccm.wall_seconds + m.rigid.wall_seconds, recommended(fits, p));
+               m.runtime_ratio, m.runtime_ratio_thesis_estimate, largest(m.weighting),
+               m.ccm.wall_seconds + m.rigid.wall_seconds, study::to_string(d.measured.model),
+               fitted, flag, extra);
   }
   for (const auto& note : fits.notes) fmt::print(out, "note: {}\n", note);
 }

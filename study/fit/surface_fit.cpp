@@ -53,10 +53,12 @@ std::vector<Candidate> qualifying_degrees(std::span<const SurfaceSample> samples
   return out;
 }
 
-double z_range(std::span<const SurfaceSample> samples) {
+// The scale of the data for the tie tolerance: their range, or their size when they are all
+// equal (then every degree fits them to rounding of that size).
+double z_scale(std::span<const SurfaceSample> samples) {
   const auto [lo, hi] = std::minmax_element(samples.begin(), samples.end(),
                                             [](const auto& a, const auto& b) { return a.z < b.z; });
-  return hi->z - lo->z;
+  return std::max({hi->z - lo->z, std::abs(lo->z), std::abs(hi->z)});
 }
 
 }  // namespace
@@ -67,7 +69,7 @@ std::optional<SurfaceFit> fit_surface(std::span<const SurfaceSample> samples,
   if (candidates.empty()) return std::nullopt;
   double best = std::numeric_limits<double>::infinity();
   for (const Candidate& c : candidates) best = std::min(best, c.loo_rmse);
-  const double tie = best + 1e-9 * z_range(samples);
+  const double tie = best + 1e-9 * z_scale(samples);
   const Candidate* chosen = nullptr;
   for (const Candidate& c : candidates)
     if (c.loo_rmse <= tie && (!chosen || c.degree.n_terms() < chosen->degree.n_terms()))

@@ -29,10 +29,11 @@ struct FitOptions {
 std::optional<double> leave_one_out_rmse(std::span<const SurfaceSample> samples,
                                          SurfaceDegree degree);
 
-// Fits every degree up to the options' maxima that leaves at least one residual degree of
-// freedom and whose leave-one-out fits are all full rank, and keeps the one with the smallest
-// leave-one-out RMSE. Among degrees whose LOO RMSE is within 1e-9 of the data's range of that
-// best (exact data: all rounding), the one with the fewest terms is kept. Empty when no degree
+// Fits every degree up to the options' maxima, the constant (0, 0) included, that leaves at
+// least one residual degree of freedom and whose leave-one-out fits are all full rank, and
+// keeps the one with the smallest leave-one-out RMSE. Among degrees whose LOO RMSE is within
+// 1e-9 of the data's scale (their range, or their size when all equal) of that best (exact
+// data: all rounding), the one with the fewest terms is kept. Empty when no degree
 // qualifies (fewer than 2 samples).
 std::optional<SurfaceFit> fit_surface(std::span<const SurfaceSample> samples,
                                       const FitOptions& options = {});

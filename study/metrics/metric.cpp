@@ -1,19 +1,20 @@
 #include "study/metrics/metric.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ccm::study {
 
 std::string_view to_string(Metric metric) {
   switch (metric) {
-    case Metric::w_u_mean:
-      return "w_u_mean";
-    case Metric::w_u_max:
-      return "w_u_max";
-    case Metric::w_kinetic_energy:
-      return "w_kinetic_energy";
-    case Metric::runtime_ratio:
-      return "rtr";
+    case Metric::log10_w_u_mean:
+      return "log10_w_u_mean";
+    case Metric::log10_w_u_max:
+      return "log10_w_u_max";
+    case Metric::log10_w_kinetic_energy:
+      return "log10_w_kinetic_energy";
+    case Metric::log10_runtime_ratio:
+      return "log10_rtr";
     case Metric::final_u_mean:
       return "final_u_mean";
     case Metric::final_u_max:
@@ -40,16 +41,36 @@ std::optional<Metric> metric_from_string(std::string_view name) {
   return std::nullopt;
 }
 
+bool fitted_in_log10(Metric metric) {
+  switch (metric) {
+    case Metric::log10_w_u_mean:
+    case Metric::log10_w_u_max:
+    case Metric::log10_w_kinetic_energy:
+    case Metric::log10_runtime_ratio:
+    case Metric::log10_nt_ccm:
+    case Metric::log10_nt_rigid:
+      return true;
+    default:
+      return false;
+  }
+}
+
+namespace {
+
+double log10_weight(double w) { return std::log10(std::max(w, kWeightFloor)); }
+
+}  // namespace
+
 double metric_value(const PointMetrics& p, Metric metric) {
   switch (metric) {
-    case Metric::w_u_mean:
-      return p.weighting.u_mean;
-    case Metric::w_u_max:
-      return p.weighting.u_max;
-    case Metric::w_kinetic_energy:
-      return p.weighting.kinetic_energy;
-    case Metric::runtime_ratio:
-      return p.runtime_ratio;
+    case Metric::log10_w_u_mean:
+      return log10_weight(p.weighting.u_mean);
+    case Metric::log10_w_u_max:
+      return log10_weight(p.weighting.u_max);
+    case Metric::log10_w_kinetic_energy:
+      return log10_weight(p.weighting.kinetic_energy);
+    case Metric::log10_runtime_ratio:
+      return std::log10(p.runtime_ratio);
     case Metric::final_u_mean:
       return p.final_state.u_mean;
     case Metric::final_u_max:

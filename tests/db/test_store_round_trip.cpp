@@ -207,7 +207,7 @@ TEST_CASE("metrics and fits round-trip; unusable points stay visible", "[db]") {
   const study::StudyFits back = store.load_fits();
   REQUIRE(back.fits.size() == fits.fits.size());
   for (const study::MetricFit& f : fits.fits) {
-    const study::MetricFit* g = back.find(f.metric, f.kinetic_energy);
+    const study::MetricFit* g = back.find(f.metric, f.kinetic_energy, f.axes);
     REQUIRE(g);
     CHECK(g->fit.surface.degree == f.fit.surface.degree);
     CHECK(g->fit.r_squared == f.fit.r_squared);
@@ -220,12 +220,53 @@ TEST_CASE("metrics and fits round-trip; unusable points stay visible", "[db]") {
   q.modulus_ratio = 300.0;
   q.length_ratio = 0.8;
   q.kinetic_energy = 50.0;
-  const study::Recommendation from_memory = study::recommend(fits, q);
-  const study::Recommendation from_store = study::recommend(back, q);
+  const study::Recommendation from_memory = study::recommend(fits, points, q);
+  const study::Recommendation from_store = study::recommend(back, loaded, q);
   CHECK(from_store.model == from_memory.model);
   CHECK(from_store.reason == from_memory.reason);
   CHECK(from_store.predicted.weighting.u_max == from_memory.predicted.weighting.u_max);
   REQUIRE(back.excluded.size() == 1);
   CHECK(back.excluded[0].point_index == 4);
   CHECK(back.excluded[0].reason.rfind("ccm run unstable", 0) == 0);
+}
+
+TEST_CASE("fits of several levels of another axis and the grid file round-trip", "[db]") {
+  test::ScratchDir dir("db-fit-groups");
+  db::StudyStore store(dir / "study.sqlite");
+  store.open_study("damped", "g");
+  CHECK_FALSE(store.load_grid());
+  store.save_grid({"grids/damped.toml", "title = \"damped\"\n"});
+  store.save_grid({"grids/damped.toml", "title = \"damped\"\n# edited\n"});  // replaces
+  const auto grid = store.load_grid();
+  REQUIRE(grid);
+  CHECK(grid->source == "grids/damped.toml");
+  CHECK(grid->text == "title = \"damped\"\n# edited\n");
+
+  std::vector<study::PointMetrics> points;
+  int index = 0;
+  for (const double damping : {0.0, 1.0})
+    for (const double er : {1.0, 1e2, 1e4})
+      for (const double rls : {0.5, 1.0}) {
+        study::RunRecord c = test::synthetic_run(ImpactModel::ccm, index);
+        study::RunRecord r = test::synthetic_run(ImpactModel::rigid, index++);
+        for (study::RunRecord* run : {&c, &r}) {
+          run->point.modulus_ratio = er;
+          run->point.length_ratio = rls;
+          run->point.other_axes["damping"] = damping;
+        }
+        c.artifact.u_max.back() = 3.0 + damping + std::log10(er) * rls;
+        store.add_grid_point(c.point);
+        points.push_back(study::compute_point_metrics(c, r));
+        store.save_metrics(points.back());
+      }
+  const study::StudyFits fits = study::fit_study(points);
+  REQUIRE(fits.axis_groups().size() == 2);
+  store.save_fits(fits);  // two fits per (metric, KE): the unique key holds the axes
+  const study::StudyFits back = store.load_fits();
+  REQUIRE(back.fits.size() == fits.fits.size());
+  for (const study::MetricFit& f : fits.fits) {
+    const study::MetricFit* g = back.find(f.metric, f.kinetic_energy, f.axes);
+    REQUIRE(g);
+    CHECK(g->fit.surface(1.5, 0.7) == f.fit.surface(1.5, 0.7));
+  }
 }

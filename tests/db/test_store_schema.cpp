@@ -47,7 +47,7 @@ TEST_CASE("a version-1 store (runs only) is migrated to the latest schema, data 
   }
   db::StudyStore store(file);
   CHECK(db::schema_version(store.connection()) == db::latest_schema_version());
-  CHECK(db::latest_schema_version() == 4);
+  CHECK(db::latest_schema_version() == 5);
   CHECK(store.study_name() == "old");
   const auto status = store.status();
   REQUIRE(status.size() == 1);
@@ -58,6 +58,11 @@ TEST_CASE("a version-1 store (runs only) is migrated to the latest schema, data 
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM fits") == 0);
   // ... and so do the step-3 (benchtop rig) tables.
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM rig_runs") == 0);
+  // ... and step 5's: fits keyed by the other axes' levels, the grid file.
+  CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM study_grids") == 0);
+  CHECK(test::count_rows(store.connection(),
+                         "SELECT count(*) FROM pragma_table_info('fits') WHERE name = "
+                         "'other_axes'") == 1);
   CHECK(test::count_rows(store.connection(), "SELECT count(*) FROM rig_calibrations") == 0);
   CHECK(test::integrity_check(store.connection()) == "ok");
 }
@@ -88,10 +93,16 @@ TEST_CASE("a version-3 store's runs and metrics migrate without an invented meas
         VALUES (1, 1, 'rtr', 10.0, 1, 0, 0.9, 1.0, 4, 'then'),
                (2, 1, 'final_u_mean', 10.0, 1, 0, 0.9, 1.0, 4, 'then');
       INSERT INTO fit_terms VALUES (1, 0, 0, 1.0), (2, 0, 0, 2.0);)sql");
+    // Step 4 alone: fits of RTR (and of w = error / RTR) were fits of the estimate: removed; the
+    // others stay (step 5 then drops every v2 fit: they are refitted from the metrics).
+    db::migrate(c, 4);
+    CHECK(test::count_rows(c, "SELECT count(*) FROM fits") == 1);
+    CHECK(test::count_rows(c, "SELECT count(*) FROM fits WHERE metric = 'final_u_mean'") == 1);
+    CHECK(test::count_rows(c, "SELECT count(*) FROM fit_terms") == 1);
   }
   db::StudyStore store(file);
   db::Connection& c = store.connection();
-  CHECK(db::schema_version(c) == 4);
+  CHECK(db::schema_version(c) == 5);
   // The old run keeps its figures; what was not measured stays NULL, not a made-up number.
   CHECK(test::count_rows(c,
                          "SELECT count(*) FROM runs WHERE steps = 9000 AND "
@@ -113,10 +124,7 @@ TEST_CASE("a version-3 store's runs and metrics migrate without an invented meas
                          "tr_ccm IS NOT NULL OR w_u_mean IS NOT NULL") == 0);
   // An unusable point keeps its own reason.
   CHECK(metrics[1].excluded_reason == "rigid run unstable: energy");
-  // Fits of RTR (and of w = error / RTR) were fits of the estimate: removed; the others stay.
-  CHECK(test::count_rows(c, "SELECT count(*) FROM fits") == 1);
-  CHECK(test::count_rows(c, "SELECT count(*) FROM fits WHERE metric = 'final_u_mean'") == 1);
-  CHECK(test::count_rows(c, "SELECT count(*) FROM fit_terms") == 1);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM fits") == 0);
   CHECK(test::integrity_check(c) == "ok");
 }
 

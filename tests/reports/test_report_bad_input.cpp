@@ -120,7 +120,7 @@ TEST_CASE("ccm report migrates an older store holding runs and reports them", "[
   test::write_synthetic_study(file);
   {
     // A schema-1 store: the run ledger (schema step 1) without the tables and columns of steps
-    // 2-4.
+    // 2-5.
     db::Connection c(file);
     c.exec(
         "DROP TABLE rig_calibration_evaluations; DROP TABLE rig_calibration_parameters; "
@@ -132,6 +132,7 @@ TEST_CASE("ccm report migrates an older store holding runs and reports them", "[
                                "steps_structure", "steps_contact", "steps_max_dt", "steps_landing",
                                "dt_contact_min", "reuses_run_id"})  // step 4's
       c.exec(std::string("ALTER TABLE runs DROP COLUMN ") + column);
+    c.exec("DROP TABLE study_grids;");  // step 5's
     c.exec("PRAGMA user_version = 1");
   }
   const fs::path out = dir.path / "report";

@@ -101,7 +101,7 @@ TEST_CASE("ccm report on the synthetic study: files, self-contained page, proven
   SECTION("every figure of the page is also its own SVG, every table a CSV") {
     const auto figure_ids = attribute_values(html, "<figure id");
     // 3 per-point timing figures, 4 corner histories, 6 errors, 2 NT with surfaces, 2 KE x 4
-    // fits, error against RTR, 2 convergence figures, 2 recommendation maps.
+    // fits, error against RTR, 2 convergence figures, 2 recommendation maps (in the summary).
     CHECK(figure_ids.size() == 3 + 4 + 6 + 2 + 8 + 1 + 2 + 2);
     for (const auto& id : figure_ids) {
       INFO(id);
@@ -109,7 +109,8 @@ TEST_CASE("ccm report on the synthetic study: files, self-contained page, proven
       CHECK(read_text(out / (id + ".svg")).find("<svg") != std::string::npos);
     }
     const auto table_ids = attribute_values(html, "<table id");
-    CHECK(table_ids == std::vector<std::string>{"stability", "fits", "convergence", "provenance"});
+    CHECK(table_ids ==
+          std::vector<std::string>{"points", "stability", "fits", "convergence", "provenance"});
     for (const auto& id : table_ids) {
       INFO(id);
       CHECK(fs::exists(out / (id + ".csv")));
@@ -125,6 +126,24 @@ TEST_CASE("ccm report on the synthetic study: files, self-contained page, proven
     CHECK(test::read_csv(out / "stability.csv").size() ==
           1 + 2 * (test::kSyntheticPoints + test::kConvergencePoints));
     CHECK(test::read_csv(out / "convergence.csv").size() == 1 + 2 * test::kConvergencePoints);
+    CHECK(test::read_csv(out / "points.csv").size() == 1 + test::kSyntheticPoints);
+  }
+
+  SECTION("the page leads with the answer: the rule, the maps and the per-point table first") {
+    const auto section_ids = attribute_values(html, "<section id");
+    REQUIRE_FALSE(section_ids.empty());
+    CHECK(section_ids.front() == "summary");
+    const auto summary = html.find("id=\"summary\"");
+    const auto map = html.find("id=\"fig-recommendation-ke-10\"");
+    const auto points = html.find("id=\"points\"");
+    const auto first_thesis_figure = html.find("id=\"fig-final-u-mean\"");
+    REQUIRE(map != std::string::npos);
+    REQUIRE(first_thesis_figure != std::string::npos);
+    CHECK(summary < map);
+    CHECK(map < first_thesis_figure);
+    CHECK(points < first_thesis_figure);
+    CHECK(html.find("use the rigid model where its final-state error against CCM is within 0.1") <
+          first_thesis_figure);
   }
 
   SECTION("no URL other than in-page anchors, no script") {

@@ -6,6 +6,7 @@
 #include "reports/data/report_loader.hpp"
 #include "reports/figures/recommendation_map.hpp"
 #include "reports/figures/stability_section.hpp"
+#include "reports/figures/summary_section.hpp"
 #include "reports/figures/surface_series.hpp"
 #include "reports/figures/trade_study_section.hpp"
 #include "reports/plot/gnuplot.hpp"
@@ -149,16 +150,52 @@ TEST_CASE("synthetic study: stability table and recommendation map against close
     // rigid is recommended for log10 ER > 4.5. Cells at log10 ER = 0.2 i, i = 0..30: rigid
     // for i >= 23 (4.6, error 0.0933), CCM for i <= 22 (4.4, error 0.1067): 8 of 31 columns.
     for (double ke : {10.0, 100.0}) {
-      const auto cells = recommendation_cells(data.fits, ke, 0.1);
+      const auto cells = recommendation_cells(data.fits, data.grid, {}, ke, 0.1);
       REQUIRE(cells.size() == std::size_t(kMapCells * kMapCells));
       int rigid = 0;
       for (const MapCell& c : cells) {
         const bool expect_rigid = test::synthetic_final_error(c.modulus_ratio) < 0.1;
         CHECK((c.model == study::ImpactModel::rigid) == expect_rigid);
+        // The boundary lies between cell columns 22 and 23 (errors 0.107 and 0.093), far
+        // beyond the exact fits' leave-one-out error (rounding): every cell is reliable.
+        CHECK(c.reliable);
         rigid += c.model == study::ImpactModel::rigid;
       }
       CHECK(rigid == 8 * kMapCells);
     }
+  }
+
+  SECTION("the summary's per-point table: measured errors, RTR, w, the rule, no flag") {
+    const Table t = points_table(data, 0.1);
+    REQUIRE(t.rows.size() == std::size_t(test::kSyntheticPoints));
+    REQUIRE(t.header.size() == 16);
+    for (const auto& row : t.rows) {
+      REQUIRE(row.size() == t.header.size());
+      const int index = std::stoi(row[0]);
+      if (index == test::kUnstablePointIndex) {
+        CHECK(row[15] == data.grid[static_cast<std::size_t>(index)].excluded_reason);
+        continue;
+      }
+      const double er = std::stod(row[1]);
+      // Rigid exactly at ER 1e6 (error 0 <= 0.1, RTR 2000 / 2^RLS > 1), CCM elsewhere.
+      CHECK(row[12] == (er > 1e5 ? "rigid" : "ccm"));
+      CHECK(row[13] == row[12]);
+      CHECK(row[14] == "ok");
+      CHECK(std::stod(row[6]) == Approx(test::synthetic_final_error(er)).margin(1e-3));
+    }
+  }
+
+  SECTION("the summary's sentences are generated from the measured points") {
+    const auto sentences = summary_sentences(data, 0.1);
+    REQUIRE(sentences.size() == 2);
+    // 6 points at ER 1e6 (3 RLS x 2 KE) of 23 usable; RTR = 2 sqrt(ER) / 2^RLS is below 1 only
+    // at ER 1, RLS 1.5 (and 1 to rounding at RLS 1).
+    CHECK(sentences[0].find("The rule recommends the rigid model at 6 of 23 measured points, "
+                            "all at ER >= 1e+06") != std::string::npos);
+    CHECK(sentences[0].find("point(s), up to ER 1, CCM is not dearer") != std::string::npos);
+    CHECK(sentences[0].find("The fitted surfaces give the measured answer at 23 of 23 points; 0 "
+                            "differ and 0 more are unreliable") != std::string::npos);
+    CHECK(sentences[1].find("1 grid point(s) are left out") != std::string::npos);
   }
 }
 

@@ -126,12 +126,40 @@ TEST_CASE("ccm study run: a serial study completes, resumes without rerunning, r
   REQUIRE(shell(fmt::format("'{}' study status --db '{}' > '{}'", CCM_BINARY, db.string(), out),
                 tmp.path / "err", err) == 0);
   CHECK_THAT(read_file(out), Catch::Contains("2 points: 2 done"));
+  // The modelling choices, from the grid file the store keeps.
+  CHECK_THAT(read_file(out), Catch::Contains("modelling choices (grid file " + grid.string()));
+  CHECK_THAT(read_file(out), Catch::Contains("rigid penalty K_P per quadrature point: 1e+06 N/m"));
+  CHECK_THAT(read_file(out), Catch::Contains("impactor mesh size / D_I: 0.5"));
 
   const std::string rec = (tmp.path / "rec.json").string();
   REQUIRE(shell(fmt::format("'{}' recommend --db '{}' --er 10 --rls 0.5 --ke 0.001 --json > '{}'",
                             CCM_BINARY, db.string(), rec),
                 tmp.path / "err", err) == 0);
-  CHECK_THAT(read_file(rec), Catch::Contains("\"model\""));
+  const std::string json = read_file(rec);
+  for (const char* field : {"\"model\"", "\"rule\"", "\"reliable\"", "\"unreliable_reasons\"",
+                            "\"nearest_measured_points\"", "\"modelling_choices\"",
+                            "\"rigid_penalty\"", "\"dcr_restitution\"", "\"clamped\""})
+    CHECK_THAT(json, Catch::Contains(field));
+  CHECK_THAT(json, Catch::Contains("\"value\": 1000000.0"));  // K_P of the grid
+
+  const std::string text = (tmp.path / "rec.txt").string();
+  REQUIRE(shell(fmt::format("'{}' recommend --db '{}' --er 1 --rls 0.5 --ke 0.001 > '{}'",
+                            CCM_BINARY, db.string(), text),
+                tmp.path / "err", err) == 0);
+  CHECK_THAT(read_file(text), Catch::Contains("rule: use the rigid model where"));
+  CHECK_THAT(read_file(text),
+             Catch::Contains("point 0: ER 1, RLS 0.5, KE 0.001 J (distance 0.00)"));
+  CHECK_THAT(read_file(text), Catch::Contains("rigid damping zeta (fraction of critical): 0"));
+
+  // The study has no other axis: naming one is bad input.
+  CHECK(shell(fmt::format("'{}' recommend --db '{}' --er 1 --rls 0.5 --ke 0.001 --axis damping=1",
+                          CCM_BINARY, db.string()),
+              tmp.path / "err", err) == 2);
+  CHECK_THAT(err, Catch::Contains("--axis damping: the study has no such axis"));
+  CHECK(shell(fmt::format("'{}' recommend --db '{}' --er 1 --rls 0.5 --ke 0.001 --axis damping",
+                          CCM_BINARY, db.string()),
+              tmp.path / "err", err) == 2);
+  CHECK_THAT(err, Catch::Contains("--axis damping: expected NAME=VALUE"));
 }
 
 TEST_CASE("ccm study run: killed with SIGKILL mid-study, it resumes to the uninterrupted result",

@@ -1,7 +1,9 @@
-// Recommendations from fitted surfaces: KE interpolation, the two decision rules, warnings.
+// Recommendations from fitted surfaces: KE interpolation, clamping, the one rule, reliability,
+// the nearest measured points, other grid axes, refusals.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "study/recommend/recommendation.hpp"
 
@@ -9,36 +11,33 @@ using namespace ccm::study;
 
 namespace {
 
-// A fit whose surface is the plane z = a + b x over log10 ER in [0, 6], RLS in [0.5, 1.5].
-MetricFit plane(Metric metric, double ke, double a, double b) {
-  MetricFit f;
-  f.metric = metric;
-  f.kinetic_energy = ke;
-  f.fit.surface.degree = {1, 0};
-  f.fit.surface.terms = {{0, 0, a}, {1, 0, b}};
-  f.fit.x_min = 0.0;
-  f.fit.x_max = 6.0;
-  f.fit.y_min = 0.5;
-  f.fit.y_max = 1.5;
-  return f;
+// Every point of ER {1, 1e2, 1e4, 1e6} x RLS {0.5, 1, 1.5} x KE {10, 100} J: errors
+// k (0.3 - 0.05 x) (k = 1 at 10 J, 2 at 100 J; x = log10 ER), RTR = 10^(x / 2), w = error / RTR.
+std::vector<PointMetrics> closed_form_points(AxisLevels axes = {}) {
+  std::vector<PointMetrics> points;
+  int index = 0;
+  for (const double ke : {10.0, 100.0})
+    for (const double rls : {0.5, 1.0, 1.5})
+      for (const double x : {0.0, 2.0, 4.0, 6.0}) {
+        PointMetrics m;
+        m.point = {index++, std::pow(10.0, x), rls, ke, axes};
+        m.usable = true;
+        const double e = (ke == 10.0 ? 1.0 : 2.0) * (0.3 - 0.05 * x);
+        m.final_state = {e, e, e};
+        m.runtime_ratio = std::pow(10.0, x / 2.0);
+        m.weighting = {e / m.runtime_ratio, e / m.runtime_ratio, e / m.runtime_ratio};
+        m.ccm.normalised_runtime = m.rigid.normalised_runtime = 1.0;
+        points.push_back(m);
+      }
+  return points;
 }
 
-// At 10 J: errors 0.3 - 0.05 x, RTR 1 + x, w 0.02; at 100 J everything doubled but RTR.
-StudyFits two_levels() {
-  StudyFits fits;
-  for (const double ke : {10.0, 100.0}) {
-    const double k = ke == 10.0 ? 1.0 : 2.0;
-    for (const Metric m : {Metric::final_u_mean, Metric::final_u_max, Metric::final_kinetic_energy})
-      fits.fits.push_back(plane(m, ke, k * 0.3, k * -0.05));
-    fits.fits.push_back(plane(Metric::runtime_ratio, ke, 1.0, 1.0));
-    for (const Metric m : {Metric::w_u_mean, Metric::w_u_max, Metric::w_kinetic_energy})
-      fits.fits.push_back(plane(m, ke, k * 0.02, 0.0));
-  }
-  return fits;
+RecommendQuery query(double er, double rls, double ke, double max_error = kDefaultMaxError) {
+  return {er, rls, ke, {}, max_error};
 }
 
-bool mentions(const std::vector<std::string>& warnings, const std::string& text) {
-  for (const std::string& w : warnings)
+bool mentions(const std::vector<std::string>& lines, const std::string& text) {
+  for (const std::string& w : lines)
     if (w.find(text) != std::string::npos) return true;
   return false;
 }
@@ -46,70 +45,160 @@ bool mentions(const std::vector<std::string>& warnings, const std::string& text)
 }  // namespace
 
 TEST_CASE("predictions interpolate linearly in KE between the studied levels", "[recommend]") {
-  RecommendQuery q;
-  q.modulus_ratio = 1e2;  // x = 2: error 0.2 at 10 J, 0.4 at 100 J
-  q.length_ratio = 1.0;
-  q.kinetic_energy = 55.0;  // halfway: 0.3
-  const Recommendation r = recommend(two_levels(), q);
-  CHECK(r.predicted.final_state.u_mean == Approx(0.3).epsilon(1e-12));
-  CHECK(r.predicted.final_state.kinetic_energy == Approx(0.3).epsilon(1e-12));
-  CHECK(r.predicted.runtime_ratio == Approx(3.0).epsilon(1e-12));
-  CHECK(r.predicted.weighting.u_max == Approx(0.03).epsilon(1e-12));
+  const auto points = closed_form_points();
+  const StudyFits fits = fit_study(points);
+  // x = 2: error 0.2 at 10 J, 0.4 at 100 J; halfway in KE: 0.3. RTR 10 at both.
+  const Recommendation r = recommend(fits, points, query(1e2, 1.0, 55.0, 0.35));
+  CHECK(r.predicted.final_state.u_mean == Approx(0.3).epsilon(1e-9));
+  CHECK(r.predicted.final_state.kinetic_energy == Approx(0.3).epsilon(1e-9));
+  CHECK(r.predicted.runtime_ratio == Approx(10.0).epsilon(1e-9));
+  // w is interpolated in log10 like RTR: the geometric mean of 0.02 and 0.04.
+  CHECK(r.predicted.weighting.u_max == Approx(std::sqrt(0.02 * 0.04)).epsilon(1e-9));
   CHECK(r.kinetic_energy_levels_used == std::vector<double>{10.0, 100.0});
   CHECK(r.warnings.empty());
-  // w = 0.03 < 0.1: rigid is enough by the weighting rule.
+  CHECK(r.clamped.empty());
+  // Exact data: every leave-one-out error is rounding.
+  CHECK(r.predicted.uncertainty.final_state.u_mean < 1e-12);
+  CHECK(r.predicted.uncertainty.log10_runtime_ratio < 1e-12);
+  // The rule: 0.3 within 0.35 and RTR 10 > 1.
   CHECK(r.model == ImpactModel::rigid);
-  CHECK(r.reason.find("below the threshold") != std::string::npos);
+  CHECK(r.reliability.reliable);
+  CHECK(r.rule == decision_rule_text(0.35));
+  const Recommendation strict = recommend(fits, points, query(1e2, 1.0, 55.0, 0.25));
+  CHECK(strict.model == ImpactModel::ccm);
+  CHECK(strict.reason.find("not all within 0.25") != std::string::npos);
 }
 
-TEST_CASE("the max-error threshold decides by the predicted final-state errors", "[recommend]") {
-  RecommendQuery q;
-  q.modulus_ratio = 1e2;
-  q.kinetic_energy = 55.0;  // errors all 0.3
-  q.max_error = 0.35;
-  CHECK(recommend(two_levels(), q).model == ImpactModel::rigid);
-  q.max_error = 0.25;
-  const Recommendation r = recommend(two_levels(), q);
+TEST_CASE("the cost decides too: accurate but not cheaper is CCM", "[recommend]") {
+  const auto points = closed_form_points();
+  // ER 1: RTR = 1 exactly, errors 0.3 within 0.5: CCM, since the rigid model saves nothing.
+  const Recommendation r = recommend(fit_study(points), points, query(1.0, 1.0, 10.0, 0.5));
+  CHECK(r.predicted.runtime_ratio == Approx(1.0).epsilon(1e-9));
   CHECK(r.model == ImpactModel::ccm);
-  CHECK(r.reason.find("not all below the maximum error 0.25") != std::string::npos);
+  CHECK(r.decision.rigid_within_error);
+  CHECK_FALSE(r.decision.rigid_cheaper);
 }
 
-TEST_CASE("the weighting rule recommends CCM when w reaches the threshold", "[recommend]") {
-  RecommendQuery q;
-  q.modulus_ratio = 1.0;
-  q.kinetic_energy = 100.0;  // exactly a level: w = 0.04
-  q.w_threshold = 0.04;
-  const Recommendation r = recommend(two_levels(), q);
-  CHECK(r.kinetic_energy_levels_used == std::vector<double>{100.0});
-  CHECK(r.model == ImpactModel::ccm);
-  q.w_threshold = 0.0401;
-  CHECK(recommend(two_levels(), q).model == ImpactModel::rigid);
-}
-
-TEST_CASE("queries outside the studied grid are answered with warnings", "[recommend]") {
-  RecommendQuery q;
-  q.modulus_ratio = 1e8;   // log10 ER = 8 > 6
-  q.length_ratio = 2.0;    // > 1.5
-  q.kinetic_energy = 500;  // > 100 J: the 100 J surfaces are used
-  const Recommendation r = recommend(two_levels(), q);
+TEST_CASE("predictions outside the measured range are clamped to it, and say so", "[recommend]") {
+  const auto points = closed_form_points();
+  const Recommendation r = recommend(fit_study(points), points, query(1e8, 2.0, 500.0));
   CHECK(r.kinetic_energy_levels_used == std::vector<double>{100.0});
   CHECK(mentions(r.warnings, "KE = 500 J lies outside the studied levels [10, 100] J"));
   CHECK(mentions(r.warnings, "log10 ER = 8 lies outside"));
   CHECK(mentions(r.warnings, "RLS = 2 lies outside"));
-  // 2 (0.3 - 0.05 x 8) = -0.2: extrapolation left the physical range, and says so.
-  CHECK(r.predicted.final_state.u_mean == Approx(-0.2).epsilon(1e-12));
-  CHECK(mentions(r.warnings, "a predicted final-state error is negative"));
-  CHECK(r.warnings.size() == 4);
+  // The error surface gives 2 (0.3 - 0.05 x 8) = -0.2; the smallest measured at 100 J is 0.
+  CHECK(r.predicted.final_state.u_mean == Approx(0.0).margin(1e-12));
+  CHECK(r.predicted.final_state.u_mean >= 0.0);
+  // log10 RTR = 4 extrapolated; the largest measured is 10^3.
+  CHECK(r.predicted.runtime_ratio == Approx(1e3).epsilon(1e-9));
+  CHECK(mentions(r.clamped, "final_u_mean at KE 100 J: the surface gives -0.2"));
+  CHECK(mentions(r.clamped, "log10_rtr at KE 100 J: the surface gives 4"));
+}
+
+TEST_CASE("the nearest measured points are named with their measured answers", "[recommend]") {
+  const auto points = closed_form_points();
+  // Grid spacings: 2 decades of ER, 0.5 in RLS, 90 J in KE. From (3, 0.8, 30 J) the points
+  // (x 2 or 4, RLS 1, 10 J) are sqrt(0.5^2 + 0.4^2 + (20/90)^2) = 0.678 away, then (2, 0.5).
+  const Recommendation r = recommend(fit_study(points), points, query(1e3, 0.8, 30.0));
+  REQUIRE(r.nearest.size() == std::size_t(kNearestPoints));
+  const double d = std::sqrt(0.25 + 0.16 + std::pow(20.0 / 90.0, 2));
+  CHECK(r.nearest[0].distance == Approx(d).epsilon(1e-12));
+  CHECK(r.nearest[1].distance == Approx(d).epsilon(1e-12));
+  CHECK(r.nearest[0].point.modulus_ratio == Approx(1e2));
+  CHECK(r.nearest[1].point.modulus_ratio == Approx(1e4));
+  CHECK(r.nearest[2].point.length_ratio == 0.5);
+  // At (1e4, 1, 10 J): error 0.1 within 0.1, RTR 100: rigid, measured.
+  CHECK(r.nearest[1].decision.model == ImpactModel::rigid);
+  CHECK(r.nearest[1].measured.runtime_ratio == Approx(100.0));
+  CHECK(r.nearest[0].decision.model == ImpactModel::ccm);
+  CHECK_FALSE(r.at_grid_point);
+}
+
+TEST_CASE("an answer whose leave-one-out error exceeds its margin is unreliable", "[recommend]") {
+  auto points = closed_form_points();
+  // Irregular scatter of 0.03 on the errors at 10 J: the fits cannot follow it, their LOO error
+  // grows.
+  for (PointMetrics& m : points)
+    if (m.point.kinetic_energy == 10.0) {
+      const double s = 0.03 * std::sin(2.6 * m.point.index * m.point.index + 0.5);
+      m.final_state = {m.final_state.u_mean + s, m.final_state.u_max + s,
+                       m.final_state.kinetic_energy + s};
+    }
+  const StudyFits fits = fit_study(points);
+  const Recommendation far = recommend(fits, points, query(1e3, 1.0, 10.0, 0.5));
+  CHECK(far.reliability.reliable);  // 0.15 +- ~0.03 against 0.5
+  const double predicted = far.decision.worst_error;
+  const double loo = far.predicted.uncertainty.final_state.u_max;
+  REQUIRE(loo > 0.01);
+  const Recommendation close =
+      recommend(fits, points, query(1e3, 1.0, 10.0, predicted + 0.5 * loo));
+  CHECK(close.model == ImpactModel::rigid);
+  CHECK_FALSE(close.reliability.reliable);
+  CHECK(mentions(close.reliability.reasons, "within its leave-one-out error"));
+  CHECK(close.nearest.size() == std::size_t(kNearestPoints));  // named with their measured values
+}
+
+TEST_CASE("at a grid point whose measured answer the fits do not reproduce, the answer is flagged",
+          "[recommend]") {
+  auto points = closed_form_points();
+  for (PointMetrics& m : points) m.final_state = {0.05, 0.05, 0.05};  // rigid everywhere but ER 1
+  PointMetrics& outlier = points[6];                                  // x = 4, RLS 1, 10 J
+  REQUIRE(outlier.point.modulus_ratio == Approx(1e4));
+  outlier.final_state.u_max = 0.3;  // measured: CCM
+  const StudyFits fits = fit_study(points);
+  const Recommendation r = recommend(fits, points, query(1e4, 1.0, 10.0));
+  CHECK(r.at_grid_point);
+  CHECK(r.nearest.front().point.index == 6);
+  CHECK(r.nearest.front().decision.model == ImpactModel::ccm);
+  // No low-degree surface follows one point out of twelve: the fit says rigid there.
+  CHECK(r.model == ImpactModel::rigid);
+  CHECK(r.measured_disagrees);
+  CHECK(mentions(r.reliability.reasons, "this is grid point 6, whose measured values give ccm"));
+  CHECK_FALSE(r.reliability.reliable);
+}
+
+TEST_CASE("other grid axes select their own fits; a swept axis must be named", "[recommend]") {
+  std::vector<PointMetrics> points = closed_form_points({{"damping", 0.0}});
+  for (PointMetrics m : closed_form_points({{"damping", 1.0}})) {
+    m.point.index += 24;
+    m.final_state = {0.01, 0.01, 0.01};
+    points.push_back(m);
+  }
+  const StudyFits fits = fit_study(points);
+  RecommendQuery q = query(1e2, 1.0, 10.0);
+  CHECK_THROWS_WITH(recommend(fits, points, q),
+                    "recommend: the study has 2 levels of axis 'damping' (0, 1): choose one with "
+                    "--axis damping=VALUE");
+  q.axes = {{"damping", 0.5}};
+  CHECK_THROWS_WITH(recommend(fits, points, q),
+                    Catch::Contains("--axis damping=0.5: not a studied level of damping (levels: "
+                                    "0, 1)"));
+  q.axes = {{"penalty", 1.0}};
+  CHECK_THROWS_WITH(recommend(fits, points, q),
+                    Catch::Contains("--axis penalty: the study has no such axis"));
+  q.axes = {{"damping", 1.0}};
+  const Recommendation r1 = recommend(fits, points, q);
+  CHECK(r1.axes == AxisLevels{{"damping", 1.0}});
+  CHECK(r1.predicted.final_state.u_max == Approx(0.01).epsilon(1e-9));
+  CHECK(r1.model == ImpactModel::rigid);
+  for (const NearbyPoint& p : r1.nearest) CHECK(p.point.other_axes.at("damping") == 1.0);
+  q.axes = {{"damping", 0.0}};
+  CHECK(recommend(fits, points, q).model == ImpactModel::ccm);  // error 0.2
 }
 
 TEST_CASE("bad queries and missing fits are refused with a clear message", "[recommend]") {
-  RecommendQuery q;
-  q.kinetic_energy = 50.0;
-  q.modulus_ratio = 0.0;
-  CHECK_THROWS_WITH(recommend(two_levels(), q), "recommend: ER must be positive");
-  q.modulus_ratio = 1.0;
-  CHECK_THROWS_WITH(recommend(StudyFits{}, q), "recommend: the study has no fits");
-  StudyFits partial = two_levels();
-  partial.fits.pop_back();  // w_kinetic_energy at 100 J
-  CHECK_THROWS_WITH(recommend(partial, q), "recommend: no fit of w_kinetic_energy at KE = 100 J");
+  const auto points = closed_form_points();
+  const StudyFits fits = fit_study(points);
+  CHECK_THROWS_WITH(recommend(fits, points, query(0.0, 1.0, 50.0)),
+                    "recommend: ER must be positive");
+  CHECK_THROWS_WITH(recommend(fits, points, query(1.0, 1.0, 50.0, -0.1)),
+                    "recommend: max error must be a non-negative number");
+  CHECK_THROWS_WITH(recommend(StudyFits{}, points, query(1.0, 1.0, 50.0)),
+                    "recommend: the study has no fits");
+  StudyFits partial = fits;
+  std::erase_if(partial.fits, [](const MetricFit& f) {
+    return f.metric == Metric::log10_w_kinetic_energy && f.kinetic_energy == 100.0;
+  });
+  CHECK_THROWS_WITH(recommend(partial, points, query(1.0, 1.0, 50.0)),
+                    "recommend: no fit of log10_w_kinetic_energy at KE = 100 J");
 }
