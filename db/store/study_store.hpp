@@ -39,7 +39,7 @@ std::string_view to_string(RunStatus status);
 enum class PointState { pending, running, done, unstable, failed };
 std::string_view to_string(PointState state);
 
-// The grid file a study was run from, as `ccm study run` read it (schema step 4).
+// The grid file a study was run from, as `ccm study run` read it (schema step 5).
 struct StoredGrid {
   std::string source;  // the path as given
   std::string text;    // the file's text
@@ -103,7 +103,7 @@ class StudyStore {
   study::StudyFits load_fits() const;
 
   // The study's grid file (replacing an earlier one); empty when the store predates schema
-  // step 4 or no `ccm study run` has saved it since.
+  // step 5 or no `ccm study run` has saved it since.
   void save_grid(const StoredGrid& grid);
   std::optional<StoredGrid> load_grid() const;
 

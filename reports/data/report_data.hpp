@@ -43,7 +43,7 @@ struct ReportData {
   // Fitted to `grid` when loaded (study::fit_study), so that they always match the measured
   // points and this ccm's fitting rules.
   study::StudyFits fits{};
-  // The grid file the study was run from (schema step 4); empty for an older store.
+  // The grid file the study was run from (schema step 5); empty for an older store.
   std::optional<study::GridSpec> grid_spec{};
   RigReportData rig{};
 };

@@ -88,7 +88,7 @@ std::string group_sentence(const study::AxisLevels& axes, const GroupCounts& g, 
 void add_choices(const ReportData& data, Section& s) {
   if (!data.grid_spec) {
     s.paragraphs.push_back(
-        "Modelling choices: not recorded (the store predates schema step 4; run `ccm study run "
+        "Modelling choices: not recorded (the store predates schema step 5; run `ccm study run "
         "GRID --db FILE` once on the same grid to record them; nothing is rerun).");
     return;
   }

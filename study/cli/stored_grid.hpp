@@ -18,7 +18,7 @@ inline std::optional<study::GridSpec> stored_grid_spec(const db::StudyStore& sto
 }
 
 inline constexpr const char* kNoStoredGrid =
-    "modelling choices not recorded: the store predates schema step 4; run `ccm study run "
+    "modelling choices not recorded: the store predates schema step 5; run `ccm study run "
     "GRID --db FILE` on the same grid file once (nothing is rerun) to record them";
 
 }  // namespace ccm

@@ -71,8 +71,9 @@ PointMetrics compute_point_metrics(const RunRecord& ccm, const RunRecord& rigid)
   const ArtifactHistory& c = ccm.artifact;
   const ArtifactHistory& r = rigid.artifact;
   m.t_final = c.time.back();
-  m.cumulative = {cumulative_error(c.u_mean, r.u_mean), cumulative_error(c.u_max, r.u_max),
-                  cumulative_error(c.kinetic_energy, r.kinetic_energy)};
+  m.cumulative = {cumulative_error(c.time, c.u_mean, r.u_mean),
+                  cumulative_error(c.time, c.u_max, r.u_max),
+                  cumulative_error(c.time, c.kinetic_energy, r.kinetic_energy)};
   m.final_state = {final_state_error(c.u_mean, r.u_mean), final_state_error(c.u_max, r.u_max),
                    final_state_error(c.kinetic_energy, r.kinetic_energy)};
   for (ModelTiming* t : {&m.ccm, &m.rigid}) {

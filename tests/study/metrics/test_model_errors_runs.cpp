@@ -77,7 +77,7 @@ Errors errors_at(const char* output_interval) {
   for (size_t i = 0; i < hc.time.size(); ++i)
     e.printed_u_max += (hc.u_max[i] - hr.u_max[i]) * (hc.u_max[i] - hr.u_max[i]);
   e.samples = hc.time.size();
-  // Uniform samples: the form without times (what the point metrics call) gives the same.
+  // Uniform samples: the form without times gives the same.
   CHECK(relative_error(cumulative_error(hc.u_max, hr.u_max), e.u_max) < 1e-12);
   return e;
 }
