@@ -170,6 +170,6 @@ TEST_CASE("foreign files are refused with a message naming the file, and left un
     }
     CHECK(open_error(file) == file.string() +
                                   ": schema version 99 was written by a newer ccm (this build "
-                                  "knows up to 4); upgrade ccm to open it");
+                                  "knows up to 5); upgrade ccm to open it");
   }
 }

@@ -168,19 +168,24 @@ TEST_CASE("synthetic study: stability table and recommendation map against close
   SECTION("the summary's per-point table: measured errors, RTR, w, the rule, no flag") {
     const Table t = points_table(data, 0.1);
     REQUIRE(t.rows.size() == std::size_t(test::kSyntheticPoints));
-    REQUIRE(t.header.size() == 16);
+    REQUIRE(t.header.size() == 17);
+    CHECK(t.header[8] == "RTR measured [-]");
+    CHECK(t.header[9] == "RTR thesis estimate [-]");
     for (const auto& row : t.rows) {
       REQUIRE(row.size() == t.header.size());
       const int index = std::stoi(row[0]);
       if (index == test::kUnstablePointIndex) {
-        CHECK(row[15] == data.grid[static_cast<std::size_t>(index)].excluded_reason);
+        CHECK(row[16] == data.grid[static_cast<std::size_t>(index)].excluded_reason);
         continue;
       }
       const double er = std::stod(row[1]);
       // Rigid exactly at ER 1e6 (error 0 <= 0.1, RTR 2000 / 2^RLS > 1), CCM elsewhere.
-      CHECK(row[12] == (er > 1e5 ? "rigid" : "ccm"));
-      CHECK(row[13] == row[12]);
-      CHECK(row[14] == "ok");
+      CHECK(row[13] == (er > 1e5 ? "rigid" : "ccm"));
+      CHECK(row[14] == row[13]);
+      CHECK(row[15] == "ok");
+      const study::PointMetrics& m = data.grid[static_cast<std::size_t>(index)];
+      CHECK(std::stod(row[8]) == Approx(m.runtime_ratio).epsilon(5e-4));  // cells keep 4 digits
+      CHECK(std::stod(row[9]) == Approx(m.runtime_ratio_thesis_estimate).epsilon(5e-4));
       CHECK(std::stod(row[6]) == Approx(test::synthetic_final_error(er)).margin(1e-3));
     }
   }
