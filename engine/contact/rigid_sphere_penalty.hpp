@@ -1,6 +1,6 @@
 // The rigid-body contact model of the trade study (thesis 2.8): an analytic rigid sphere (no
 // mesh) pushed out of one deformable body's surface by penalty springs (thesis eq. 2.5-2.6;
-// EQUATIONS.md "Rigid-sphere penalty"; contact-method.md §5 "Penalty" and §6(d)).
+// docs/equations.md "Rigid-sphere penalty"; docs/contact-method.md §5 "Penalty" and §6(d)).
 //
 // Where the springs act. The surface's triangles (default "<body>/boundary") carry the
 // symmetric 3-point rule of degree 2: barycentric (2/3, 1/6, 1/6) and its two rotations. At each

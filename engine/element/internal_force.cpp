@@ -128,7 +128,7 @@ void pack_kernel(const ElementPack& p, const double* x, const Lame& lame, PackRe
   if constexpr (Energy == WithEnergy::yes) store(out.W, V0 * W);
 
   // f_a = -V0 P grad N_a: for a = 1..3 the columns of H = -V0 P Dm^-T,
-  // H(i, a) = -V0 sum_c P(i, c) Dm^-1(a, c); f_0 = -(f_1 + f_2 + f_3)   (EQUATIONS.md, tet)
+  // H(i, a) = -V0 sum_c P(i, c) Dm^-1(a, c); f_0 = -(f_1 + f_2 + f_3)   (docs/equations.md "Linear tetrahedron")
   for (int i = 0; i < 3; ++i) {
     Lanes f0 = broadcast(0.0);
     for (int a = 0; a < 3; ++a) {

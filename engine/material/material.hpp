@@ -28,12 +28,12 @@ struct Lame {
   double mu;
 };
 
-// lambda = E nu / ((1+nu)(1-2nu)), mu = E / (2(1+nu))   (EQUATIONS.md, Material)
+// lambda = E nu / ((1+nu)(1-2nu)), mu = E / (2(1+nu))   (docs/equations.md "Material")
 inline Lame lame_from(const MaterialParams& m) {
   return {m.E * m.nu / ((1.0 + m.nu) * (1.0 - 2.0 * m.nu)), m.E / (2.0 * (1.0 + m.nu))};
 }
 
-// Dilatational wave speed c_d = sqrt((lambda + 2 mu) / rho)   (EQUATIONS.md)
+// Dilatational wave speed c_d = sqrt((lambda + 2 mu) / rho)   (docs/equations.md "Material")
 double dilatational_wave_speed(const MaterialParams& m);
 
 }  // namespace ccm

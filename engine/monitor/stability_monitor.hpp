@@ -24,7 +24,7 @@ struct Instability {
   int node = -1;
 };
 
-// Energy balance (EQUATIONS.md): KE + IE - (KE_0 + IE_0) - W_ext, relative to the largest
+// Energy balance (docs/equations.md "Energy balance"): KE + IE - (KE_0 + IE_0) - W_ext, relative to the largest
 // energy seen in the run so that a body at rest that is then loaded is judged fairly.
 class EnergyBalance {
  public:

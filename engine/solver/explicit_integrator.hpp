@@ -1,5 +1,5 @@
 // Explicit central difference (Newmark beta = 0, gamma = 1/2) in the Predict-Evaluate-Correct
-// order of thesis 2.5.2 (eq. 2.27-2.31; EQUATIONS.md):
+// order of thesis 2.5.2 (eq. 2.27-2.31; docs/equations.md "Explicit central difference"):
 //   1. predict  x_{n+1} = x_n + dt v_n + dt^2/2 a_n,   v* = v_n + dt/2 a_n
 //   2. evaluate a_{n+1} = M^-1 (f_ext(t_{n+1}) + f_int(x_{n+1}))  (+ gravity; f_ext: the
 //      surface loads and the state loads)

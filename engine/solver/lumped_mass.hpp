@@ -1,4 +1,4 @@
-// Lumped (row-sum) mass of linear tets: rho V0 / 4 to each node   (EQUATIONS.md, tet).
+// Lumped (row-sum) mass of linear tets: rho V0 / 4 to each node   (docs/equations.md "Linear tetrahedron").
 #pragma once
 
 #include <vector>

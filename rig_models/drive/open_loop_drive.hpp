@@ -2,7 +2,7 @@
 // calculated through differentiating the tracked impactor velocity, V_i, over time and computing
 // the input force through the known mass of the impactor ... whenever the experimental pressure,
 // P, was non-zero and the differentiated input force was negative, the input force was instead
-// forced to zero" (EQUATIONS.md, Rig post-processing):
+// forced to zero" (docs/equations.md "Rig: open-loop drive"):
 //   F_in(t_k) = M_i dV_i/dt (t_k)   (V_i smoothed by a local quadratic fit, local_fit.hpp,
 //                                     that does not reach across the first measured contact)
 //   F_in(t_k) = 0 where F_in(t_k) < 0 and the measured P is non-zero at t_k

@@ -28,7 +28,7 @@ TimeSeries artifact_angle_deg(std::span<const double> t, std::span<const double>
 TimeSeries raw_pressure_kpa(std::span<const double> t, std::span<const double> contact_force_n,
                             double sensor_area_m2);
 
-// What the pressure sensor reads (thesis 3.3.3, EQUATIONS.md "Rig post-processing"): the
+// What the pressure sensor reads (thesis 3.3.3, docs/equations.md "Rig post-processing"): the
 // deadband on P_raw, then the first-order Butterworth low-pass at the cutoff (bilinear, at
 // the simulation's uniform output rate), then sampled at the measurement times.
 struct PressureSensor {

@@ -3,7 +3,7 @@
 // contact, this velocity was differentiated across the model time step and multiplied by that
 // node's lumped nodal mass ... projected along the axis of motion of the impactor" and summed
 // over the sensor surface Gamma_s:
-//   F_c = sum_{j in Gamma_s} m_j (v_j,after - v_j,before) . d / dt          (EQUATIONS.md)
+//   F_c = sum_{j in Gamma_s} m_j (v_j,after - v_j,before) . d / dt          (docs/equations.md "Contact force and sensor pressure")
 // A contact model decorator: it forwards every hook of ContactModel (all nine, the figures the
 // monitor checks included: a dropped injected_energy would switch off the contact-energy check
 // in every rig run) to the model it wraps and, around its correction, reads the velocities of

@@ -1,5 +1,5 @@
 // A polynomial surface with its degree chosen by leave-one-out cross-validation, and its
-// goodness-of-fit figures (thesis App. B; EQUATIONS.md "Surface fits").
+// goodness-of-fit figures (thesis App. B; docs/equations.md "Surface fits").
 #pragma once
 
 #include <optional>

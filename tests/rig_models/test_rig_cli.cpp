@@ -23,7 +23,7 @@ using namespace ccm;
 
 namespace {
 
-// A copy of ../shared/data/rig-dev kept in the repository (tests/data/rig-dev/README.md).
+// The synthetic trials kept in the repository (tests/data/rig-dev/README.md).
 const fs::path kDevData = fs::path(CCM_SOURCE_DIR) / "tests" / "data" / "rig-dev";
 const fs::path kShortGeometry =
     fs::path(CCM_SOURCE_DIR) / "tests" / "rig_models" / "data" / "short_geometry.toml";

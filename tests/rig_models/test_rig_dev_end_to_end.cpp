@@ -20,7 +20,7 @@ using namespace ccm::rig;
 
 namespace {
 
-// A copy of ../shared/data/rig-dev kept in the repository (tests/data/rig-dev/README.md).
+// The synthetic trials kept in the repository (tests/data/rig-dev/README.md).
 const fs::path kDevData = fs::path(CCM_SOURCE_DIR) / "tests" / "data" / "rig-dev";
 const fs::path kCaseFile = fs::path(CCM_SOURCE_DIR) / "rig_models" / "cases.toml";
 

@@ -1,4 +1,4 @@
-// Hertz impact of two identical elastic spheres (contact-method.md 6a; Johnson 1985, 11.4) and
+// Hertz impact of two identical elastic spheres (docs/contact-method.md §6(a); Johnson 1985, 11.4) and
 // its DCR simulation, shared by the default-suite and the [validation] tests.
 #pragma once
 

@@ -1,6 +1,6 @@
 // A Gmsh sphere whose mesh is refined around one pole, for contact tests that must resolve a
 // small contact patch (Hertz: >= 8-10 surface elements across the contact radius,
-// contact-method.md 6a) without paying for that resolution in the whole sphere.
+// docs/contact-method.md §6(a)) without paying for that resolution in the whole sphere.
 #pragma once
 
 #include "engine/core/types.hpp"

@@ -1,5 +1,5 @@
 // Broad phase of the DCR contact search: the node-face and edge-edge pairs of a contact surface
-// whose swept, inflated bounding boxes overlap during a step (contact-method.md §4; thesis 2.4).
+// whose swept, inflated bounding boxes overlap during a step (docs/contact-method.md §4; thesis 2.4).
 //
 // Verlet-style candidate cache with a skin (Verlet 1967; the "neighbour list" of molecular
 // dynamics, here on boxes instead of spheres). At a rebuild every surface node's swept box is

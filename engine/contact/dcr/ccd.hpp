@@ -1,5 +1,5 @@
 // Narrow phase of the DCR contact search: the DCR constraint volumes, their gradients, and
-// continuous collision detection over a step (contact-method.md §1.1 and §3; thesis 2.4.2,
+// continuous collision detection over a step (docs/contact-method.md §1.1 and §3; thesis 2.4.2,
 // fig. 2-3).
 //
 // CCD. Every position moves linearly over the step: x(tau) = x0 + tau (x1 - x0), tau in [0, 1].
@@ -38,7 +38,7 @@
 //  - No hit is reported for a degenerate triangle (area below 1e-12 L^2) or for (near-)parallel
 //    edges (|e1 x e2| < 1e-8 |e1| |e2|): their gradient vanishes, and node-face pairs cover them.
 //  - No minimum separation is built in: the response projects to a separation delta_sep > 0
-//    (contact-method.md §3), and the broad phase's inflation keeps such pairs as candidates.
+//    (docs/contact-method.md §3), and the broad phase's inflation keeps such pairs as candidates.
 //  - A node already inside at the start that stays inside has no root and is not a hit; the
 //    response can find it from the sign of g.
 #pragma once

@@ -1,4 +1,4 @@
-// Velocity-level contact solve of the DCR (contact-method.md 1.3-1.4): non-negative normal
+// Velocity-level contact solve of the DCR (docs/contact-method.md §1.3-1.4): non-negative normal
 // impulses and Coulomb friction impulses of all contacts of a step, iterated together.
 //
 // Each contact k has a normal row and two tangential rows on its four nodes a:

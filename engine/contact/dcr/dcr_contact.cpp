@@ -115,7 +115,7 @@ void DcrContact::begin_step(const State& state, double /*dt*/) {
   x_n_ = state.x;
 }
 
-// g = sign * signed volume (contact-method.md 1.1); returns it.
+// g = sign * signed volume (docs/contact-method.md §1.1); returns it.
 double DcrContact::constraint_value(const Constraint& c, const std::vector<Vec3>& x) const {
   const auto& n = c.nodes;
   const double v = c.node_face ? node_face_volume(x[n[0]], x[n[1]], x[n[2]], x[n[3]])
@@ -302,7 +302,7 @@ void DcrContact::remember_start(const State& s, size_t first) {
   for (int n : moved_) count_[static_cast<size_t>(n)] = 0;
 }
 
-// Mass-weighted projection onto g >= separation * k (contact-method.md 1.2): Newton steps
+// Mass-weighted projection onto g >= separation * k (docs/contact-method.md §1.2): Newton steps
 // lambda = (target - g) / W along M^-1 grad g, one constraint after the other in the geometric
 // order, forward then backward (symmetric Gauss-Seidel), until every constraint holds. Each
 // step moves the four nodes by amounts whose mass-weighted sum and moment vanish, so linear

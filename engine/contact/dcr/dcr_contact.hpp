@@ -9,13 +9,13 @@
 //      the face. Each contact is a constraint g(x) >= 0, g the signed volume of the node and
 //      face (or the two edges), oriented so that the start of the step is admissible;
 //   2. impenetrability: a mass-weighted projection along grad g onto g >= g_sep (linear and
-//      angular momentum conserved exactly, contact-method.md 1.2), symmetric Gauss-Seidel
+//      angular momentum conserved exactly, docs/contact-method.md §1.2), symmetric Gauss-Seidel
 //      sweeps in an order fixed by the geometry (never by node numbers or search order) until
 //      every constraint holds; then the forces of the elements around the moved nodes are
 //      re-evaluated and the stored energy they gained is booked (projection_update.hpp);
 //   3. momentum decomposition (contact_impulses.hpp): on the end-of-step velocity v* + dt/2 a,
 //      each contact may approach at most by its remaining gap in the next step
-//      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, contact-method.md 1.5),
+//      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, docs/contact-method.md §1.5),
 //      with Coulomb friction iterated together with the normal impulses;
 //   4. restitution (pair_restitution.hpp): the user's coefficient e acts on the rigid motions
 //      of the two bodies when a contact episode ends.

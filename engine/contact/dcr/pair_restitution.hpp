@@ -1,7 +1,7 @@
 // Body-pair restitution (docs/contact-restitution.md): the coefficient of restitution e a user
 // knows from a drop test, applied to a contact episode between two bodies, not to a node.
 //
-// The constraint-level response is always inelastic (e = 0 per contact, contact-method.md 1.5):
+// The constraint-level response is always inelastic (e = 0 per contact, docs/contact-method.md §1.5):
 // the rebound of a continuum comes from its elastic waves, and a deformable sphere so rebounds at
 // nearly its impact speed. That elastic rebound is the e = 1 result. For e < 1, when the two bodies
 // separate, Newton's law for the episode is enforced on their rigid-body motions (the mass-

@@ -1,5 +1,5 @@
 // The grid search of the DCR broad phase: every node-face and edge-edge pair of a contact surface
-// whose (swept, inflated) boxes overlap (contact-method.md §4).
+// whose (swept, inflated) boxes overlap (docs/contact-method.md §4).
 //
 // Spatial hash (Teschner et al. 2003, VMV). Every face and every edge is entered in each cell of a
 // uniform grid that its box covers. Cell (i, j, k) goes to bucket H(i 73856093 ^ j 19349663 ^

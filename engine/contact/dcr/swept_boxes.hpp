@@ -1,5 +1,5 @@
 // Swept, inflated axis-aligned boxes of the contact surface's features over one step
-// (contact-method.md §4, thesis 2.4):
+// (docs/contact-method.md §4, thesis 2.4):
 //   node box  = [min(x_n, x_{n+1}), max(x_n, x_{n+1})]  (per coordinate),
 //   edge/face = the hull of its nodes' boxes,
 // every box then inflated by the same `inflation` on every side. The broad phase's grid search

@@ -1,6 +1,6 @@
 // The rigid-sphere penalty model (thesis 2.8; engine/contact/rigid_sphere_penalty.hpp):
 // forces against the derivative of the penalty energy, momentum and energy through an impact on
-// a free body, the 1-DOF closed form (contact-method.md §6(d)), the stable step limit binding and
+// a free body, the 1-DOF closed form (docs/contact-method.md §6(d)), the stable step limit binding and
 // its margin, no contact at a distance, and the [contact] table of the scene file.
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -282,7 +282,7 @@ TEST_CASE("rigid sphere penalty: energy of sphere + free body conserved through 
 
 TEST_CASE("rigid sphere penalty: one spring against a wall follows the closed form",
           "[contact][rigid_penalty]") {
-  // contact-method.md §6(d): contact time pi sqrt(m / K_P), F_max = v0 sqrt(K_P m),
+  // docs/contact-method.md §6(d): contact time pi sqrt(m / K_P), F_max = v0 sqrt(K_P m),
   // delta_max = v0 sqrt(m / K_P), rebound speed = impact speed up to the central difference
   // error at omega dt (§5: +-1.1 % at omega dt = 0.3).
   const double v0 = 0.5;

@@ -76,7 +76,7 @@ TEST_CASE("DCR volumes: values, gradients against finite differences, invariance
   CHECK(edge_edge_volume(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 1)) ==
         Approx(1.0 / 6.0));
 
-  // At contact the gradient is (A/3)[n, -w_a n, -w_b n, -w_c n] (contact-method.md §1.1).
+  // At contact the gradient is (A/3)[n, -w_a n, -w_b n, -w_c n] (docs/contact-method.md §1.1).
   Vec3 gr[4];
   node_face_volume_gradient(Vec3(0.5, 0.75, 0), a, b, c, gr);
   const double w_b = 0.25, w_c = 0.25, w_a = 0.5;

@@ -65,7 +65,7 @@ BarImpact run_bars(double restitution, int cells_along, double tail = 2e-3) {
 
 }  // namespace
 
-// The constraint-level response is inelastic (e = 0 per contact, contact-method.md 1.5): the
+// The constraint-level response is inelastic (e = 0 per contact, docs/contact-method.md §1.5): the
 // elastic exchange of the bars comes from their waves. The user's restitution e acts on the two
 // bodies' rigid motions when they separate, so e = 1 keeps this elastic result (before, e = 1
 // per node made the bars chatter: v_b = 0.47 v0).

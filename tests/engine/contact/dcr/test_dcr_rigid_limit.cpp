@@ -6,7 +6,7 @@
 //
 // Set-up: a free block 40 x 40 x 20 mm (E_A = 10 kPa, nu = 0.3, rho = 1000) is hit on the middle
 // of its top face by a sphere of R = 10 mm (rho = 1000, about 4 g) at 0.5 m/s from a 0.2 mm gap.
-// Hertz (contact-method.md §6(a)) against a half-space gives t_c = 22 ms; the block is finite and
+// Hertz (docs/contact-method.md §6(a)) against a half-space gives t_c = 22 ms; the block is finite and
 // free, so the contact ends a little earlier. The compared quantity is the artifact's kinetic
 // energy KE_A(t) = 1/2 sum m v^2 over its nodes, sampled every 0.25 ms; the error is
 //   e_KE = max_i |KE_A,dcr(t_i) - KE_A,rigid(t_i)| / max_i KE_A,rigid(t_i),
