@@ -1,13 +1,11 @@
 # Every dependency is a Debian package installed by scripts/install-deps.sh.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(fmt REQUIRED)
-find_package(spdlog REQUIRED)
 find_package(tomlplusplus REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
-find_package(nlohmann_json 3 REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)  # ccm recommend --json
 find_package(Gmsh REQUIRED)
-find_package(NLopt CONFIG REQUIRED)  # libnlopt-dev: target NLopt::nlopt (C API)
-find_package(METIS REQUIRED)
+find_package(NLopt CONFIG REQUIRED)  # libnlopt-dev: target NLopt::nlopt (C API, nlopt.h)
 set(MPI_CXX_SKIP_MPICXX ON)
 find_package(MPI REQUIRED COMPONENTS C CXX)
 find_package(SQLite3 REQUIRED)

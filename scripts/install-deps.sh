@@ -5,10 +5,10 @@ set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config git
-  libeigen3-dev libmetis-dev libopenmpi-dev openmpi-bin
+  libeigen3-dev libopenmpi-dev openmpi-bin
   libsqlite3-dev sqlite3 libhdf5-dev hdf5-tools
-  libfmt-dev libspdlog-dev catch2 libgmsh-dev
-  libcli11-dev libtomlplusplus-dev libnlopt-dev libnlopt-cxx-dev gnuplot-nox nlohmann-json3-dev
+  libfmt-dev catch2 libgmsh-dev
+  libcli11-dev libtomlplusplus-dev libnlopt-dev gnuplot-nox nlohmann-json3-dev
   chromium
 )
 

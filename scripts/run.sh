@@ -8,8 +8,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/install-deps.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j "$(nproc)"
+# The same configuration as scripts/test.sh's optimised build; only the executable is built.
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_UNITY_BUILD=ON >/dev/null
+cmake --build build -j "$(nproc)" --target ccm
 mkdir -p results
 ./build/ccm study run scenes/grids/default.toml --db results/default-study.sqlite --jobs "$(nproc)"
 ./build/ccm rig run RX025 --data tests/data/rig-dev --db results/default-study.sqlite \

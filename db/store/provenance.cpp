@@ -8,13 +8,14 @@
 #include <ctime>
 
 #include "study/provenance/timestamp.hpp"
+#include "study/provenance/version.hpp"
 
 namespace ccm::db {
 
 RunProvenance current_provenance(const std::string& grid_hash, int ranks, int jobs) {
   RunProvenance p;
-  p.ccm_version = CCM_VERSION;
-  p.git_hash = CCM_GIT_HASH;
+  p.ccm_version = ccm_version();
+  p.git_hash = git_hash();
   p.grid_hash = grid_hash;
   std::array<char, 256> host{};
   if (gethostname(host.data(), host.size() - 1) == 0) p.host = host.data();

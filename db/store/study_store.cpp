@@ -6,6 +6,7 @@
 #include "db/sqlite/statement.hpp"
 #include "db/store/point_key.hpp"
 #include "db/store/row_codes.hpp"
+#include "study/provenance/version.hpp"
 
 namespace ccm::db {
 
@@ -66,8 +67,8 @@ void StudyStore::open_study(const std::string& name, const std::string& grid_has
   insert.bind(1, name)
       .bind(2, grid_hash)
       .bind(3, utc_now())
-      .bind(4, CCM_VERSION)
-      .bind(5, CCM_GIT_HASH);
+      .bind(4, ccm_version())
+      .bind(5, git_hash());
   insert.run();
   study_id_ = connection_->last_insert_rowid();
   transaction.commit();

@@ -1,7 +1,7 @@
 // Our own aliases for the fixed-size Eigen types used throughout the engine.
 #pragma once
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 namespace ccm {
 

@@ -1,6 +1,8 @@
 // The linear 4-node tetrahedron: reference data precomputed once per element.
 #pragma once
 
+#include <Eigen/Geometry>  // cross
+#include <Eigen/LU>        // determinant, inverse
 #include <cmath>
 #include <optional>
 

@@ -2,6 +2,7 @@
 // Continuum Mechanics for Finite Element Analysis, 2nd ed., eq. 6.28).
 #pragma once
 
+#include <Eigen/LU>  // determinant
 #include <cmath>
 
 #include "engine/core/types.hpp"

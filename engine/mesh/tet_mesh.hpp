@@ -1,6 +1,7 @@
 // A linear-tetrahedron mesh of one or more bodies, in the reference configuration.
 #pragma once
 
+#include <Eigen/Geometry>  // cross
 #include <array>
 #include <map>
 #include <string>

@@ -2,6 +2,7 @@
 
 namespace ccm {
 
-std::string version_string() { return std::string(CCM_VERSION) + " (git " + CCM_GIT_HASH + ")"; }
+// ccm_version() and git_hash() are defined in the generated version_info.cpp.
+std::string version_string() { return std::string(ccm_version()) + " (git " + git_hash() + ")"; }
 
 }  // namespace ccm

@@ -9,6 +9,7 @@
 #include "db/sqlite/statement.hpp"
 #include "db/store/rig_reader.hpp"
 #include "db/store/rig_store.hpp"
+#include "study/provenance/version.hpp"
 #include "tests/db/scratch_dir.hpp"
 #include "tests/db/store_queries.hpp"
 
@@ -90,8 +91,8 @@ TEST_CASE("rig store: a run is written whole and read back", "[db][rig-store]") 
   CHECK(s.column_int(2) == 2);
   db::Statement p(c, "SELECT ccm_version, git_hash, host, pid, drive_trial FROM rig_runs");
   REQUIRE(p.step());
-  CHECK(p.column_text(0) == CCM_VERSION);
-  CHECK(p.column_text(1) == CCM_GIT_HASH);
+  CHECK(p.column_text(0) == std::string(ccm_version()));
+  CHECK(p.column_text(1) == std::string(git_hash()));
   CHECK(!p.column_text(2).empty());
   CHECK(p.column_int(3) == static_cast<long long>(::getpid()));
   CHECK(p.column_int(4) == 2);

@@ -8,6 +8,7 @@
 #include "db/store/study_store.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/metrics/point_metrics.hpp"
+#include "study/provenance/version.hpp"
 #include "study/recommend/recommendation.hpp"
 #include "tests/db/scratch_dir.hpp"
 #include "tests/db/store_queries.hpp"
@@ -89,8 +90,8 @@ TEST_CASE("runs and their HDF5 histories round-trip bit-exactly, with provenance
       "SELECT ccm_version, git_hash, grid_hash, host, pid, ranks, jobs, history_file, "
       "history_dataset, status FROM runs ORDER BY id");
   REQUIRE(row.step());
-  CHECK(row.column_text(0) == CCM_VERSION);
-  CHECK(row.column_text(1) == CCM_GIT_HASH);
+  CHECK(row.column_text(0) == std::string(ccm_version()));
+  CHECK(row.column_text(1) == std::string(git_hash()));
   CHECK(row.column_text(2) == "gridhash");
   CHECK(row.column_text(3) == prov.host);
   CHECK(row.column_int(4) == prov.pid);

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "study/cli/study_commands.hpp"
+#include "study/provenance/version.hpp"
 #include "tests/reports/csv_reader.hpp"
 #include "tests/reports/png_size.hpp"
 #include "tests/reports/synthetic_study.hpp"
@@ -166,7 +167,7 @@ TEST_CASE("ccm report on the synthetic study: files, self-contained page, proven
   SECTION("provenance: ccm version and git hash, dates, grid and scene hashes, machine") {
     const auto rows = test::read_csv(out / "provenance.csv");
     REQUIRE(rows.size() == 13);  // header + 12 items
-    const std::string version = std::string(CCM_VERSION) + " (git " + CCM_GIT_HASH + ")";
+    const std::string version = std::string(ccm_version()) + " (git " + git_hash() + ")";
     CHECK(provenance_value(rows, "study") == "synthetic");
     CHECK(provenance_value(rows, "grid file hash") == "gridhash0123");
     CHECK(provenance_value(rows, "runs: scene content hashes") == "ccmscenehash; rigidscenehash");

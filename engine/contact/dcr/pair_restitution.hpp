@@ -20,6 +20,7 @@
 // never changed. Contacts within one body (self-contact) have no restitution beyond e = 0.
 #pragma once
 
+#include <Eigen/Geometry>  // cross
 #include <iterator>
 #include <map>
 #include <utility>
