@@ -14,6 +14,7 @@
 #include "db/store/study_store.hpp"
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
+#include "tests/study/grid/grid_fixtures.hpp"
 #include "tests/support/temp_dir.hpp"
 
 extern char** environ;
@@ -34,21 +35,7 @@ KE = [0.001]
 contact_time = 0.02
 end = 0.03
 output_interval = 1e-3
-[artifact]
-length = 1.0
-thickness = 0.25
-E = 1000.0
-nu = 0.3
-rho = 1000.0
-mesh_size = 0.25
-support = "base"
-[impactor]
-nu = 0.3
-rho = 1000.0
-mesh_size_ratio = 0.5
-[contact]
-penalty = 1.0e6
-)";
+)" + std::string(test::kTinyGridBodies);
 
 std::string read_file(const fs::path& file) {
   std::ifstream in(file);

@@ -19,6 +19,7 @@
 #include "study/grid/grid_file.hpp"
 #include "study/grid/point_scene.hpp"
 #include "study/runner/content_hash.hpp"
+#include "tests/study/grid/grid_fixtures.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace ccm;
@@ -40,21 +41,8 @@ damping = [0.5, 1.0]
 contact_time = 0.02
 end = 0.03
 output_interval = 1e-3
-[artifact]
-length = 1.0
-thickness = 0.25
-E = 1000.0
-nu = 0.3
-rho = 1000.0
-mesh_size = 0.25
-support = "base"
-[impactor]
-nu = 0.3
-rho = 1000.0
-mesh_size_ratio = 0.5
-[contact]
-penalty = 1.0e6
-damping = 1.0
+)" + std::string(test::kTinyGridBodies) +
+                               R"(damping = 1.0
 [convergence]
 points = [{ ER = 1.0, RLS = 0.5, KE = 0.001 }]
 mesh_scales = [1.0, 0.8]

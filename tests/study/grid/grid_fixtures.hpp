@@ -34,6 +34,24 @@ rho = 1000.0
 mesh_size_ratio = 0.2
 )";
 
+// The plate, sphere and contact sections of the tiny grids the study tests run for real (coarse
+// meshes: each run well under a second); a test appends its own [axes] and [time] before them.
+inline constexpr std::string_view kTinyGridBodies = R"([artifact]
+length = 1.0
+thickness = 0.25
+E = 1000.0
+nu = 0.3
+rho = 1000.0
+mesh_size = 0.25
+support = "base"
+[impactor]
+nu = 0.3
+rho = 1000.0
+mesh_size_ratio = 0.5
+[contact]
+penalty = 1.0e6
+)";
+
 // The message of the SceneError that parsing `text` as "g.toml" throws ("" when it parses).
 inline std::string grid_error_of(std::string_view text) {
   try {

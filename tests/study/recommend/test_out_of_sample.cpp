@@ -13,6 +13,7 @@
 #include "study/metrics/point_metrics.hpp"
 #include "study/recommend/recommendation.hpp"
 #include "study/runner/point_runner.hpp"
+#include "tests/study/grid/grid_fixtures.hpp"
 
 using namespace ccm;
 using study::ImpactModel;
@@ -32,22 +33,9 @@ KE = [1.0]
 contact_time = 0.02
 end = 0.06
 output_interval = 1e-3
-[artifact]
-length = 1.0
-thickness = 0.25
-E = 1000.0
-nu = 0.3
-rho = 1000.0
-mesh_size = 0.25
-support = "base"
-[impactor]
-nu = 0.3
-rho = 1000.0
-mesh_size_ratio = 0.5
-[contact]
-penalty = 1.0e6
 )",
-                     er, rls);
+                     er, rls) +
+         std::string(test::kTinyGridBodies);
 }
 
 std::vector<study::PointMetrics> run_grid(const std::string& text) {
