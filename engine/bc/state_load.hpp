@@ -7,7 +7,7 @@
 #include <span>
 #include <string_view>
 
-#include "engine/solver/state.hpp"
+#include "engine/core/state.hpp"
 
 namespace ccm {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "engine/solver/state.hpp"
+#include "engine/core/state.hpp"
 
 namespace ccm {
 

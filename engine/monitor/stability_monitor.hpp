@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "engine/element/internal_force.hpp"
-#include "engine/solver/state.hpp"
+#include "engine/core/state.hpp"
 
 namespace ccm {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine/mesh/model_mesh.hpp"
-#include "engine/solver/state.hpp"
+#include "engine/core/state.hpp"
 
 namespace ccm {
 

@@ -10,7 +10,7 @@
 namespace ccm::study {
 
 // FNV-1a 64 of the bytes, as 16 lowercase hex digits: the hash `ccm run` writes to summary.toml
-// as scene_fnv1a64 (study/cli/run_command.cpp uses this one).
+// as scene_fnv1a64 (app/run_command.cpp uses this one).
 std::string fnv1a64(std::string_view data);
 
 // The resume key of one run: FNV-1a 64 of the model name, the point's axis values and the

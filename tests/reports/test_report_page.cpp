@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "study/cli/study_commands.hpp"
+#include "app/study_commands.hpp"
 #include "study/provenance/version.hpp"
 #include "tests/reports/csv_reader.hpp"
 #include "tests/reports/png_size.hpp"

@@ -8,7 +8,7 @@
 #include "reports/data/report_loader.hpp"
 #include "reports/figures/rig_section.hpp"
 #include "reports/write/report_writer.hpp"
-#include "study/cli/study_commands.hpp"
+#include "app/study_commands.hpp"
 #include "tests/reports/csv_reader.hpp"
 #include "tests/reports/synthetic_rig.hpp"
 #include "tests/reports/synthetic_study.hpp"

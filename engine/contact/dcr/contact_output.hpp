@@ -30,7 +30,7 @@
 #include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/model_mesh.hpp"
-#include "engine/solver/state.hpp"
+#include "engine/core/state.hpp"
 
 namespace ccm::dcr {
 

@@ -28,7 +28,7 @@
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/model_mesh.hpp"
-#include "engine/solver/state.hpp"
+#include "engine/core/state.hpp"
 
 namespace ccm::dcr {
 

@@ -24,7 +24,7 @@
 #include "engine/element/tet4.hpp"
 #include "engine/material/material.hpp"
 #include "engine/mesh/model_mesh.hpp"
-#include "engine/solver/state.hpp"
+#include "engine/core/state.hpp"
 
 namespace ccm::dcr {
 

@@ -1,4 +1,4 @@
-// The order in which a study's runs are handed out (study/cli/run_schedule.hpp): longest first,
+// The order in which a study's runs are handed out (app/run_schedule.hpp): longest first,
 // deterministic, and a counter that forked workers share without handing a number out twice.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 #include <set>
 #include <vector>
 
-#include "study/cli/run_schedule.hpp"
+#include "app/run_schedule.hpp"
 #include "study/grid/grid_file.hpp"
 #include "tests/study/grid/grid_fixtures.hpp"
 

@@ -48,7 +48,7 @@ struct RigListArgs {
   std::filesystem::path cases = CCM_RIG_CASES;  // rig_models/cases.toml of the source tree
 };
 
-// Each returns the process exit code (study/cli/run_command.hpp exit_code).
+// Each returns the process exit code (app/run_command.hpp exit_code).
 int study_run_command(const StudyRunArgs& args);
 int study_status_command(const StudyStatusArgs& args);
 int study_scene_command(const StudySceneArgs& args);

@@ -4,8 +4,8 @@
 
 #include "rig_models/cases/case_file.hpp"
 #include "rig_models/cases/case_table.hpp"
-#include "study/cli/run_command.hpp"
-#include "study/cli/study_commands.hpp"
+#include "app/run_command.hpp"
+#include "app/study_commands.hpp"
 
 namespace ccm {
 

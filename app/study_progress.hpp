@@ -1,6 +1,6 @@
 // The progress line of `ccm study run`: a thread that reads the store once a second and shows
 // runs finished out of the total, runs in progress, elapsed time and an ETA (weighted by the
-// runs' expected costs, study/cli/run_schedule.hpp). It reads the
+// runs' expected costs, app/run_schedule.hpp). It reads the
 // store rather than listening to workers, so it counts every worker process and MPI rank alike.
 #pragma once
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "study/cli/rig_inputs.hpp"
+#include "app/rig_inputs.hpp"
 
 namespace ccm {
 
@@ -16,7 +16,7 @@ struct RigCalibrateArgs {
   int max_evaluations = 12;
 };
 
-// Exit codes (study/cli/run_command.hpp): 0 completed, 3 unstable (run), 2 bad input (nothing
+// Exit codes (app/run_command.hpp): 0 completed, 3 unstable (run), 2 bad input (nothing
 // written), 1 internal error.
 int rig_run_command(const RigCommonArgs& args);
 int rig_calibrate_command(const RigCalibrateArgs& args);

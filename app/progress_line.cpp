@@ -1,4 +1,4 @@
-#include "study/cli/progress_line.hpp"
+#include "app/progress_line.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>

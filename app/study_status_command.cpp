@@ -5,11 +5,11 @@
 #include <map>
 
 #include "db/store/study_store.hpp"
-#include "study/cli/command_errors.hpp"
-#include "study/cli/run_command.hpp"
-#include "study/cli/stored_grid.hpp"
-#include "study/cli/study_commands.hpp"
-#include "study/cli/study_store_open.hpp"
+#include "app/command_errors.hpp"
+#include "app/run_command.hpp"
+#include "app/stored_grid.hpp"
+#include "app/study_commands.hpp"
+#include "app/study_store_open.hpp"
 #include "study/recommend/modelling_choices.hpp"
 
 namespace ccm {

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "study/cli/rig_inputs.hpp"
-#include "study/cli/rig_output.hpp"
+#include "app/rig_inputs.hpp"
+#include "app/rig_output.hpp"
 
 namespace ccm {
 

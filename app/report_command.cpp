@@ -6,10 +6,10 @@
 #include "reports/data/report_loader.hpp"
 #include "reports/report_error.hpp"
 #include "reports/write/report_writer.hpp"
-#include "study/cli/command_errors.hpp"
-#include "study/cli/run_command.hpp"
-#include "study/cli/study_commands.hpp"
-#include "study/cli/study_store_open.hpp"
+#include "app/command_errors.hpp"
+#include "app/run_command.hpp"
+#include "app/study_commands.hpp"
+#include "app/study_store_open.hpp"
 
 namespace ccm {
 namespace {

@@ -1,4 +1,4 @@
-#include "study/cli/run_schedule.hpp"
+#include "app/run_schedule.hpp"
 
 #include <sys/mman.h>
 

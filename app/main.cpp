@@ -9,9 +9,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "study/cli/rig_commands.hpp"
-#include "study/cli/run_command.hpp"
-#include "study/cli/study_commands.hpp"
+#include "app/rig_commands.hpp"
+#include "app/run_command.hpp"
+#include "app/study_commands.hpp"
 #include "study/provenance/version.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-#include "study/cli/rig_inputs.hpp"
+#include "app/rig_inputs.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "study/cli/study_progress.hpp"
+#include "app/study_progress.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "db/store/study_store.hpp"
-#include "study/cli/run_schedule.hpp"
+#include "app/run_schedule.hpp"
 
 namespace ccm {
 namespace {

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "db/sqlite/connection.hpp"
-#include "study/cli/run_command.hpp"
-#include "study/cli/study_store_open.hpp"
+#include "app/run_command.hpp"
+#include "app/study_store_open.hpp"
 
 namespace ccm {
 

@@ -1,4 +1,4 @@
-#include "study/cli/output_file.hpp"
+#include "app/output_file.hpp"
 
 #include <fmt/format.h>
 

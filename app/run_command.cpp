@@ -1,4 +1,4 @@
-#include "study/cli/run_command.hpp"
+#include "app/run_command.hpp"
 
 #include <fmt/format.h>
 
@@ -14,8 +14,8 @@
 
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
-#include "study/cli/output_file.hpp"
-#include "study/cli/progress_line.hpp"
+#include "app/output_file.hpp"
+#include "app/progress_line.hpp"
 #include "study/provenance/timestamp.hpp"
 #include "study/provenance/version.hpp"
 #include "study/runner/content_hash.hpp"

@@ -1,4 +1,4 @@
-#include "study/cli/study_tables.hpp"
+#include "app/study_tables.hpp"
 
 #include <fmt/format.h>
 

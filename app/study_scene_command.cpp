@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "study/cli/run_command.hpp"
-#include "study/cli/study_commands.hpp"
+#include "app/run_command.hpp"
+#include "app/study_commands.hpp"
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/grid/point_scene.hpp"

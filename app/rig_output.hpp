@@ -14,7 +14,7 @@
 #include "rig_models/compare/case_comparison.hpp"
 #include "rig_models/compare/measured_spread.hpp"
 #include "rig_models/sim/rig_run.hpp"
-#include "study/cli/rig_inputs.hpp"
+#include "app/rig_inputs.hpp"
 
 namespace ccm {
 

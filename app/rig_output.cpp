@@ -1,4 +1,4 @@
-#include "study/cli/rig_output.hpp"
+#include "app/rig_output.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "rig_models/calibrate/rig_objective.hpp"
-#include "study/cli/output_file.hpp"
+#include "app/output_file.hpp"
 #include "study/provenance/version.hpp"
 
 namespace ccm {

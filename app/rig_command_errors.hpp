@@ -12,7 +12,7 @@
 
 #include "db/sqlite/connection.hpp"
 #include "rig_models/core/rig_error.hpp"
-#include "study/cli/run_command.hpp"
+#include "app/run_command.hpp"
 
 namespace ccm {
 

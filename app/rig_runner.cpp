@@ -1,6 +1,6 @@
-#include "study/cli/rig_runner.hpp"
+#include "app/rig_runner.hpp"
 
-#include "study/cli/progress_line.hpp"
+#include "app/progress_line.hpp"
 #include "study/provenance/timestamp.hpp"
 
 namespace ccm {

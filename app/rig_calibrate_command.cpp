@@ -14,10 +14,10 @@
 #include "rig_models/calibrate/bounded_search.hpp"
 #include "rig_models/calibrate/rig_objective.hpp"
 #include "rig_models/core/rig_error.hpp"
-#include "study/cli/rig_command_errors.hpp"
-#include "study/cli/rig_commands.hpp"
-#include "study/cli/rig_runner.hpp"
-#include "study/cli/run_command.hpp"
+#include "app/rig_command_errors.hpp"
+#include "app/rig_commands.hpp"
+#include "app/rig_runner.hpp"
+#include "app/run_command.hpp"
 #include "study/provenance/timestamp.hpp"
 
 namespace ccm {
