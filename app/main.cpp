@@ -12,7 +12,7 @@
 #include "app/rig_commands.hpp"
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
-#include "study/provenance/version.hpp"
+#include "records/provenance/version.hpp"
 
 namespace {
 

@@ -11,14 +11,14 @@
 #include <map>
 #include <sstream>
 
-#include "rig_models/calibrate/bounded_search.hpp"
-#include "rig_models/calibrate/rig_objective.hpp"
-#include "rig_models/core/rig_error.hpp"
 #include "app/rig_command_errors.hpp"
 #include "app/rig_commands.hpp"
 #include "app/rig_runner.hpp"
 #include "app/run_command.hpp"
-#include "study/provenance/timestamp.hpp"
+#include "records/provenance/timestamp.hpp"
+#include "rig_models/calibrate/bounded_search.hpp"
+#include "rig_models/calibrate/rig_objective.hpp"
+#include "rig_models/core/rig_error.hpp"
 
 namespace ccm {
 namespace {

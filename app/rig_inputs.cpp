@@ -7,13 +7,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "records/content_hash.hpp"
 #include "rig_models/cases/case_code.hpp"
 #include "rig_models/cases/case_file.hpp"
 #include "rig_models/compare/case_comparison.hpp"
 #include "rig_models/core/rig_error.hpp"
 #include "rig_models/geometry/geometry_file.hpp"
 #include "rig_models/measurement/trial_folder.hpp"
-#include "study/runner/content_hash.hpp"
 
 namespace ccm {
 namespace {

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "rig_models/calibrate/rig_objective.hpp"
 #include "app/output_file.hpp"
-#include "study/provenance/version.hpp"
+#include "records/provenance/version.hpp"
+#include "rig_models/calibrate/rig_objective.hpp"
 
 namespace ccm {
 namespace {

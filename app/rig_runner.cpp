@@ -1,7 +1,7 @@
 #include "app/rig_runner.hpp"
 
 #include "app/progress_line.hpp"
-#include "study/provenance/timestamp.hpp"
+#include "records/provenance/timestamp.hpp"
 
 namespace ccm {
 

@@ -12,15 +12,16 @@
 #include <string>
 #include <string_view>
 
-#include "engine/observe/history.hpp"
-#include "engine/solver/explicit_integrator.hpp"
 #include "app/output_file.hpp"
 #include "app/progress_line.hpp"
-#include "study/provenance/timestamp.hpp"
-#include "study/provenance/version.hpp"
-#include "study/runner/content_hash.hpp"
-#include "study/scene/scene_builder.hpp"
-#include "study/scene/scene_file.hpp"
+#include "config/text_file.hpp"
+#include "engine/observe/history.hpp"
+#include "engine/solver/explicit_integrator.hpp"
+#include "records/content_hash.hpp"
+#include "records/provenance/timestamp.hpp"
+#include "records/provenance/version.hpp"
+#include "run/scene/scene_builder.hpp"
+#include "run/scene/scene_file.hpp"
 
 namespace ccm {
 namespace {
@@ -55,7 +56,7 @@ void check_out_dir(const fs::path& out) {
 }
 
 void prepare(const RunArgs& args, Prepared& p) {
-  p.text = read_scene_text(args.scene);
+  p.text = read_config_text(args.scene);
   p.scene = parse_scene(p.text, args.scene);
   for (const std::string& w : p.scene.warnings) fmt::print(stderr, "ccm: warning: {}\n", w);
   check_out_dir(args.out);
@@ -96,7 +97,8 @@ void print_summary_table(const RunRecord& r) {
   const ContactSetup& contact = r.prepared.contact;
   fmt::print("  {:<15}{}\n", "contact", contact.model ? contact.description : "none");
   if (contact.model)
-    fmt::print("  {:<15}{:.6g} J (work of the contact on the bodies)\n", "", contact.model->work());
+    fmt::print("  {:<15}{:.6g} J (work of the contact on the bodies)\n", "",
+               contact.model->ledger().work);
   fmt::print("  {:<15}{:.6g} s of {:.6g} s\n", "sim time", s.end_time, r.prepared.scene.time.end);
   fmt::print("  {:<15}{}\n", "steps", s.steps);
   fmt::print("  {:<15}initial {:.4g} s, min {:.4g} s, max {:.4g} s\n", "dt", s.dt_initial, s.dt_min,
@@ -161,7 +163,7 @@ std::string summary_toml(const RunRecord& r) {
   t += fmt::format("\n[contact]\nmodel = {}\n", toml_string(contact.model_name));
   if (contact.model)
     t += fmt::format("description = {}\nwork = {}  # J, of the contact on the bodies\n",
-                     toml_string(contact.description), toml_float(contact.model->work()));
+                     toml_string(contact.description), toml_float(contact.model->ledger().work));
   for (const Body& b : mesh.bodies)
     t += fmt::format("\n[[bodies]]\nname = {}\nnodes = {}\nelements = {}\n", toml_string(b.name),
                      b.n_nodes, b.n_elements);
@@ -212,7 +214,7 @@ void report(std::string_view kind, std::string_view message) {
 int run_command(const RunArgs& args) {
   try {
     return run(args);
-  } catch (const SceneError& e) {
+  } catch (const ConfigError& e) {
     report("error", e.what());
     return exit_code::bad_input;
   } catch (const UsageError& e) {

@@ -9,10 +9,10 @@
 #include <new>
 #include <stdexcept>
 
+#include "records/content_hash.hpp"
+#include "run/scene/point_scene.hpp"
 #include "study/grid/grid_expand.hpp"
-#include "study/grid/point_scene.hpp"
 #include "study/metrics/convergence.hpp"
-#include "study/runner/content_hash.hpp"
 
 namespace ccm {
 

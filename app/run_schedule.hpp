@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "study/grid/grid_point.hpp"
+#include "records/grid_point.hpp"
 #include "study/grid/grid_spec.hpp"
 
 namespace ccm {
@@ -18,7 +18,7 @@ namespace ccm {
 struct PlannedRun {
   study::GridPoint point;
   study::ImpactModel model;
-  std::string scene_hash;  // FNV-1a 64 of the run's scene text (study/grid/point_scene.hpp)
+  std::string scene_hash;  // FNV-1a 64 of the run's scene text (run/scene/point_scene.hpp)
 };
 
 // Every run of the grid file, in a fixed order: the grid's points, then the convergence

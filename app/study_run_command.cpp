@@ -17,22 +17,22 @@
 #include <stdexcept>
 #include <vector>
 
-#include "db/store/provenance.hpp"
-#include "db/store/study_store.hpp"
 #include "app/run_command.hpp"
 #include "app/run_schedule.hpp"
 #include "app/study_commands.hpp"
 #include "app/study_progress.hpp"
 #include "app/study_tables.hpp"
+#include "db/store/provenance.hpp"
+#include "db/store/study_store.hpp"
+#include "records/content_hash.hpp"
+#include "run/parallel/rank_context.hpp"
+#include "run/runner/point_runner.hpp"
+#include "run/scene/scene.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/point_metrics.hpp"
 #include "study/metrics/thesis_trends.hpp"
-#include "study/parallel/rank_context.hpp"
-#include "study/runner/content_hash.hpp"
-#include "study/runner/point_runner.hpp"
-#include "study/scene/scene.hpp"
 
 namespace ccm {
 namespace {
@@ -302,7 +302,7 @@ int study_run_command(const StudyRunArgs& args) {
       return exit_code::bad_input;
     }
     return study_run(args, ranks);
-  } catch (const SceneError& e) {
+  } catch (const ConfigError& e) {
     fmt::print(stderr, "ccm: error: {}\n", e.what());
     return exit_code::bad_input;
   } catch (const std::exception& e) {

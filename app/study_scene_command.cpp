@@ -1,5 +1,5 @@
 // `ccm study scene GRID --point N [--model ccm|rigid]`: the scene file of one run of a grid, on
-// stdout, exactly as `ccm study run` runs it (study/grid/point_scene.hpp). With it one run of a
+// stdout, exactly as `ccm study run` runs it (run/scene/point_scene.hpp). With it one run of a
 // study can be repeated, changed or looked at alone: `ccm run` it and open its output.
 #include <fmt/format.h>
 
@@ -7,10 +7,10 @@
 
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
+#include "run/scene/point_scene.hpp"
+#include "run/scene/scene.hpp"
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
-#include "study/grid/point_scene.hpp"
-#include "study/scene/scene.hpp"
 
 namespace ccm {
 
@@ -29,7 +29,7 @@ int study_scene_command(const StudySceneArgs& args) {
     fmt::print(stderr, "ccm: error: {}: no point {} (the grid has points 0 to {})\n",
                args.grid.string(), args.point, points.empty() ? -1 : points.back().index);
     return exit_code::bad_input;
-  } catch (const SceneError& e) {
+  } catch (const ConfigError& e) {
     fmt::print(stderr, "ccm: error: {}\n", e.what());
     return exit_code::bad_input;
   } catch (const std::exception& e) {

@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <vector>
 
+#include "records/point_metrics.hpp"
+#include "records/run_record.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/grid/grid_spec.hpp"
 #include "study/metrics/convergence.hpp"
-#include "study/metrics/point_metrics.hpp"
 #include "study/metrics/thesis_trends.hpp"
 #include "study/recommend/decision_rule.hpp"
-#include "study/runner/run_record.hpp"
 
 namespace ccm {
 

@@ -6,7 +6,7 @@
 //
 // Method. Each run times, inside one process and in thread CPU time (CLOCK_THREAD_CPUTIME_ID, so
 // that time spent descheduled on a shared machine counts for neither), the contact model's calls
-// (begin_step, correct and stable_dt_limit: broad phase, CCD, projection, momentum exchange, step
+// (begin_step, correct and step_bound: broad phase, CCD, projection, momentum exchange, step
 // limit) and the whole steps (begin_step to begin_step); structure = steps - contact. The clock
 // is read 6 times per step (about 0.1-0.5 us each, charged to the contact). The ratio contact /
 // structure is formed within each run, so a load that slows both alike cancels; each level is
@@ -47,8 +47,7 @@ double thread_seconds() {
 // whole steps (`loop`: from one begin_step to the next, and the last one to its end_step).
 class TimedContact : public ContactModel {
  public:
-  explicit TimedContact(ContactModel& inner) : inner_(inner) {}
-  std::string_view name() const override { return inner_.name(); }
+  explicit TimedContact(ContactModel& inner) : ContactModel(inner.name()), inner_(inner) {}
   void begin_step(const State& s, double dt) override {
     const double now = thread_seconds();
     if (step_start_ >= 0.0) loop += now - step_start_;
@@ -56,20 +55,22 @@ class TimedContact : public ContactModel {
     inner_.begin_step(s, dt);
     contact += thread_seconds() - now;
   }
+  void add_forces(State& s) override {
+    timed([&] { inner_.add_forces(s); });
+  }
   void correct(State& s, double dt) override {
     timed([&] { inner_.correct(s, dt); });
   }
   void end_step(const State& s, double dt) override {
-    inner_.end_step(s, dt);
+    timed([&] { inner_.end_step(s, dt); });
+    ledger_ = inner_.ledger();
     last_end_ = thread_seconds();
   }
-  double stable_dt_limit(const State& s) const override {
-    double limit = 0.0;
-    timed([&] { limit = inner_.stable_dt_limit(s); });
-    return limit;
+  ContactStepBound step_bound(const State& s) const override {
+    ContactStepBound bound;
+    timed([&] { bound = inner_.step_bound(s); });
+    return bound;
   }
-  double work() const override { return inner_.work(); }
-  std::string failure() const override { return inner_.failure(); }
   // Closes the last step.
   void finish() {
     if (step_start_ >= 0.0) loop += last_end_ - step_start_;
@@ -194,7 +195,7 @@ int main(int argc, char** argv) {
   std::printf(
       "DCR contact cost per step vs structure, sphere on plate, %d levels x %d repeats, "
       "end %g s\n"
-      "contact = begin_step + correct + stable_dt_limit of the DCR model (broad phase with a "
+      "contact = begin_step + correct + end_step + step_bound of the DCR model (broad phase with a "
       "Verlet candidate cache, CCD, projection, momentum exchange);\n"
       "structure = whole steps - contact; both in thread CPU time, in one process. "
       "load average before: %s\n",

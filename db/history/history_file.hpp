@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "study/runner/run_record.hpp"
+#include "records/run_record.hpp"
 
 namespace ccm::db {
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "study/runner/content_hash.hpp"
+#include "records/content_hash.hpp"
 
 namespace ccm::db {
 

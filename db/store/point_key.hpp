@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "study/grid/grid_point.hpp"
+#include "records/grid_point.hpp"
 
 namespace ccm::db {
 

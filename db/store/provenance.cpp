@@ -7,8 +7,8 @@
 #include <chrono>
 #include <ctime>
 
-#include "study/provenance/timestamp.hpp"
-#include "study/provenance/version.hpp"
+#include "records/provenance/timestamp.hpp"
+#include "records/provenance/version.hpp"
 
 namespace ccm::db {
 

@@ -6,7 +6,7 @@
 #include "db/sqlite/statement.hpp"
 #include "db/store/point_key.hpp"
 #include "db/store/row_codes.hpp"
-#include "study/provenance/version.hpp"
+#include "records/provenance/version.hpp"
 
 namespace ccm::db {
 

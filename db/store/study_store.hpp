@@ -23,10 +23,10 @@
 #include "db/sqlite/connection.hpp"
 #include "db/sqlite/transaction.hpp"
 #include "db/store/provenance.hpp"
+#include "records/grid_point.hpp"
+#include "records/point_metrics.hpp"
+#include "records/run_record.hpp"
 #include "study/fit/study_fits.hpp"
-#include "study/grid/grid_point.hpp"
-#include "study/metrics/point_metrics.hpp"
-#include "study/runner/run_record.hpp"
 
 namespace ccm::db {
 

@@ -5,45 +5,76 @@
 //   begin_step (x_n, v_n known)  ->  predict  ->  add_forces (into f, before a = M^-1 f)
 //   ->  accelerations  ->  correct (x_{n+1}, v*)  ->  boundary conditions  ->  v correction
 //   ->  end_step.
+//
+// Five pure virtual methods: a model that leaves one out does not compile
+// (tests/engine/contact/test_contact_interface.cpp). The name and the ledger are data of this
+// base class that the model keeps current, so a wrapper has nothing to forward (docs/
+// architecture.md).
 #pragma once
 
 #include <limits>
 #include <string>
-#include <string_view>
+#include <utility>
 
 #include "engine/core/state.hpp"
 
 namespace ccm {
 
+// What a contact model allows of the next step, WITHOUT any safety factor: the integrator owns
+// the one safety factor s = TimeControl::dt_safety (docs/contact-time-step.md, "One safety
+// factor"). The step taken is
+//   dt = min( s (dt_s^-2 + stiffness_dt^-2)^(-1/2),  kinematic_dt )          (CT.1)
+// with dt_s the elements' stable step: the contact's springs add their squared frequency to the
+// structure's (omega_max^2 <= omega_s^2 + omega_k^2 for a sum of stiffnesses on one mass matrix),
+// and a kinematic bound caps the step outright.
+struct ContactStepBound {
+  // 2 / omega_max of the stiffness the model adds (penalty springs, with any damping reduction).
+  double stiffness_dt = std::numeric_limits<double>::infinity();
+  // The longest step for which the model's detection stays valid (e.g. no point can arrive
+  // unseen, or no feature can pass another within the step).
+  double kinematic_dt = std::numeric_limits<double>::infinity();
+};
+
+// What a model has done so far, for the energy balance and the verdict.
+struct ContactLedger {
+  // Work done on the deformable bodies by the contact [J].
+  double work = 0.0;
+  // The part of the work the model's physics does not allow [J], >= 0: a model whose contacts can
+  // only dissipate reports its net positive work; one that exchanges energy with something
+  // outside the model (a rigid sphere's kinetic energy) reports 0. The monitor ends a run when
+  // it exceeds the energy tolerance.
+  double injected_energy = 0.0;
+  // Non-empty when the contact has failed in the last step (the reason, for the verdict): the run
+  // then ends unstable. Checked by the integrator after every step.
+  std::string failure;
+};
+
 class ContactModel {
  public:
+  explicit ContactModel(std::string name) : name_(std::move(name)) {}
   virtual ~ContactModel() = default;
-  virtual std::string_view name() const = 0;
+  ContactModel(const ContactModel&) = delete;
+  ContactModel& operator=(const ContactModel&) = delete;
+
+  const std::string& name() const { return name_; }
+  const ContactLedger& ledger() const { return ledger_; }
 
   // Called with the state at t_n before the predictor of a step of size dt.
-  virtual void begin_step(const State& /*state*/, double /*dt*/) {}
+  virtual void begin_step(const State& state, double dt) = 0;
   // Penalty-type models add their forces on the nodes into state.f (at x_{n+1}).
-  virtual void add_forces(State& /*state*/) {}
+  virtual void add_forces(State& state) = 0;
   // Constraint-type models correct x_{n+1} and the predicted velocities v* (thesis 2.5.2).
-  virtual void correct(State& /*state*/, double /*dt*/) {}
-  // Called after the velocity correction; v holds v_{n+1}.
-  virtual void end_step(const State& /*state*/, double /*dt*/) {}
+  virtual void correct(State& state, double dt) = 0;
+  // Called after the velocity correction; v holds v_{n+1}. The ledger is current after it.
+  virtual void end_step(const State& state, double dt) = 0;
+  // The bound on the next step from this state, without safety factor (eq. CT.1).
+  virtual ContactStepBound step_bound(const State& state) const = 0;
 
-  // The largest step the contact model allows from this state.
-  virtual double stable_dt_limit(const State& /*state*/) const {
-    return std::numeric_limits<double>::infinity();
-  }
-  // Work done on the deformable bodies by the contact so far [J], for the energy balance.
-  virtual double work() const { return 0.0; }
-  // The part of work() the model's physics does not allow [J], >= 0: a model whose contacts can
-  // only dissipate (all bodies in the model, inelastic or elastic constraints) reports its net
-  // positive work, energy its push-back injected. The monitor ends a run when it exceeds the
-  // energy tolerance. A model that exchanges energy with something outside the model (a rigid
-  // sphere's kinetic energy) reports 0.
-  virtual double injected_energy() const { return 0.0; }
-  // Non-empty when the contact has failed in the last step (the reason, for the verdict): the
-  // run must then end unstable. Checked by the integrator after every step.
-  virtual std::string failure() const { return {}; }
+ protected:
+  ContactLedger ledger_;
+
+ private:
+  std::string name_;
 };
 
 }  // namespace ccm

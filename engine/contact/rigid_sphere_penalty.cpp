@@ -82,7 +82,7 @@ RigidSpherePenalty::RigidSpherePenalty(const ModelMesh& mesh, std::vector<Triang
 
 RigidSpherePenalty::RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triangle> surface,
                                        RigidSpherePenaltyParams params)
-    : params_(std::move(params)) {
+    : ContactModel("rigid_penalty"), params_(std::move(params)) {
   const RigidSphere& s = params_.sphere;
   if (surface.empty()) throw std::invalid_argument("rigid sphere penalty: the surface is empty");
   if (!(s.radius > 0.0) || !std::isfinite(s.radius))
@@ -98,8 +98,6 @@ RigidSpherePenalty::RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triang
     throw std::invalid_argument("rigid sphere penalty: the element penalty needs the mesh");
   if (!(params_.damping >= 0.0) || !std::isfinite(params_.damping))
     throw std::invalid_argument("rigid sphere penalty: the damping must be >= 0");
-  if (!(params_.structural_safety > 0.0))
-    throw std::invalid_argument("rigid sphere penalty: the structural safety must be > 0");
 
   if (params_.force_axis) {
     if (!(params_.force_axis->norm() > 0.0))
@@ -111,10 +109,6 @@ RigidSpherePenalty::RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triang
     axis_ = params_.gravity.normalized();
   }
 
-  // dt^2 (omega_struct^2 + omega_pen^2) <= 4 needs (s^2 + share^2) <= 1 when the structural
-  // step is s * 2 / omega_struct (docs/contact-time-step.md).
-  const double safety = params_.structural_safety < 1.0 ? params_.structural_safety : 0.9;
-  share_ = std::sqrt(1.0 - safety * safety);
   const double zeta = params_.damping;
   damping_bound_factor_ = std::sqrt(1.0 + zeta * zeta) - zeta;
 
@@ -282,6 +276,7 @@ void RigidSpherePenalty::end_step(const State& state, double dt) {
   work_body_ += w;
   work_sphere_ += 0.5 * (F_s_n_ + F_s_).dot(x_s_ - x_s_n_);
   damping_work_ += 0.5 * dt * (damping_power_n_ + damping_power_);
+  ledger_ = {.work = work_body_, .injected_energy = 0.0, .failure = failure()};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -299,7 +294,7 @@ double RigidSpherePenalty::node_term(const State& state, int tri) const {
 double RigidSpherePenalty::limit_from(double node_term, double weight_sum) const {
   const double omega2 = node_term + unit_ * weight_sum / params_.sphere.mass;
   if (!(omega2 > 0.0)) return std::numeric_limits<double>::infinity();
-  return share_ * damping_bound_factor_ * 2.0 / std::sqrt(omega2);
+  return damping_bound_factor_ * 2.0 / std::sqrt(omega2);
 }
 
 // Which points count (the proof: docs/contact-time-step.md, "Which points count"). Over a step
@@ -315,7 +310,7 @@ double RigidSpherePenalty::limit_from(double node_term, double weight_sum) const
 // within the current L, or until taking it would cut L below its own tau (then the step ends at
 // that tau, before the point can arrive). Far from contact the limit is thus infinite or the
 // time the sphere needs to come within reach: the penalty costs nothing until it can act.
-double RigidSpherePenalty::stable_dt_limit(const State& state) const {
+ContactStepBound RigidSpherePenalty::step_bound(const State& state) const {
   // The squared distances of the points from the sphere's centre: those add_forces computed,
   // when they are of this state (the engine asks for the limit of a step after the evaluation
   // that ended the previous one, at the same positions), else afresh.
@@ -356,7 +351,7 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
     }
   }
   double L = limit_from(A, n_points);
-  if (nearest == d2_.size() || !(v_rel > 0.0 || a_rel > 0.0)) return L;
+  if (nearest == d2_.size() || !(v_rel > 0.0 || a_rel > 0.0)) return {.stiffness_dt = L};
   // tau with b(tau) = s: the root of a_rel/2 tau^2 + v_rel tau - s = 0 in the form that has no
   // cancellation (and is s / v_rel for a_rel = 0, sqrt(2 s / a_rel) for v_rel = 0).
   const auto tau_of = [&](double d2) {
@@ -367,11 +362,11 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
   // The usual cases end here: the nearest point cannot arrive within L (in contact, or far and
   // slow), or taking it would cut L below its tau (far: the step may run until it can arrive).
   double tau = tau_of(d2_[nearest]);
-  if (tau >= L) return L;
+  if (tau >= L) return {.stiffness_dt = L};
   A = std::max(A, node_term(state, static_cast<int>(nearest / 3)));
   n_points += point_weight_[nearest / 3];
   double L_with = limit_from(A, n_points);
-  if (L_with <= tau) return tau;
+  if (L_with <= tau) return {.stiffness_dt = L, .kinematic_dt = tau};
   L = L_with;
 
   // Approaching contact: take the points that can arrive within L (L only falls from here) in
@@ -391,10 +386,10 @@ double RigidSpherePenalty::stable_dt_limit(const State& state) const {
     n_points += point_weight_[static_cast<size_t>(scratch_.back().second)];
     scratch_.pop_back();
     L_with = limit_from(A, n_points);
-    if (L_with <= tau) return tau;
+    if (L_with <= tau) return {.stiffness_dt = L, .kinematic_dt = tau};
     L = L_with;
   }
-  return L;
+  return {.stiffness_dt = L};
 }
 
 // ---------------------------------------------------------------------------------------------

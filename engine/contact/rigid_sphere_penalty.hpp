@@ -74,7 +74,7 @@
 #include <vector>
 
 #include "engine/contact/contact_model.hpp"
-#include "engine/contact/penalty_mode.hpp"
+#include "engine/core/penalty_mode.hpp"
 #include "engine/mesh/model_mesh.hpp"
 #include "engine/mesh/tet_mesh.hpp"
 #include "engine/observe/history.hpp"
@@ -92,17 +92,13 @@ struct RigidSpherePenaltyParams {
   std::string name = "sphere";  // the history column prefix
   RigidSphere sphere;
   PenaltyMode penalty_mode = PenaltyMode::per_point;
-  double penalty = 1e6;  // per_point: K_P [N/m] per quadrature point (thesis 2.8)
+  double penalty = kDefaultPointPenalty;  // per_point: K_P [N/m] per quadrature point (thesis 2.8)
   double penalty_scale = kDefaultElementPenaltyScale;  // element: s > 0
   double damping = 0.0;         // zeta >= 0: the dashpot per point, a fraction of critical
   Vec3 gravity = Vec3::Zero();  // acceleration of the sphere [m/s^2]
   // Unit axis for the history column `<name>.contact_force_axis`; default: the direction of
   // the initial velocity, else of gravity, else -z.
   std::optional<Vec3> force_axis;
-  // The safety factor the engine applies to its structural step (TimeControl::dt_safety); the
-  // penalty limit takes the share sqrt(1 - s^2) of its own bound (for s >= 1, a stability
-  // experiment, the share of s = 0.9).
-  double structural_safety = 0.9;
 };
 
 class RigidSpherePenalty : public ContactModel, public HistorySource {
@@ -117,14 +113,18 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   RigidSpherePenalty(const ModelMesh& mesh, std::vector<Triangle> surface,
                      RigidSpherePenaltyParams params);
 
-  std::string_view name() const override { return "rigid_penalty"; }
   void begin_step(const State& state, double dt) override;
   void add_forces(State& state) override;
+  void correct(State& /*state*/, double /*dt*/) override {}  // a force model: no correction
+  // Completes the sphere's velocity and the step's work, and publishes the ledger (the model
+  // exchanges energy with the sphere, outside the model: it injects none).
   void end_step(const State& state, double dt) override;
-  double stable_dt_limit(const State& state) const override;
+  // The springs' stiffness bound of the points that can act within the step, or the time until
+  // the next point can arrive (a kinematic bound); see the .cpp and docs/contact-time-step.md.
+  ContactStepBound step_bound(const State& state) const override;
   // Work of the contact forces on the body's nodes, trapezoidal over each step:
   // sum 1/2 (f_n + f_{n+1}) . (x_{n+1} - x_n) [J].
-  double work() const override { return work_body_; }
+  double work() const { return work_body_; }
 
   // History: <name>.sphere_x/y/z, .sphere_vx/vy/vz, .sphere_kinetic_energy, .contact_force
   // (|F_s|), .contact_force_axis (F_s . axis), .penetration_max.
@@ -148,7 +148,7 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   double penetration_max() const { return penetration_max_; }  // max_q delta [m]
   // Non-empty when penetration_max() > kFailureDepth * R: the sphere has sunk half its radius
   // into the surface (K_P far too soft for the impact); see failure() in the .cpp.
-  std::string failure() const override;
+  std::string failure() const;
   static constexpr double kFailureDepth = 0.5;
   int active_points() const { return n_active_; }  // points with d < R
   // Work of the contact force on the sphere, trapezoidal like work() [J]. With work():
@@ -183,7 +183,6 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   std::vector<double> point_weight_;  // per triangle
   std::vector<double> node_weight_;   // per surface node: sum_q N_a(q) point_weight
   Vec3 axis_ = -Vec3::UnitZ();
-  double share_ = 0.0;  // sqrt(1 - s^2)
 
   // Sphere state (t_n before the predictor, t_{n+1} after it).
   Vec3 x_s_ = Vec3::Zero(), v_s_ = Vec3::Zero(), a_s_ = Vec3::Zero();

@@ -150,13 +150,23 @@ void CentralDifference::initialise() {
   summary_.n_elements = mesh.n_elements();
 }
 
+// The one safety factor s = dt_safety applies here, to the structure's stable step and to the
+// stiffness a contact model adds, combined in squares; a contact's kinematic bound caps the
+// step as it is (eq. CT.1, engine/contact/contact_model.hpp; docs/contact-time-step.md).
 StepChoice CentralDifference::next_dt() const {
-  StepChoice step{opt_.time.dt_safety * last_eval_.stable_dt, StepLimiter::structure};
-  if (opt_.time.max_dt < step.dt) step = {opt_.time.max_dt, StepLimiter::max_dt};
+  const double s = opt_.time.dt_safety;
+  StepChoice step{s * last_eval_.stable_dt, StepLimiter::structure};
   if (opt_.contact) {
-    const double limit = opt_.contact->stable_dt_limit(s_);
-    if (limit < step.dt) step = {limit, StepLimiter::contact};
+    const ContactStepBound bound = opt_.contact->step_bound(s_);
+    if (std::isfinite(bound.stiffness_dt)) {
+      const double dt_s = last_eval_.stable_dt;
+      const double combined =
+          s / std::sqrt(1.0 / (dt_s * dt_s) + 1.0 / (bound.stiffness_dt * bound.stiffness_dt));
+      if (combined < step.dt) step = {combined, StepLimiter::contact};
+    }
+    if (bound.kinematic_dt < step.dt) step = {bound.kinematic_dt, StepLimiter::contact};
   }
+  if (opt_.time.max_dt < step.dt) step = {opt_.time.max_dt, StepLimiter::max_dt};
   double stop = opt_.time.end_time;
   if (opt_.time.output_interval > 0.0)
     stop = std::min(stop, static_cast<double>(next_output_index_) * opt_.time.output_interval);
@@ -251,14 +261,15 @@ void CentralDifference::sample() {
 std::optional<Instability> CentralDifference::check(bool energy_check) {
   if (auto bad = check_elements(last_eval_, s_.t)) return bad;
   if (opt_.contact) {
-    std::string reason = opt_.contact->failure();
+    const std::string& reason = opt_.contact->ledger().failure;
     if (!reason.empty())
       return Instability{s_.t, fmt::format("contact ({}): {}", opt_.contact->name(), reason), -1,
                          -1};
   }
   if (!energy_check) return std::nullopt;
   if (auto bad = check_finite(s_)) return bad;
-  double w_ext = load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->work() : 0.0);
+  double w_ext =
+      load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->ledger().work : 0.0);
   for (const KinematicConstraint* c : opt_.constraints) w_ext += c->work();
   for (const StateLoad* load : opt_.loads) w_ext += load->work();
   const double err =
@@ -266,7 +277,7 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   summary_.energy_balance_error = energy_.max_relative_error();
   if (auto bad = check_energy(err, opt_.monitor.energy_tolerance, s_.t)) return bad;
   if (!opt_.contact) return std::nullopt;
-  return check_contact_energy(opt_.contact->name(), opt_.contact->injected_energy(),
+  return check_contact_energy(opt_.contact->name(), opt_.contact->ledger().injected_energy,
                               energy_.scale(), opt_.monitor.energy_tolerance, s_.t);
 }
 

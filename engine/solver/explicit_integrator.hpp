@@ -18,6 +18,7 @@
 #include "engine/bc/kinematic_constraint.hpp"
 #include "engine/bc/state_load.hpp"
 #include "engine/contact/contact_model.hpp"
+#include "engine/core/step_safety.hpp"
 #include "engine/monitor/stability_monitor.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/model.hpp"
@@ -26,7 +27,7 @@ namespace ccm {
 
 struct TimeControl {
   double end_time = 0.0;
-  double dt_safety = 0.9;
+  double dt_safety = kDefaultDtSafety;
   double max_dt = std::numeric_limits<double>::infinity();
   double output_interval = 0.0;  // 0: only the initial and final states
   long max_steps = 0;            // 0: no limit

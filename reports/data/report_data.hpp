@@ -8,10 +8,10 @@
 
 #include "db/store/rig_reader.hpp"
 #include "db/store/study_store.hpp"
+#include "records/point_metrics.hpp"
+#include "records/run_record.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/grid/grid_spec.hpp"
-#include "study/metrics/point_metrics.hpp"
-#include "study/runner/run_record.hpp"
 
 namespace ccm::reports {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "study/grid/grid_point.hpp"
+#include "records/grid_point.hpp"
+#include "records/run_record.hpp"
 #include "study/metrics/metric.hpp"
-#include "study/runner/run_record.hpp"
 
 namespace ccm::reports {
 

@@ -6,7 +6,7 @@
 #include <array>
 
 #include "db/store/provenance.hpp"
-#include "study/provenance/version.hpp"
+#include "records/provenance/version.hpp"
 
 namespace ccm::reports {
 namespace {

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "config/strict_table.hpp"
 #include "rig_models/cases/case_code.hpp"
 #include "rig_models/cases/sourced_value.hpp"
-#include "rig_models/cases/toml_fields.hpp"
 #include "rig_models/core/rig_error.hpp"
 
 namespace ccm::rig {
@@ -20,8 +20,8 @@ namespace fs = std::filesystem;
 
 constexpr int kCaseCount = 12;
 
-RigParameters read_rig(const TomlFields& root) {
-  const TomlFields t = root.need_table("rig");
+RigParameters read_rig(const StrictTable& root) {
+  const StrictTable t = root.need_table("rig");
   t.allow_only({"hanging_mass", "impactor_mass", "spring_stiffness", "spring_length",
                 "spring_cylinder_diameter", "artifact_mass", "artifact_inertia_pivot",
                 "pivot_to_sensor", "sensor_area", "sensor_deadband", "pressure_rate", "angle_rate",
@@ -49,8 +49,8 @@ RigParameters read_rig(const TomlFields& root) {
   return r;
 }
 
-DriveParameters read_drive(const TomlFields& root) {
-  const TomlFields t = root.need_table("drive");
+DriveParameters read_drive(const StrictTable& root) {
+  const StrictTable t = root.need_table("drive");
   t.allow_only({"velocity_smoothing", "track_friction", "track_damping", "friction_regularisation",
                 "string_stiffness", "string_damping"});
   DriveParameters d;
@@ -63,8 +63,8 @@ DriveParameters read_drive(const TomlFields& root) {
   return d;
 }
 
-SimulationParameters read_simulation(const TomlFields& root) {
-  const TomlFields t = root.need_table("simulation");
+SimulationParameters read_simulation(const StrictTable& root) {
+  const StrictTable t = root.need_table("simulation");
   t.allow_only({"lead", "output_interval", "after_contact"});
   SimulationParameters p;
   p.lead = read_sourced(t, "lead", "s", {0.0, false});
@@ -74,7 +74,7 @@ SimulationParameters read_simulation(const TomlFields& root) {
 }
 
 template <typename Kind>
-Kind read_kind(const TomlFields& t, std::string_view key, std::array<Kind, 2> kinds) {
+Kind read_kind(const StrictTable& t, std::string_view key, std::array<Kind, 2> kinds) {
   const std::string name = t.need_string(key);
   for (Kind k : kinds)
     if (name == name_of(k)) return k;
@@ -82,8 +82,8 @@ Kind read_kind(const TomlFields& t, std::string_view key, std::array<Kind, 2> ki
          fmt::format("'{}' is not one of: {}, {}", name, name_of(kinds[0]), name_of(kinds[1])));
 }
 
-PivotFriction read_friction(const TomlFields& c) {
-  const TomlFields t = c.need_table("pivot_friction");
+PivotFriction read_friction(const StrictTable& c) {
+  const StrictTable t = c.need_table("pivot_friction");
   t.allow_only({"mu_s", "mu_k", "source"});
   PivotFriction f{t.need_number("mu_s"), t.need_number("mu_k"), t.need_string("source")};
   if (f.mu_s < 0.0) t.fail("mu_s", fmt::format("must be >= 0 (got {})", f.mu_s));
@@ -92,7 +92,7 @@ PivotFriction read_friction(const TomlFields& c) {
 }
 
 // The code must be Table 3.2's for the number and say the same as the other fields.
-void check_code(const TomlFields& t, const RigCase& c) {
+void check_code(const StrictTable& t, const RigCase& c) {
   if (!is_case_code(c.code))
     t.fail("code",
            fmt::format("'{}' is not a case code of thesis Table 3.2 (RX025 ... FF100)", c.code));
@@ -112,7 +112,7 @@ void check_code(const TomlFields& t, const RigCase& c) {
            fmt::format("{} m/s disagrees with the code '{}'", c.target_speed.value, c.code));
 }
 
-RigCase read_case(const TomlFields& t) {
+RigCase read_case(const StrictTable& t) {
   t.allow_only(
       {"number", "code", "target_speed", "impactor", "artifact", "pivot_friction", "source"});
   RigCase c;
@@ -135,10 +135,10 @@ RigCase read_case(const TomlFields& t) {
   return c;
 }
 
-std::vector<RigCase> read_cases(const TomlFields& root) {
+std::vector<RigCase> read_cases(const StrictTable& root) {
   std::vector<RigCase> cases;
   std::array<bool, kCaseCount + 1> seen{};
-  for (const TomlFields& t : root.need_tables("cases")) {
+  for (const StrictTable& t : root.need_tables("cases")) {
     cases.push_back(read_case(t));
     const int n = cases.back().number;
     if (seen[static_cast<size_t>(n)]) t.fail("number", fmt::format("case {} is given twice", n));
@@ -172,7 +172,7 @@ RigCaseTable parse_case_table(std::string_view text, const fs::path& source) {
   } catch (const toml::parse_error& e) {
     throw rig_input_error(source, static_cast<int>(e.source().begin.line), "", e.description());
   }
-  const TomlFields fields(root, "", source);
+  const StrictTable fields(root, "", source);
   fields.allow_only({"rig", "drive", "simulation", "cases"});
   RigCaseTable table;
   table.source = source;

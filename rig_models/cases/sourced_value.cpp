@@ -4,9 +4,9 @@
 
 namespace ccm::rig {
 
-SourcedValue read_sourced(const TomlFields& parent, std::string_view key, std::string_view unit,
+SourcedValue read_sourced(const StrictTable& parent, std::string_view key, std::string_view unit,
                           ValueBound bound) {
-  const TomlFields t = parent.need_table(key);
+  const StrictTable t = parent.need_table(key);
   t.allow_only({"value", "unit", "source"});
   SourcedValue v{t.need_number("value"), t.need_string("unit"), t.need_string("source")};
   if (v.unit != unit) t.fail("unit", fmt::format("must be '{}' (got '{}')", unit, v.unit));

@@ -5,8 +5,8 @@
 
 #include <string_view>
 
+#include "config/strict_table.hpp"
 #include "rig_models/cases/rig_case.hpp"
-#include "rig_models/cases/toml_fields.hpp"
 
 namespace ccm::rig {
 
@@ -15,7 +15,7 @@ struct ValueBound {
   bool strictly = true;  // value > minimum; else value >= minimum
 };
 
-SourcedValue read_sourced(const TomlFields& parent, std::string_view key, std::string_view unit,
+SourcedValue read_sourced(const StrictTable& parent, std::string_view key, std::string_view unit,
                           ValueBound bound = {});
 
 }  // namespace ccm::rig

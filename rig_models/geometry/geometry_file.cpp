@@ -8,8 +8,8 @@
 #include <sstream>
 #include <utility>
 
+#include "config/strict_table.hpp"
 #include "rig_models/cases/sourced_value.hpp"
-#include "rig_models/cases/toml_fields.hpp"
 #include "rig_models/core/rig_error.hpp"
 
 namespace ccm::rig {
@@ -17,10 +17,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-SourcedValue length(const TomlFields& t, std::string_view key) { return read_sourced(t, key, "m"); }
+SourcedValue length(const StrictTable& t, std::string_view key) {
+  return read_sourced(t, key, "m");
+}
 
-ArtifactGeometry read_artifact(const TomlFields& root) {
-  const TomlFields t = root.need_table("artifact");
+ArtifactGeometry read_artifact(const StrictTable& root) {
+  const StrictTable t = root.need_table("artifact");
   t.allow_only({"envelope_outer_diameter", "envelope_wall", "envelope_top", "envelope_length",
                 "core_width", "core_top", "core_bottom", "core_split", "stabilizer_thickness",
                 "stabilizer_upper_depth", "stabilizer_lower_depth", "pin_diameter", "sensor_width",
@@ -80,8 +82,8 @@ ArtifactGeometry read_artifact(const TomlFields& root) {
   return a;
 }
 
-ImpactorGeometry read_impactor(const TomlFields& root) {
-  const TomlFields t = root.need_table("impactor");
+ImpactorGeometry read_impactor(const StrictTable& root) {
+  const StrictTable t = root.need_table("impactor");
   t.allow_only({"rod_diameter", "rod_length", "guide_length", "carriage_width", "carriage_length",
                 "carriage_height", "spring_mass", "pearl_inset"});
   ImpactorGeometry g;
@@ -103,9 +105,9 @@ ImpactorGeometry read_impactor(const TomlFields& root) {
 }
 
 // One part's material: E, nu and rho as `keys` says ("E", "nu", "rho" in any subset).
-PartMaterial read_material(const TomlFields& materials, std::string_view part,
+PartMaterial read_material(const StrictTable& materials, std::string_view part,
                            std::initializer_list<std::string_view> keys) {
-  const TomlFields t = materials.need_table(part);
+  const StrictTable t = materials.need_table(part);
   t.allow_only(keys);
   PartMaterial m;
   for (std::string_view key : keys) {
@@ -119,8 +121,8 @@ PartMaterial read_material(const TomlFields& materials, std::string_view part,
   return m;
 }
 
-RigMaterials read_materials(const TomlFields& root) {
-  const TomlFields t = root.need_table("materials");
+RigMaterials read_materials(const StrictTable& root) {
+  const StrictTable t = root.need_table("materials");
   t.allow_only({"envelope", "rod", "carriage", "core", "spring"});
   RigMaterials m;
   m.envelope = read_material(t, "envelope", {"E", "nu", "rho"});
@@ -131,8 +133,8 @@ RigMaterials read_materials(const TomlFields& root) {
   return m;
 }
 
-MeshSizes read_mesh(const TomlFields& root, const ArtifactGeometry& a, const ImpactorGeometry& g) {
-  const TomlFields t = root.need_table("mesh");
+MeshSizes read_mesh(const StrictTable& root, const ArtifactGeometry& a, const ImpactorGeometry& g) {
+  const StrictTable t = root.need_table("mesh");
   t.allow_only({"carriage", "rod", "spring", "envelope", "envelope_contact", "core"});
   MeshSizes m{length(t, "carriage"),         length(t, "rod"),
               length(t, "spring"),           length(t, "envelope"),
@@ -156,7 +158,7 @@ RigGeometry parse_geometry(std::string_view text, const fs::path& source) {
   } catch (const toml::parse_error& e) {
     throw rig_input_error(source, static_cast<int>(e.source().begin.line), "", e.description());
   }
-  const TomlFields fields(root, "", source);
+  const StrictTable fields(root, "", source);
   fields.allow_only({"artifact", "impactor", "materials", "mesh", "contact", "environment"});
   RigGeometry g;
   g.source = source;
@@ -164,14 +166,14 @@ RigGeometry parse_geometry(std::string_view text, const fs::path& source) {
   g.impactor = read_impactor(fields);
   g.materials = read_materials(fields);
   g.mesh = read_mesh(fields, g.artifact, g.impactor);
-  const TomlFields contact = fields.need_table("contact");
+  const StrictTable contact = fields.need_table("contact");
   contact.allow_only({"friction", "restitution"});
   g.contact.friction = read_sourced(contact, "friction", "1", {0.0, false});
   g.contact.restitution = read_sourced(contact, "restitution", "1", {0.0, false});
   if (g.contact.restitution.value > 1.0)
     contact.fail("restitution",
                  fmt::format("must be at most 1 (got {})", g.contact.restitution.value));
-  const TomlFields env = fields.need_table("environment");
+  const StrictTable env = fields.need_table("environment");
   env.allow_only({"gravity"});
   g.gravity = read_sourced(env, "gravity", "m/s^2", {0.0, false});
   return g;

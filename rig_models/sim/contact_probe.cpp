@@ -5,7 +5,10 @@
 namespace ccm::rig {
 
 ContactProbe::ContactProbe(ContactModel& inner, std::vector<int> sensor_nodes, const Vec3& axis)
-    : inner_(inner), nodes_(std::move(sensor_nodes)), v_before_(nodes_.size()) {
+    : ContactModel(inner.name()),
+      inner_(inner),
+      nodes_(std::move(sensor_nodes)),
+      v_before_(nodes_.size()) {
   if (!(axis.norm() > 0.0)) throw std::invalid_argument("contact probe: zero axis");
   axis_ = axis.normalized();
 }

@@ -3,7 +3,8 @@
 // contact, this velocity was differentiated across the model time step and multiplied by that
 // node's lumped nodal mass ... projected along the axis of motion of the impactor" and summed
 // over the sensor surface Gamma_s:
-//   F_c = sum_{j in Gamma_s} m_j (v_j,after - v_j,before) . d / dt          (docs/equations.md "Contact force and sensor pressure")
+//   F_c = sum_{j in Gamma_s} m_j (v_j,after - v_j,before) . d / dt          (docs/equations.md
+//   "Contact force and sensor pressure")
 // A contact model decorator: it forwards every hook of ContactModel (all nine, the figures the
 // monitor checks included: a dropped injected_energy would switch off the contact-energy check
 // in every rig run) to the model it wraps and, around its correction, reads the velocities of
@@ -24,16 +25,16 @@ class ContactProbe : public ContactModel {
   // `inner` is not owned and must outlive the probe.
   ContactProbe(ContactModel& inner, std::vector<int> sensor_nodes, const Vec3& axis);
 
-  std::string_view name() const override { return inner_.name(); }
   void begin_step(const State& s, double dt) override { inner_.begin_step(s, dt); }
   void add_forces(State& s) override { inner_.add_forces(s); }
   void correct(State& s, double dt) override;
-  void end_step(const State& s, double dt) override { inner_.end_step(s, dt); }
-  double stable_dt_limit(const State& s) const override { return inner_.stable_dt_limit(s); }
-  double work() const override { return inner_.work(); }
-  // Forwarded like every other hook: the monitor's contact-energy check reads it.
-  double injected_energy() const override { return inner_.injected_energy(); }
-  std::string failure() const override { return inner_.failure(); }
+  // The inner model's ledger (work, injected energy, failure) becomes the probe's: the monitor's
+  // checks read it.
+  void end_step(const State& s, double dt) override {
+    inner_.end_step(s, dt);
+    ledger_ = inner_.ledger();
+  }
+  ContactStepBound step_bound(const State& s) const override { return inner_.step_bound(s); }
 
   // sum over the steps so far of F_c dt [N s], along the axis.
   double impulse() const { return impulse_; }

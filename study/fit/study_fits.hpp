@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "records/point_metrics.hpp"
 #include "study/fit/surface_fit.hpp"
 #include "study/metrics/metric.hpp"
-#include "study/metrics/point_metrics.hpp"
 
 namespace ccm::study {
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "study/grid/grid_point.hpp"
+#include "records/grid_point.hpp"
 #include "study/grid/grid_spec.hpp"
 
 namespace ccm::study {

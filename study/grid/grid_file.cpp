@@ -4,11 +4,11 @@
 
 #include <algorithm>
 
+#include "config/config_error.hpp"
+#include "config/did_you_mean.hpp"
+#include "config/strict_table.hpp"
+#include "config/text_file.hpp"
 #include "study/grid/point_parameters.hpp"
-#include "study/grid/strict_table.hpp"
-#include "study/scene/did_you_mean.hpp"
-#include "study/scene/scene.hpp"
-#include "study/scene/scene_file.hpp"
 
 namespace ccm::study {
 namespace {
@@ -200,8 +200,8 @@ GridSpec parse_grid(std::string_view text, const std::filesystem::path& source) 
   try {
     root = toml::parse(text, source.string());
   } catch (const toml::parse_error& e) {
-    throw scene_error(source, static_cast<int>(e.source().begin.line), "",
-                      fmt::format("TOML syntax error: {}", e.description()));
+    throw config_error(source, static_cast<int>(e.source().begin.line), "",
+                       fmt::format("TOML syntax error: {}", e.description()));
   }
   GridSpec g;
   g.source = source;
@@ -218,7 +218,7 @@ GridSpec parse_grid(std::string_view text, const std::filesystem::path& source) 
 }
 
 GridSpec parse_grid_file(const std::filesystem::path& file) {
-  return parse_grid(read_scene_text(file), file);
+  return parse_grid(read_config_text(file), file);
 }
 
 }  // namespace ccm::study

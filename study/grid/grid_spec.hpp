@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/contact/penalty_mode.hpp"
+#include "engine/core/penalty_mode.hpp"
+#include "engine/core/step_safety.hpp"
 
 namespace ccm::study {
 
@@ -47,7 +48,7 @@ struct GridTime {
   double contact_time = 0.1;      // t_c [s]: the gap is speed * t_c
   double end = 0.15;              // t_f [s]
   double output_interval = 1e-3;  // [s], the same for both models
-  double dt_safety = 0.9;
+  double dt_safety = kDefaultDtSafety;
   long max_steps = 0;  // 0: no limit
 };
 
@@ -55,7 +56,8 @@ struct GridContact {
   // The rigid model's springs: per_point (K_P = penalty, thesis 2.8) or element
   // (k = penalty_scale K A^2 / V per surface triangle); see docs/grid-file.md.
   PenaltyMode penalty_mode = PenaltyMode::per_point;
-  double penalty = 1e6;  // K_P [N/m] per quadrature point (rigid model, thesis 2.8)
+  double penalty =
+      kDefaultPointPenalty;  // K_P [N/m] per quadrature point (rigid model, thesis 2.8)
   double penalty_scale = kDefaultElementPenaltyScale;  // s (rigid model, element mode)
   double damping = 0.0;      // zeta, fraction of critical per point (rigid model)
   double restitution = 0.0;  // e (ccm model, DCR)
@@ -77,10 +79,11 @@ struct ConvergenceSpec {
 struct GridSpec {
   std::filesystem::path source;  // the grid file, as given
   std::string title;
-  std::vector<double> modulus_ratios;                     // ER
-  std::vector<double> length_ratios;                      // RLS
-  std::vector<double> kinetic_energies;                   // KE_I [J]
-  std::map<std::string, std::vector<double>> other_axes;  // by name (kOtherAxisNames)
+  std::vector<double> modulus_ratios;    // ER
+  std::vector<double> length_ratios;     // RLS
+  std::vector<double> kinetic_energies;  // KE_I [J]
+  std::map<std::string, std::vector<double>>
+      other_axes;  // by name (kGridAxisNames, study/grid/grid_axis.hpp)
   GridTime time;
   ArtifactSpec artifact;
   ImpactorSpec impactor;

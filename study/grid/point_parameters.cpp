@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
-#include <map>
 #include <numbers>
 #include <stdexcept>
 
@@ -34,70 +32,85 @@ std::string non_negative_problem(double v) {
   return v >= 0.0 ? std::string() : fmt::format("must be >= 0 (got {})", v);
 }
 
-using Check = std::function<std::string(double)>;
+// The allowed values of an axis: empty when `value` is allowed, else the problem.
+std::string axis_problem(GridAxis axis, double value) {
+  switch (axis) {
+    case GridAxis::nu:
+      return poisson_problem(value);
+    case GridAxis::impactor_mesh_ratio:
+      return mesh_ratio_problem(value);
+    case GridAxis::artifact_mesh_size:
+    case GridAxis::mesh_scale:
+    case GridAxis::penalty:
+      return positive_problem(value);
+    case GridAxis::penalty_scale:
+    case GridAxis::damping:
+    case GridAxis::friction:
+      return non_negative_problem(value);
+    case GridAxis::restitution:
+      return unit_interval_problem(value);
+  }
+  return fmt::format("unknown grid axis {}", static_cast<int>(axis));
+}
 
-const std::map<std::string_view, Check>& axis_checks() {
-  static const std::map<std::string_view, Check> checks = {
-      {"ER", positive_problem},
-      {"RLS", positive_problem},
-      {"KE", positive_problem},
-      {"nu", poisson_problem},
-      {"artifact_mesh_size", positive_problem},
-      {"impactor_mesh_ratio", mesh_ratio_problem},
-      {"mesh_scale", positive_problem},
-      {"penalty", positive_problem},
-      {"penalty_scale", non_negative_problem},
-      {"damping", non_negative_problem},
-      {"restitution", unit_interval_problem},
-      {"friction", non_negative_problem},
-  };
-  return checks;
+// The point's parameters with one axis value applied (mesh_scale is applied last, on top of the
+// mesh sizes, by point_parameters).
+void apply_axis(GridAxis axis, double value, PointParameters& p) {
+  switch (axis) {
+    case GridAxis::nu:
+      p.artifact.nu = value;
+      p.impactor_nu = value;
+      return;
+    case GridAxis::artifact_mesh_size:
+      p.artifact.mesh_size = value;
+      return;
+    case GridAxis::impactor_mesh_ratio:
+      p.impactor_mesh_size = value * p.impactor_diameter;
+      return;
+    case GridAxis::mesh_scale:
+      return;
+    case GridAxis::penalty:
+      p.contact.penalty = value;
+      return;
+    case GridAxis::penalty_scale:  // 0: the thesis's K_P per point
+      p.contact.penalty_mode = value > 0.0 ? PenaltyMode::element : PenaltyMode::per_point;
+      if (value > 0.0) p.contact.penalty_scale = value;
+      return;
+    case GridAxis::damping:
+      p.contact.damping = value;
+      return;
+    case GridAxis::restitution:
+      p.contact.restitution = value;
+      return;
+    case GridAxis::friction:
+      p.contact.friction = value;
+      return;
+  }
 }
 
 void apply_other_axis(std::string_view name, double value, PointParameters& p) {
-  if (name == "nu") {
-    p.artifact.nu = value;
-    p.impactor_nu = value;
-  } else if (name == "artifact_mesh_size") {
-    p.artifact.mesh_size = value;
-  } else if (name == "impactor_mesh_ratio") {
-    p.impactor_mesh_size = value * p.impactor_diameter;
-  } else if (name == "penalty") {
-    p.contact.penalty = value;
-  } else if (name == "penalty_scale") {  // 0: the thesis's K_P per point
-    p.contact.penalty_mode = value > 0.0 ? PenaltyMode::element : PenaltyMode::per_point;
-    if (value > 0.0) p.contact.penalty_scale = value;
-  } else if (name == "damping") {
-    p.contact.damping = value;
-  } else if (name == "restitution") {
-    p.contact.restitution = value;
-  } else if (name == "friction") {
-    p.contact.friction = value;
-  } else if (name != "mesh_scale") {  // applied last, on top of the mesh sizes
-    throw std::invalid_argument(fmt::format("unknown grid axis '{}'", name));
-  }
+  const std::optional<GridAxis> axis = parse_grid_axis(name);
+  if (!axis) throw std::invalid_argument(fmt::format("unknown grid axis '{}'", name));
+  apply_axis(*axis, value, p);
 }
 
 }  // namespace
 
 const std::vector<std::string_view>& other_axis_names() {
-  static const std::vector<std::string_view> names = {"nu",
-                                                      "artifact_mesh_size",
-                                                      "impactor_mesh_ratio",
-                                                      "mesh_scale",
-                                                      "penalty",
-                                                      "penalty_scale",
-                                                      "damping",
-                                                      "restitution",
-                                                      "friction"};
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> out;
+    for (const GridAxisName& a : kGridAxisNames) out.push_back(a.name);
+    return out;
+  }();
   return names;
 }
 
 std::string axis_value_problem(std::string_view name, double value) {
-  const auto it = axis_checks().find(name);
-  if (it == axis_checks().end()) return fmt::format("unknown grid axis '{}'", name);
+  const bool main_axis = name == "ER" || name == "RLS" || name == "KE";
+  const std::optional<GridAxis> axis = parse_grid_axis(name);
+  if (!main_axis && !axis) return fmt::format("unknown grid axis '{}'", name);
   if (!std::isfinite(value)) return fmt::format("must be finite (got {})", value);
-  return it->second(value);
+  return main_axis ? positive_problem(value) : axis_problem(*axis, value);
 }
 
 PointParameters point_parameters(const GridSpec& spec, const GridPoint& point) {
@@ -112,7 +125,8 @@ PointParameters point_parameters(const GridSpec& spec, const GridPoint& point) {
   p.impactor_contact_radius = spec.impactor.contact_radius;
   p.contact = spec.contact;
   for (const auto& [name, value] : point.other_axes) apply_other_axis(name, value, p);
-  if (const auto it = point.other_axes.find("mesh_scale"); it != point.other_axes.end()) {
+  const auto it = point.other_axes.find(std::string(to_string(GridAxis::mesh_scale)));
+  if (it != point.other_axes.end()) {
     p.artifact.mesh_size *= it->second;
     p.artifact.contact_mesh_size *= it->second;
     p.impactor_mesh_size *= it->second;

@@ -6,22 +6,13 @@
 #include <string_view>
 #include <vector>
 
-#include "study/grid/grid_point.hpp"
+#include "records/grid_point.hpp"
+#include "study/grid/grid_axis.hpp"
 #include "study/grid/grid_spec.hpp"
 
 namespace ccm::study {
 
-// Names a grid may sweep besides ER, RLS and KE (GridPoint::other_axes):
-//   nu                   Poisson's ratio of both bodies
-//   artifact_mesh_size   the artifact's tet edge [m]
-//   impactor_mesh_ratio  the impactor's tet edge / D_I
-//   mesh_scale           a factor on both mesh sizes (convergence runs)
-//   penalty              K_P [N/m] (rigid model)
-//   penalty_scale        s >= 0 (rigid model): 0 is the thesis's K_P per point (penalty_mode
-//                        per_point), s > 0 the element-scaled penalty s K A^2 / V (element)
-//   damping              zeta, the penalty's dashpot, fraction of critical (rigid model)
-//   restitution          e (ccm model)
-//   friction             mu (ccm model)
+// The names of the axes a grid may sweep besides ER, RLS and KE (study/grid/grid_axis.hpp).
 const std::vector<std::string_view>& other_axis_names();
 
 // Empty when `value` is allowed for axis `name`, else the problem ("must be > 0 (got -1)").

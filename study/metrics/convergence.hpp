@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "study/grid/grid_point.hpp"
-#include "study/metrics/point_metrics.hpp"
-#include "study/runner/run_record.hpp"
+#include "records/grid_point.hpp"
+#include "records/point_metrics.hpp"
+#include "records/run_record.hpp"
 
 namespace ccm::study {
 

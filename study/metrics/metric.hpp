@@ -5,7 +5,7 @@
 #include <optional>
 #include <string_view>
 
-#include "study/metrics/point_metrics.hpp"
+#include "records/point_metrics.hpp"
 
 namespace ccm::study {
 

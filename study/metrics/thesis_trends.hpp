@@ -11,8 +11,8 @@
 
 #include <vector>
 
-#include "study/grid/grid_point.hpp"
-#include "study/runner/run_record.hpp"
+#include "records/grid_point.hpp"
+#include "records/run_record.hpp"
 
 namespace ccm::study {
 

@@ -11,8 +11,8 @@
 
 #include <string>
 
-#include "study/grid/grid_point.hpp"
-#include "study/metrics/point_metrics.hpp"
+#include "records/grid_point.hpp"
+#include "records/point_metrics.hpp"
 
 namespace ccm::study {
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "records/grid_point.hpp"
+#include "records/point_metrics.hpp"
 #include "study/fit/study_fits.hpp"
-#include "study/grid/grid_point.hpp"
-#include "study/metrics/point_metrics.hpp"
 #include "study/recommend/decision_rule.hpp"
 
 namespace ccm::study {

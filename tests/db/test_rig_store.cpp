@@ -9,7 +9,7 @@
 #include "db/sqlite/statement.hpp"
 #include "db/store/rig_reader.hpp"
 #include "db/store/rig_store.hpp"
-#include "study/provenance/version.hpp"
+#include "records/provenance/version.hpp"
 #include "tests/db/scratch_dir.hpp"
 #include "tests/db/store_queries.hpp"
 

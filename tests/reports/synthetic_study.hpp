@@ -19,7 +19,7 @@
 #include <array>
 #include <filesystem>
 
-#include "study/grid/grid_point.hpp"
+#include "records/grid_point.hpp"
 
 namespace ccm::test {
 

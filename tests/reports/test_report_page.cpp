@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "app/study_commands.hpp"
-#include "study/provenance/version.hpp"
+#include "records/provenance/version.hpp"
 #include "tests/reports/csv_reader.hpp"
 #include "tests/reports/png_size.hpp"
 #include "tests/reports/synthetic_study.hpp"

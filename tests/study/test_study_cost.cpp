@@ -15,10 +15,10 @@
 
 #include "db/sqlite/statement.hpp"
 #include "db/store/study_store.hpp"
+#include "records/content_hash.hpp"
+#include "run/scene/point_scene.hpp"
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
-#include "study/grid/point_scene.hpp"
-#include "study/runner/content_hash.hpp"
 #include "tests/study/grid/grid_fixtures.hpp"
 #include "tests/support/temp_dir.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "study/scene/scene_file.hpp"
+#include "run/scene/scene_file.hpp"
 
 namespace ccm::test {
 
@@ -20,11 +20,11 @@ inline std::string cube_body_toml(const std::string& name) {
 // One cube named "cube"; lines 1-12.
 inline const std::string kOneCubeScene = kTimeToml + cube_body_toml("cube");
 
-// The message of the SceneError parsing `text` (as "s.toml") throws, or "(no error)".
+// The message of the ConfigError parsing `text` (as "s.toml") throws, or "(no error)".
 inline std::string scene_error_of(const std::string& text) {
   try {
     parse_scene(text, "s.toml");
-  } catch (const SceneError& e) {
+  } catch (const ConfigError& e) {
     return e.what();
   }
   return "(no error)";

@@ -70,7 +70,8 @@ std::pair<Vec3, Vec3> tangent_basis(const Vec3& n) {
 
 DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
                        const std::vector<int>& fixed_nodes)
-    : settings_(std::move(settings)),
+    : ContactModel("dcr"),
+      settings_(std::move(settings)),
       features_(make_surface_features(mesh, settings_.surfaces)),
       restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)),
       projection_update_(mesh, features_.nodes),
@@ -479,12 +480,16 @@ void DcrContact::collect_pair_impulses(const std::vector<Vec3>& x) {
 // edge in one step: the projection then stays a small correction, and the end-of-step
 // configuration of a pair stays close to the linear path the CCD assumed. The limit applies
 // only while two bodies can come near each other within it (bodies_reach_time).
-double DcrContact::stable_dt_limit(const State& state) const {
+ContactStepBound DcrContact::step_bound(const State& state) const {
   double v_max = 0.0;
   for (int n : features_.nodes) v_max = std::max(v_max, state.v[static_cast<size_t>(n)].norm());
-  if (!(v_max > 0.0)) return std::numeric_limits<double>::infinity();
+  if (!(v_max > 0.0)) return {};
   const double limit = settings_.step_fraction * min_edge_ / (2.0 * v_max);
-  return std::max(limit, bodies_reach_time(state));
+  return {.kinematic_dt = std::max(limit, bodies_reach_time(state))};
+}
+
+void DcrContact::end_step(const State& /*state*/, double /*dt*/) {
+  ledger_ = {.work = work(), .injected_energy = injected_energy(), .failure = failure()};
 }
 
 // Without self-contact: the shortest time in which two bodies' surfaces could come within the

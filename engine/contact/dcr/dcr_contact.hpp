@@ -15,8 +15,8 @@
 //      re-evaluated and the stored energy they gained is booked (projection_update.hpp);
 //   3. momentum decomposition (contact_impulses.hpp): on the end-of-step velocity v* + dt/2 a,
 //      each contact may approach at most by its remaining gap in the next step
-//      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, docs/contact-method.md §1.5),
-//      with Coulomb friction iterated together with the normal impulses;
+//      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, docs/contact-method.md
+//      §1.5), with Coulomb friction iterated together with the normal impulses;
 //   4. restitution (pair_restitution.hpp): the user's coefficient e acts on the rigid motions
 //      of the two bodies when a contact episode ends.
 // The velocity change is applied to v* so that v_{n+1} = v* + dt/2 a_{n+1} satisfies it.
@@ -64,20 +64,24 @@ class DcrContact : public ContactModel, public HistorySource {
   // fixed_nodes: nodes held by boundary conditions; the contact never moves them.
   DcrContact(const ModelMesh& mesh, DcrSettings settings, const std::vector<int>& fixed_nodes);
 
-  std::string_view name() const override { return "dcr"; }
   void begin_step(const State& state, double dt) override;
+  void add_forces(State& /*state*/) override {}  // a constraint model: no forces
   void correct(State& state, double dt) override;
-  double stable_dt_limit(const State& state) const override;
+  // Publishes the ledger (work, injected energy, failure) of the step.
+  void end_step(const State& state, double dt) override;
+  // A kinematic bound only: step_fraction of the shortest edge at the fastest node's speed, or
+  // the bodies' reach time when that is longer (docs/contact-time-step.md, "DCR").
+  ContactStepBound step_bound(const State& state) const override;
   // Work on the bodies so far, but for this step's projection: the integrator measured the
   // stored energy before the contact moved any node, so this step's projection energy enters
   // its balance with the next evaluation (the history column contact.work has it all).
-  double work() const override { return work_ - projection_work_; }
+  double work() const { return work_ - projection_work_; }
   // Every DCR contact is between bodies of the model and can only dissipate (inelastic
   // constraints, dissipative restitution and friction): net positive work is injected.
-  double injected_energy() const override { return std::max(0.0, work()); }
+  double injected_energy() const { return std::max(0.0, work()); }
   // Non-empty when the projection left a penetration deeper than kFailurePenetration times the
   // shortest surface edge (the iterations did not converge: the contact no longer holds).
-  std::string failure() const override;
+  std::string failure() const;
   static constexpr double kFailurePenetration = 1e-3;
   // Rounds of projection and re-detection of what the projection pushed through.
   static constexpr int kDetectionRounds = 4;

@@ -47,13 +47,15 @@ double kuhn_a2_over_v(const Vec3& normal, const Vec3& h) {
   return 0.0;
 }
 
-// The model with its stable_dt_limit recorded: the limit it gave and the dt of every step.
+// The model with its step bound recorded (the smaller of its stiffness and kinematic bounds) and
+// the dt of every step.
 class Probe : public RigidSpherePenalty {
  public:
   using RigidSpherePenalty::RigidSpherePenalty;
-  double stable_dt_limit(const State& s) const override {
-    limit_ = RigidSpherePenalty::stable_dt_limit(s);
-    return limit_;
+  ContactStepBound step_bound(const State& s) const override {
+    const ContactStepBound b = RigidSpherePenalty::step_bound(s);
+    limit_ = std::min(b.stiffness_dt, b.kinematic_dt);
+    return b;
   }
   void begin_step(const State& s, double dt) override {
     steps.push_back({dt, limit_, active_points()});  // points of the last evaluation
@@ -290,7 +292,7 @@ TEST_CASE("element penalty: at s = 0.1 the springs never limit the step of a def
     RigidSpherePenalty at_rest(model.mesh, model.mesh.surfaces.at("box/boundary").triangles,
                                pressed);
     at_rest.add_forces(st);
-    const double springs = at_rest.stable_dt_limit(st) / r.dt_initial;
+    const double springs = at_rest.step_bound(st).stiffness_dt / r.dt_initial;
     INFO("zeta " << zeta << ": " << at_rest.active_points()
                  << " points pressed 0.05 m: the springs' limit is " << springs
                  << " x the structural step");

@@ -1,7 +1,7 @@
 // The rigid-sphere penalty model (thesis 2.8; engine/contact/rigid_sphere_penalty.hpp):
 // forces against the derivative of the penalty energy, momentum and energy through an impact on
-// a free body, the 1-DOF closed form (docs/contact-method.md §6(d)), the stable step limit binding and
-// its margin, no contact at a distance, and the [contact] table of the scene file.
+// a free body, the 1-DOF closed form (docs/contact-method.md §6(d)), the stable step limit binding
+// and its margin, no contact at a distance, and the [contact] table of the scene file.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "engine/contact/rigid_sphere_penalty.hpp"
-#include "study/scene/scene_builder.hpp"
-#include "study/scene/scene_file.hpp"
+#include "run/scene/scene_builder.hpp"
+#include "run/scene/scene_file.hpp"
 #include "tests/support/models.hpp"
 #include "tests/support/scene_fixtures.hpp"
 #include "tests/support/tolerance.hpp"
@@ -113,15 +113,19 @@ struct Recorder {
   }
 };
 
-// The model with its stable_dt_limit scaled (to run beyond it on purpose), recording every
-// step: its dt, the limit it was given, and the sphere's height at its start.
+// The model with its stiffness bound scaled (to run beyond it on purpose), recording every
+// step: its dt, the longest step its bound allows under eq. CT.1 with the default safety 0.9
+// (min(0.9 stiffness bound, kinematic bound), the structure left out), and the sphere's height
+// at its start.
 class Probe : public RigidSpherePenalty {
  public:
   Probe(std::vector<Triangle> surface, RigidSpherePenaltyParams p, double scale = 1.0)
       : RigidSpherePenalty(std::move(surface), std::move(p)), scale_(scale) {}
-  double stable_dt_limit(const State& s) const override {
-    limit_ = scale_ * RigidSpherePenalty::stable_dt_limit(s);
-    return limit_;
+  ContactStepBound step_bound(const State& s) const override {
+    ContactStepBound b = RigidSpherePenalty::step_bound(s);
+    b.stiffness_dt *= scale_;
+    limit_ = std::min(kDefaultDtSafety * b.stiffness_dt, b.kinematic_dt);
+    return b;
   }
   void begin_step(const State& s, double dt) override {
     steps.push_back({dt, limit_, sphere_position().z()});
@@ -415,26 +419,30 @@ TEST_CASE("rigid sphere penalty: the stable step limit", "[contact][rigid_penalt
     for (size_t i = 0; i < s.x.size(); ++i) s.inv_m[i] = 1.0 / (1e5 / 24.0);  // rho V / 4
     RigidSpherePenalty contact(boundary(model, "tet"), on_q0(kTetR - 1e-4, 0.0));
     const double omega2 = kTetPenalty * 3.0 / (1e5 / 24.0) + kTetPenalty / kTetMass;
-    const double expected = std::sqrt(1.0 - 0.81) * 2.0 / std::sqrt(omega2);
-    CHECK(test::relative_error(contact.stable_dt_limit(s), expected) < 1e-14);
+    // The bound carries no safety factor: the integrator applies dt_safety (eq. CT.1).
+    const double expected = 2.0 / std::sqrt(omega2);
+    CHECK(test::relative_error(contact.step_bound(s).stiffness_dt, expected) < 1e-14);
+    CHECK(std::isinf(contact.step_bound(s).kinematic_dt));
     // With dashpots at zeta: times sqrt(1 + zeta^2) - zeta (sqrt(2) - 1 at zeta = 1).
     RigidSpherePenaltyParams damped = on_q0(kTetR - 1e-4, 0.0);
     damped.damping = 1.0;
     RigidSpherePenalty with_dashpot(boundary(model, "tet"), damped);
-    CHECK(test::relative_error(with_dashpot.stable_dt_limit(s), (std::sqrt(2.0) - 1.0) * expected) <
-          1e-14);
+    CHECK(test::relative_error(with_dashpot.step_bound(s).stiffness_dt,
+                               (std::sqrt(2.0) - 1.0) * expected) < 1e-14);
     // Far away and at rest: no limit. Far away and approaching: the time to come within reach
     // at twice the predictor's reach bound (docs/contact-time-step.md): gap - 1e-6 R at
     // 2 x 2 m/s, or, falling from rest under gravity, 2 g tau^2 / 2 = gap - 1e-6 R.
     RigidSpherePenalty far(boundary(model, "tet"), on_q0(1.0, 0.0));
-    CHECK(std::isinf(far.stable_dt_limit(s)));
+    CHECK(std::isinf(far.step_bound(s).stiffness_dt));
+    CHECK(std::isinf(far.step_bound(s).kinematic_dt));
     const double reach = 1.0 - kTetR - 1e-6 * kTetR;
     RigidSpherePenalty coming(boundary(model, "tet"), on_q0(1.0, -2.0));
-    CHECK(test::relative_error(coming.stable_dt_limit(s), reach / 4.0) < 1e-12);
+    CHECK(test::relative_error(coming.step_bound(s).kinematic_dt, reach / 4.0) < 1e-12);
     RigidSpherePenaltyParams dropped = on_q0(1.0, 0.0);
     dropped.gravity = Vec3(0.0, 0.0, -9.81);
     RigidSpherePenalty falling(boundary(model, "tet"), dropped);
-    CHECK(test::relative_error(falling.stable_dt_limit(s), std::sqrt(reach / 9.81)) < 1e-12);
+    CHECK(test::relative_error(falling.step_bound(s).kinematic_dt, std::sqrt(reach / 9.81)) <
+          1e-12);
   }
 
   SECTION("a huge K_P shortens the step of a run, which stays stable") {
@@ -455,10 +463,12 @@ TEST_CASE("rigid sphere penalty: the stable step limit", "[contact][rigid_penalt
       for (const Probe::Step& st : p.steps) m = std::min(m, st.limit);
       return m;
     };
+    // With the springs far stiffer than the box, eq. CT.1 gives dt = 0.9 k / sqrt(1 + (k /
+    // dt_s)^2) = 0.9 k to within 1e-4 (k < 0.01 dt_s): a step "at the bound" is within 0.1 % of it.
     long bound = 0;
     for (const Probe::Step& st : stiff.steps) {
-      CHECK(st.dt <= st.limit);
-      if (st.dt == st.limit) ++bound;
+      CHECK(st.dt <= st.limit * (1.0 + 1e-12));
+      if (st.dt >= 0.999 * st.limit) ++bound;
     }
     INFO("structural dt " << r_stiff.dt_initial << " s; smallest limit: K_P 1e3 " << min_limit(soft)
                           << " s, 1e7 " << min_limit(stiff) << " s; " << bound << " of "
@@ -467,7 +477,9 @@ TEST_CASE("rigid sphere penalty: the stable step limit", "[contact][rigid_penalt
                           << stiff.penetration_max());
     CHECK(bound > static_cast<long>(stiff.steps.size()) * 9 / 10);
     // (The steps before the sphere can reach the box, 0.5 mm away, are structural.)
-    CHECK(r_stiff.dt_contact_min < 0.01 * r_stiff.dt_initial);
+    // K_P 1e7 makes the springs' bound about 1/90 of the box's (measured 1.83e-6 s against the
+    // structural 1.58e-4 s): the step falls by that factor.
+    CHECK(r_stiff.dt_contact_min < 0.02 * r_stiff.dt_initial);
     // The node term K_P s_a / m_a dominates: the limit scales as 1 / sqrt(K_P), 100x shorter
     // for 1e4 x K_P, to the few per cent the sphere term K_P n_s / m_s adds.
     CHECK(min_limit(stiff) / min_limit(soft) == Approx(0.01).epsilon(0.05));
@@ -477,12 +489,12 @@ TEST_CASE("rigid sphere penalty: the stable step limit", "[contact][rigid_penalt
   SECTION("forced beyond it") {
     // The sphere rests on the single spring under gravity (static penetration m g / K_P = 1e-4
     // m) and oscillates about it (amplitude 2e-5 m): a linear oscillator while in contact.
-    // The limit is sqrt(1 - 0.9^2) = 0.436 of the bound 2 / omega, and the bound is tight here
-    // (omega^2 = K_P / m_s + 7, exact to 1e-4): at 1.5x the limit (0.65 of 2 / omega) the
-    // motion stays bounded; at 1.5 / 0.436 = 3.4x the limit (1.5x 2 / omega) it blows up.
+    // The bound is 2 / omega, tight here (omega^2 = K_P / m_s + 7, exact to 1e-4), and the step
+    // taken is eq. CT.1 with s = 0.9. Scaling the bound by 0.65 / 0.9 gives omega dt = 1.3: the
+    // motion stays bounded; by 1.5 / 0.9, omega dt = 3 > 2: it blows up.
     const double g = 10.0, z_eq = kTetR - kTetMass * g / kTetPenalty;
     const double omega = std::sqrt(kTetPenalty / kTetMass);
-    for (const double scale : {1.5, 1.5 / std::sqrt(1.0 - 0.81)}) {
+    for (const double scale : {0.65 / 0.9, 1.5 / 0.9}) {
       const Model model = fixed_tet();
       RigidSpherePenaltyParams p = on_q0(z_eq - 2e-5, 0.0);
       p.gravity = Vec3(0.0, 0.0, -g);
@@ -499,15 +511,20 @@ TEST_CASE("rigid sphere penalty: the stable step limit", "[contact][rigid_penalt
       INFO("scale " << scale << ": omega dt " << omega_dt << ", steps " << r.steps
                     << ", largest |z - z_eq| " << excursion << ", " << to_string(r.verdict) << " "
                     << r.instability.reason);
-      if (scale < 2.0) {
-        // Central difference at omega dt = 1.31 keeps the amplitude; the synchronous position
+      // The step eq. CT.1 gives: the structural step dt_s = dt_initial / 0.9 (the tet is fixed).
+      const double dt_s = r.dt_initial / 0.9, k = scale * 2.0 / omega;
+      const double expected = omega * 0.9 / std::sqrt(1.0 / (dt_s * dt_s) + 1.0 / (k * k));
+      if (scale < 1.0) {
+        // Central difference at omega dt = 1.3 keeps the amplitude; the synchronous position
         // samples it within 1 / sqrt(1 - (omega dt / 2)^2) = 1.3.
-        CHECK(omega_dt == Approx(1.5 * std::sqrt(1.0 - 0.81) * 2).epsilon(1e-3));
+        REQUIRE(expected < 1.4);
+        CHECK(omega_dt == Approx(expected).epsilon(1e-3));
         CHECK(excursion < 1.35 * 2e-5);
       } else {
         // It blows up within a few steps: the sphere is thrown off, or driven through the
         // penetration-failure depth 0.5 R (= 250 x the amplitude), which ends the run.
-        CHECK(omega * contact.steps.front().dt == Approx(3.0).epsilon(1e-3));
+        REQUIRE(expected > 2.5);
+        CHECK(omega * contact.steps.front().dt == Approx(expected).epsilon(1e-3));
         CHECK(excursion > 250 * 2e-5);
         CHECK((excursion > 1e3 * 2e-5 || r.verdict == Verdict::unstable));
       }

@@ -14,8 +14,14 @@ namespace {
 
 class Accelerator : public ContactModel {
  public:
-  Accelerator(double gain, bool injection_counts) : gain_(gain), counts_(injection_counts) {}
-  std::string_view name() const override { return "accelerator"; }
+  Accelerator(double gain, bool injection_counts)
+      : ContactModel("accelerator"), gain_(gain), counts_(injection_counts) {}
+  void begin_step(const State& /*s*/, double /*dt*/) override {}
+  void add_forces(State& /*s*/) override {}
+  void end_step(const State& /*s*/, double /*dt*/) override {
+    ledger_ = {.work = work_, .injected_energy = counts_ ? std::max(0.0, work_) : 0.0};
+  }
+  ContactStepBound step_bound(const State& /*s*/) const override { return {}; }
   void correct(State& s, double dt) override {
     for (size_t i = 0; i < s.v.size(); ++i) {
       const Vec3 v_end_before = s.v[i] + 0.5 * dt * s.a[i];
@@ -24,8 +30,6 @@ class Accelerator : public ContactModel {
       work_ += 0.5 * s.m_lumped[i] * (v_end.squaredNorm() - v_end_before.squaredNorm());
     }
   }
-  double work() const override { return work_; }
-  double injected_energy() const override { return counts_ ? std::max(0.0, work_) : 0.0; }
 
  private:
   double gain_;

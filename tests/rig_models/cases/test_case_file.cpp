@@ -195,7 +195,7 @@ TEST_CASE("rig cases: duplicated, missing, friction where it does not belong", "
                       "pivot_friction = { mu_s = 0.2, mu_k = 0.1, source = \"thesis "
                       "3.4.2 (RF025; its later text swaps the two)\" }\n",
                       "")) ==
-        fmt::format("cases.toml:{}: cases[6].pivot_friction: required key is missing", l_rf025));
+        fmt::format("cases.toml:{}: cases[6].pivot_friction: required table is missing", l_rf025));
   CHECK(error_of("[rig\n") ==
         "cases.toml:1: Error while parsing table header: expected ']', "
         "saw '\\n'");

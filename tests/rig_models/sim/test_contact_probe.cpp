@@ -49,7 +49,7 @@ TEST_CASE("contact probe: the impulse on the struck face is the struck bar's mom
   CHECK(v_b > 0.9 * v0);  // the velocities were exchanged (e = 1)
   // Only contact acts on b, and only on its surface nodes: round-off.
   CHECK(test::relative_error(probe.impulse(), mass_b * p_b) < 1e-10);
-  CHECK(probe.work() == dcr.work());
+  CHECK(probe.ledger().work == dcr.work());
 }
 
 namespace {
@@ -61,8 +61,8 @@ namespace {
 // `extra_injection` (so that the figure differs from work()).
 class Recorder : public ContactModel {
  public:
-  Recorder(double gain, double extra_injection) : gain_(gain), extra_(extra_injection) {}
-  std::string_view name() const override { return "recorder"; }
+  Recorder(double gain, double extra_injection)
+      : ContactModel("recorder"), gain_(gain), extra_(extra_injection) {}
   void begin_step(const State&, double) override { ++begin; }
   void add_forces(State&) override { ++forces; }
   void correct(State& s, double dt) override {
@@ -74,11 +74,15 @@ class Recorder : public ContactModel {
       work_ += 0.5 * s.m_lumped[i] * (after.squaredNorm() - before.squaredNorm());
     }
   }
-  void end_step(const State&, double) override { ++end; }
-  double stable_dt_limit(const State&) const override { return 0.25; }
-  double work() const override { return work_; }
-  double injected_energy() const override { return std::max(0.0, work_) + extra_; }
-  std::string failure() const override { return failing ? "recorded failure" : ""; }
+  void end_step(const State&, double) override {
+    ++end;
+    ledger_ = {.work = work_,
+               .injected_energy = std::max(0.0, work_) + extra_,
+               .failure = failing ? "recorded failure" : ""};
+  }
+  ContactStepBound step_bound(const State&) const override {
+    return {.stiffness_dt = 0.25, .kinematic_dt = 0.5};
+  }
 
   int begin = 0, forces = 0, corrections = 0, end = 0;
   bool failing = false;
@@ -109,15 +113,16 @@ TEST_CASE("contact probe: every hook of the contact model is forwarded", "[rig][
   CHECK(inner.corrections == 1);
   CHECK(inner.end == 1);
   CHECK(as_model.name() == "recorder");
-  CHECK(as_model.stable_dt_limit(s) == 0.25);
-  CHECK(inner.work() > 0.0);
-  CHECK(as_model.work() == inner.work());
-  // The default is 0: a probe that dropped this hook would read 0, not the model's figure.
-  CHECK(as_model.injected_energy() == inner.injected_energy());
-  CHECK(as_model.injected_energy() == inner.work() + 0.125);
-  CHECK(as_model.failure().empty());
+  CHECK(as_model.step_bound(s).stiffness_dt == 0.25);
+  CHECK(as_model.step_bound(s).kinematic_dt == 0.5);
+  CHECK(inner.ledger().work > 0.0);
+  CHECK(as_model.ledger().work == inner.ledger().work);
+  // A probe that did not take the inner ledger would read 0, not the model's figure.
+  CHECK(as_model.ledger().injected_energy == inner.ledger().work + 0.125);
+  CHECK(as_model.ledger().failure.empty());
   inner.failing = true;
-  CHECK(as_model.failure() == "recorded failure");
+  probe.end_step(s, 1e-3);
+  CHECK(as_model.ledger().failure == "recorded failure");
   // The probe read the correction: node 0 (mass 1) went from 1 to 1.5 m/s along x.
   CHECK(probe.impulse() == 0.5);
 }

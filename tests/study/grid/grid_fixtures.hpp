@@ -4,8 +4,8 @@
 #include <string>
 #include <string_view>
 
+#include "run/scene/scene.hpp"
 #include "study/grid/grid_file.hpp"
-#include "study/scene/scene.hpp"
 
 namespace ccm::test {
 
@@ -52,11 +52,11 @@ mesh_size_ratio = 0.5
 penalty = 1.0e6
 )";
 
-// The message of the SceneError that parsing `text` as "g.toml" throws ("" when it parses).
+// The message of the ConfigError that parsing `text` as "g.toml" throws ("" when it parses).
 inline std::string grid_error_of(std::string_view text) {
   try {
     (void)study::parse_grid(text, "g.toml");
-  } catch (const SceneError& e) {
+  } catch (const ConfigError& e) {
     return e.what();
   }
   return "";

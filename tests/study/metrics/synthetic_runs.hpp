@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "study/runner/run_record.hpp"
+#include "records/run_record.hpp"
 
 namespace ccm::test {
 

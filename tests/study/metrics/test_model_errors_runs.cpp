@@ -13,9 +13,9 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+#include "run/runner/point_runner.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/model_errors.hpp"
-#include "study/runner/point_runner.hpp"
 #include "tests/support/tolerance.hpp"
 
 using ccm::test::relative_error;

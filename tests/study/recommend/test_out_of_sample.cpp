@@ -8,11 +8,11 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
+#include "run/runner/point_runner.hpp"
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/point_metrics.hpp"
 #include "study/recommend/recommendation.hpp"
-#include "study/runner/point_runner.hpp"
 #include "tests/study/grid/grid_fixtures.hpp"
 
 using namespace ccm;

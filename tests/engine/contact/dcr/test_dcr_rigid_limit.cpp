@@ -6,8 +6,8 @@
 //
 // Set-up: a free block 40 x 40 x 20 mm (E_A = 10 kPa, nu = 0.3, rho = 1000) is hit on the middle
 // of its top face by a sphere of R = 10 mm (rho = 1000, about 4 g) at 0.5 m/s from a 0.2 mm gap.
-// Hertz (docs/contact-method.md §6(a)) against a half-space gives t_c = 22 ms; the block is finite and
-// free, so the contact ends a little earlier. The compared quantity is the artifact's kinetic
+// Hertz (docs/contact-method.md §6(a)) against a half-space gives t_c = 22 ms; the block is finite
+// and free, so the contact ends a little earlier. The compared quantity is the artifact's kinetic
 // energy KE_A(t) = 1/2 sum m v^2 over its nodes, sampled every 0.25 ms; the error is
 //   e_KE = max_i |KE_A,dcr(t_i) - KE_A,rigid(t_i)| / max_i KE_A,rigid(t_i),
 // the largest gap between the two histories as a fraction of the peak (stricter than the
@@ -98,7 +98,7 @@ History run_and_record(const Model& model, ContactModel& contact, const Resoluti
   h.verdict = summary.verdict;
   h.reason = summary.instability.reason;
   h.energy_error = summary.energy_balance_error;
-  h.contact_work = contact.work();
+  h.contact_work = contact.ledger().work;
   h.steps = summary.steps;
   return h;
 }

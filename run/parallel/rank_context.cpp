@@ -1,0 +1,51 @@
+#include "run/parallel/rank_context.hpp"
+
+#include <mpi.h>
+
+#include <cstdlib>
+#include <initializer_list>
+
+namespace ccm::study {
+
+bool launched_by_mpi() {
+  for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
+    if (std::getenv(var) != nullptr) return true;
+  return false;
+}
+
+RankContext::RankContext() {
+  if (!launched_by_mpi()) return;
+  int initialised = 0;
+  MPI_Initialized(&initialised);
+  if (!initialised) MPI_Init(nullptr, nullptr);
+  mpi_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+RankContext::~RankContext() {
+  if (!mpi_) return;
+  int finalised = 0;
+  MPI_Finalized(&finalised);
+  if (!finalised) MPI_Finalize();
+}
+
+void RankContext::barrier() const {
+  if (mpi_) MPI_Barrier(MPI_COMM_WORLD);
+}
+
+long RankContext::sum(long value) const {
+  if (!mpi_) return value;
+  long total = 0;
+  MPI_Allreduce(&value, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+  return total;
+}
+
+bool RankContext::broadcast_flag(bool flag) const {
+  if (!mpi_) return flag;
+  int value = flag ? 1 : 0;
+  MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return value != 0;
+}
+
+}  // namespace ccm::study

@@ -1,0 +1,106 @@
+#include "run/runner/point_runner.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/observe/history.hpp"
+#include "records/content_hash.hpp"
+#include "records/provenance/timestamp.hpp"
+#include "run/scene/point_scene.hpp"
+#include "run/scene/scene_builder.hpp"
+#include "run/scene/scene_file.hpp"
+
+namespace ccm::study {
+namespace {
+
+using SystemClock = std::chrono::system_clock;
+
+size_t column_index(const HistoryRecorder& history, const std::string& name) {
+  const std::vector<std::string>& cols = history.columns();
+  const auto it = std::find(cols.begin(), cols.end(), name);
+  if (it == cols.end()) throw std::logic_error(fmt::format("history has no column '{}'", name));
+  return static_cast<size_t>(it - cols.begin());
+}
+
+ArtifactHistory artifact_history(const HistoryRecorder& history) {
+  const std::string body = kArtifactBody;
+  const size_t t = column_index(history, "time");
+  const size_t ke = column_index(history, body + ".kinetic_energy");
+  const size_t u_mean = column_index(history, body + ".u_mean");
+  const size_t u_max = column_index(history, body + ".u_max");
+  ArtifactHistory h;
+  for (const std::vector<double>& row : history.rows()) {
+    h.time.push_back(row[t]);
+    h.kinetic_energy.push_back(row[ke]);
+    h.u_mean.push_back(row[u_mean]);
+    h.u_max.push_back(row[u_max]);
+  }
+  return h;
+}
+
+void record_summary(const RunSummary& s, RunRecord& r) {
+  r.verdict = std::string(to_string(s.verdict));
+  if (s.verdict == Verdict::unstable) {
+    r.reason = s.instability.reason;
+    r.unstable_time = s.instability.time;
+  }
+  r.steps = s.steps;
+  r.wall_seconds = s.wall_seconds;
+  r.initial_stable_dt = s.dt_initial;  // ISTS, eq. 2.42
+  r.average_iteration_seconds =
+      s.steps > 0 ? s.step_cpu_seconds / static_cast<double>(s.steps) : 0.0;  // AIR, eq. 2.41
+  MeasuredCost c;
+  c.step_cpu_seconds = s.step_cpu_seconds;
+  c.step_wall_seconds = s.step_wall_seconds;
+  c.dt_first = s.dt_first;
+  c.dt_mean = s.dt_mean;
+  c.steps_structure = s.limiters.structure;
+  c.steps_contact = s.limiters.contact;
+  c.steps_max_dt = s.limiters.max_dt;
+  c.steps_landing = s.limiters.landing;
+  if (s.limiters.contact > 0) c.dt_contact_min = s.dt_contact_min;
+  r.cost = c;
+  r.dt_min = s.dt_min;
+  r.dt_max = s.dt_max;
+  r.max_energy_error = s.energy_balance_error;
+  r.n_elements = s.n_elements;
+  r.n_nodes = s.n_nodes;
+}
+
+}  // namespace
+
+RunRecord run_point(const GridSpec& spec, const GridPoint& point, ImpactModel model,
+                    const PointRunOptions& options) {
+  RunRecord r;
+  r.point = point;
+  r.model = model;
+  r.started_at = utc_timestamp(SystemClock::now());
+  const std::string text = point_scene_text(spec, point, model);
+  r.scene_hash = fnv1a64(text);
+  const Scene scene = parse_scene(text, point_scene_name(spec, point, model));
+  const Model built = build_model(scene);
+  const ContactSetup contact = build_contact(scene, built);
+  HistoryRecorder history(built.mesh, build_output_request(scene, built.mesh));
+  if (contact.history) history.add_source(*contact.history);
+
+  RunOptions run;
+  run.time = time_control(scene.time);
+  run.monitor = scene.monitor;
+  run.history = &history;
+  run.contact = contact.model.get();
+  run.progress_seconds = options.progress_seconds;
+  if (options.progress)
+    run.progress = [&](const Progress& p) { options.progress(point, model, p); };
+  record_summary(run_explicit(built, run), r);
+  r.artifact = artifact_history(history);
+  r.ended_at = utc_timestamp(SystemClock::now());
+  return r;
+}
+
+}  // namespace ccm::study

@@ -1,0 +1,170 @@
+// A scene as read from a scene file (docs/scene-file.md): plain typed aggregates, validated by
+// the parser, turned into a Model by the scene builder. Every part remembers where it came from
+// so that later errors can still name the file, the line and the key.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "config/config_error.hpp"
+#include "engine/core/penalty_mode.hpp"
+#include "engine/core/step_safety.hpp"
+#include "engine/core/types.hpp"
+#include "engine/material/material.hpp"
+#include "engine/mesh/gmsh_mesher.hpp"
+#include "engine/monitor/stability_monitor.hpp"
+
+namespace ccm {
+
+// Where a table of the scene file is.
+struct SourceRef {
+  std::string path;                                   // key path of the table, e.g. "fixed[0]"
+  int line = 0;                                       // line of the table
+  std::map<std::string, int, std::less<>> key_lines;  // line of each key set in the table
+
+  int line_of(std::string_view key) const {
+    const auto it = key_lines.find(key);
+    return it == key_lines.end() ? line : it->second;
+  }
+  std::string key_path(std::string_view key) const {
+    if (key.empty()) return path;
+    return path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
+  }
+};
+
+struct SceneTime {
+  double end = 0.0;                     // [s]
+  double output_interval = 0.0;         // [s]; the parser sets end/100 when not given
+  double dt_safety = kDefaultDtSafety;  // (0, 2]
+  std::optional<double> max_dt;         // [s]
+  std::optional<long> max_steps;
+};
+
+enum class Shape { sphere, box, cylinder, pipe, mesh };
+
+struct GeometrySpec {
+  Shape shape = Shape::box;
+  PrimitiveSpec primitive{PrimitiveKind::box};  // sphere, box, cylinder, pipe
+  std::filesystem::path file;                   // mesh: resolved against the scene's folder
+};
+
+struct BodySpec {
+  std::string name;
+  MaterialParams material;
+  GeometrySpec geometry;
+  Placement placement;
+  Vec3 initial_velocity = Vec3::Zero();  // [m/s]
+  // When set [kg]: the density becomes mass / meshed volume (material.rho is the nominal value).
+  std::optional<double> mass;
+  SourceRef where;           // the [[bodies]] table
+  SourceRef geometry_where;  // its geometry table
+};
+
+struct BoxSpec {
+  Vec3 min = Vec3::Zero();
+  Vec3 max = Vec3::Zero();
+};
+
+struct PlaneSpec {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitX();  // non-zero, need not be unit
+  double tolerance = 1e-6;      // [m]
+};
+
+struct NodeSetRef {
+  std::string name;  // "<body>/<set>", or "<set>" when the spec names the body
+};
+struct SurfaceRef {
+  std::string name;  // "<body>/<surface>", or "<surface>" when the spec names the body
+};
+
+using NodeSelection = std::variant<NodeSetRef, BoxSpec, PlaneSpec>;
+using SurfaceSelection = std::variant<SurfaceRef, PlaneSpec>;
+
+struct FixedSpec {
+  std::optional<std::string> body;  // restricts the selection to one body
+  NodeSelection selection;
+  SourceRef where;
+};
+
+struct SurfaceLoadSpec {
+  std::string name;
+  std::optional<std::string> body;
+  SurfaceSelection surface;
+  Vec3 direction = Vec3::UnitX();                // non-zero
+  std::vector<std::pair<double, double>> force;  // (t [s], total force [N])
+  SourceRef where;
+};
+
+struct TrackSpec {
+  std::string name;
+  std::string body;
+  Vec3 point = Vec3::Zero();  // [m]; the body's nearest node is tracked
+  SourceRef where;
+};
+
+struct OutputSpec {
+  bool kinetic_energy = true;
+  bool internal_energy = true;
+  bool displacement = true;
+  std::vector<TrackSpec> track;
+};
+
+// [contact] (docs/scene-file.md).
+enum class ContactKind { none, rigid_penalty, dcr };
+
+struct RigidSphereSpec {
+  std::string name = "sphere";   // history column prefix
+  double radius = 0.0;           // [m]
+  double mass = 0.0;             // [kg] (given, or density * 4/3 pi R^3)
+  Vec3 center = Vec3::Zero();    // [m]
+  Vec3 velocity = Vec3::Zero();  // [m/s]
+};
+
+struct ContactSpec {
+  ContactKind kind = ContactKind::none;
+  // rigid_penalty:
+  std::string body;                                   // the deformable body
+  std::optional<std::string> surface;                 // default "<body>/boundary"
+  PenaltyMode penalty_mode = PenaltyMode::per_point;  // per_point (thesis) or element
+  double penalty = kDefaultPointPenalty;  // per_point: K_P [N/m] per quadrature point (thesis 2.8)
+  double penalty_scale = kDefaultElementPenaltyScale;  // element: s in k = s K A^2 / V
+  double damping = 0.0;                                // zeta >= 0, fraction of critical per point
+  std::optional<Vec3> force_axis;  // rigid_penalty: default the sphere's initial velocity
+                                   // direction; dcr: pair forces are output along it
+  RigidSphereSpec sphere;
+  // dcr:
+  std::vector<std::string> surfaces;  // as given; a name without '/' means "<name>/boundary"
+  bool self_contact = false;
+  double restitution = 0.0;          // e in [0, 1]
+  double friction = 0.0;             // Coulomb mu >= 0
+  std::vector<std::string> sensors;  // output: named surfaces whose pressure is reported (eq. 3.8)
+  SourceRef where;                   // the [contact] table
+  SourceRef sphere_where;            // [contact.sphere]
+};
+
+struct Scene {
+  std::filesystem::path source;  // the scene file, as given
+  std::string title;
+  SceneTime time;
+  MonitorSettings monitor;
+  Vec3 gravity = Vec3::Zero();  // [m/s^2]
+  std::vector<BodySpec> bodies;
+  std::vector<FixedSpec> fixed;
+  std::vector<SurfaceLoadSpec> surface_loads;
+  OutputSpec output;
+  ContactSpec contact;
+  std::vector<std::string> warnings;  // legal but suspicious settings, each "<file>:<line>: ..."
+};
+
+}  // namespace ccm

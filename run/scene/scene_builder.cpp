@@ -1,0 +1,313 @@
+#include "run/scene/scene_builder.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/bc/node_selection.hpp"
+#include "engine/contact/dcr/dcr_contact.hpp"
+#include "engine/contact/rigid_sphere_penalty.hpp"
+#include "engine/core/time_table.hpp"
+
+namespace ccm {
+namespace {
+
+[[noreturn]] void fail(const Scene& scene, const SourceRef& where, std::string_view key,
+                       std::string_view problem) {
+  throw config_error(scene.source, where.line_of(key), where.key_path(key), problem);
+}
+
+// Rotation about the origin, then translation: the convention mesh_primitive applies.
+void place(TetMesh& mesh, const Placement& p) {
+  const double angle = p.rotation_deg * std::numbers::pi / 180.0;
+  const Mat3 R = Eigen::AngleAxisd(angle, p.rotation_axis.normalized()).toRotationMatrix();
+  for (Vec3& x : mesh.nodes) x = R * x + p.translation;
+}
+
+TetMesh mesh_body(const Scene& scene, const BodySpec& body) {
+  const GeometrySpec& g = body.geometry;
+  const bool from_file = g.shape == Shape::mesh;
+  try {
+    if (!from_file) return mesh_primitive(g.primitive, body.placement);
+    TetMesh mesh = read_msh_file(g.file);
+    place(mesh, body.placement);
+    return mesh;
+  } catch (const MeshError& e) {
+    const std::string what = from_file ? "cannot read its mesh file" : "cannot be meshed";
+    fail(scene, body.geometry_where, from_file ? "file" : "",
+         fmt::format("body '{}' {}: {}", body.name, what, e.what()));
+  }
+}
+
+// The body's material; with `mass` set, its density is mass / meshed volume, so that a faceted
+// primitive (a sphere's inscribed polyhedron) weighs what the solid it stands for weighs.
+MaterialParams material_of(const BodySpec& body, const TetMesh& geometry) {
+  MaterialParams m = body.material;
+  if (body.mass) m.rho = *body.mass / mesh_volume(geometry);
+  return m;
+}
+
+int body_index(const Scene& scene, const ModelMesh& mesh, const SourceRef& where,
+               std::string_view key, const std::string& name) {
+  const int b = mesh.body_index(name);
+  if (b >= 0) return b;
+  std::vector<std::string> names;
+  for (const Body& body : mesh.bodies) names.push_back(body.name);
+  fail(scene, where, key,
+       fmt::format("no body named '{}' (bodies: {})", name, fmt::join(names, ", ")));
+}
+
+int optional_body(const Scene& scene, const ModelMesh& mesh, const SourceRef& where,
+                  const std::optional<std::string>& name) {
+  return name ? body_index(scene, mesh, where, "body", *name) : -1;
+}
+
+// "<body>/<name>" when the spec names a body and the name has no body part.
+std::string qualified(const std::optional<std::string>& body, const std::string& name) {
+  if (!body || name.find('/') != std::string::npos) return name;
+  return *body + "/" + name;
+}
+
+std::vector<int> in_body(const ModelMesh& mesh, int body, std::vector<int> nodes) {
+  if (body < 0) return nodes;
+  const Body& b = mesh.bodies[static_cast<size_t>(body)];
+  std::erase_if(nodes, [&](int n) { return n < b.first_node || n >= b.first_node + b.n_nodes; });
+  return nodes;
+}
+
+template <typename Map>
+std::string known_names(const Map& map) {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : map) names.push_back(name);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+std::vector<int> select_nodes(const Scene& scene, const ModelMesh& mesh, const FixedSpec& f) {
+  const int body = optional_body(scene, mesh, f.where, f.body);
+  if (const auto* set = std::get_if<NodeSetRef>(&f.selection)) {
+    const std::string name = qualified(f.body, set->name);
+    const auto it = mesh.node_sets.find(name);
+    if (it == mesh.node_sets.end())
+      fail(
+          scene, f.where, "node_set",
+          fmt::format("no node set named '{}' (node sets: {})", name, known_names(mesh.node_sets)));
+    return in_body(mesh, body, it->second);
+  }
+  if (const auto* box = std::get_if<BoxSpec>(&f.selection))
+    return nodes_in_box(mesh, body, box->min, box->max);
+  const auto& plane = std::get<PlaneSpec>(f.selection);
+  return nodes_on_plane(mesh, body, plane.point, plane.normal, plane.tolerance);
+}
+
+std::string_view selection_key(const FixedSpec& f) {
+  static constexpr std::string_view keys[] = {"node_set", "box", "plane"};
+  return keys[f.selection.index()];
+}
+
+void apply_fixed(const Scene& scene, Model& model) {
+  for (const FixedSpec& f : scene.fixed) {
+    const std::vector<int> nodes = select_nodes(scene, model.mesh, f);
+    if (nodes.empty()) fail(scene, f.where, selection_key(f), "selects no node");
+    model.bcs.fix(nodes);
+  }
+}
+
+std::vector<Triangle> named_surface(const Scene& scene, const ModelMesh& mesh,
+                                    const SurfaceLoadSpec& s, const SurfaceRef& ref, int body) {
+  const std::string name = qualified(s.body, ref.name);
+  const auto it = mesh.surfaces.find(name);
+  if (it == mesh.surfaces.end())
+    fail(scene, s.where, "surface",
+         fmt::format("no surface named '{}' (surfaces: {})", name, known_names(mesh.surfaces)));
+  if (body >= 0 && it->second.body != body)
+    fail(scene, s.where, "surface", fmt::format("surface '{}' is not on body '{}'", name, *s.body));
+  return it->second.triangles;
+}
+
+std::vector<Triangle> select_surface(const Scene& scene, const ModelMesh& mesh,
+                                     const SurfaceLoadSpec& s) {
+  const int body = optional_body(scene, mesh, s.where, s.body);
+  if (const auto* ref = std::get_if<SurfaceRef>(&s.surface))
+    return named_surface(scene, mesh, s, *ref, body);
+  const auto& plane = std::get<PlaneSpec>(s.surface);
+  std::vector<Triangle> out;
+  for (int b = 0; b < static_cast<int>(mesh.bodies.size()); ++b) {
+    if (body >= 0 && b != body) continue;
+    const auto tris = boundary_on_plane(mesh, b, plane.point, plane.normal, plane.tolerance);
+    out.insert(out.end(), tris.begin(), tris.end());
+  }
+  return out;
+}
+
+void apply_loads(const Scene& scene, Model& model) {
+  for (const SurfaceLoadSpec& s : scene.surface_loads) {
+    const std::vector<Triangle> surface = select_surface(scene, model.mesh, s);
+    const std::string_view key = s.surface.index() == 0 ? "surface" : "plane";
+    if (surface.empty()) fail(scene, s.where, key, "selects no boundary triangle");
+    try {
+      model.bcs.loads.push_back(
+          make_surface_load(s.name, model.mesh, surface, s.direction, TimeTable(s.force)));
+    } catch (const std::invalid_argument& e) {
+      fail(scene, s.where, key, e.what());
+    }
+  }
+}
+
+void apply_initial_velocities(const Scene& scene, Model& model) {
+  for (size_t b = 0; b < scene.bodies.size(); ++b) {
+    const Body& body = model.mesh.bodies[b];
+    for (int n = body.first_node; n < body.first_node + body.n_nodes; ++n)
+      model.initial_velocity[static_cast<size_t>(n)] = scene.bodies[b].initial_velocity;
+  }
+}
+
+}  // namespace
+
+Model build_model(const Scene& scene) {
+  ModelMesh mesh;
+  for (const BodySpec& body : scene.bodies) {
+    TetMesh geometry = mesh_body(scene, body);
+    add_body(mesh, body.name, material_of(body, geometry), std::move(geometry));
+  }
+  Model model = make_model(std::move(mesh));
+  apply_fixed(scene, model);
+  apply_loads(scene, model);
+  apply_initial_velocities(scene, model);
+  model.bcs.gravity = scene.gravity;
+  return model;
+}
+
+OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh) {
+  OutputRequest r;
+  r.kinetic_energy = scene.output.kinetic_energy;
+  r.internal_energy = scene.output.internal_energy;
+  r.displacement = scene.output.displacement;
+  for (const TrackSpec& t : scene.output.track) {
+    const int body = body_index(scene, mesh, t.where, "body", t.body);
+    r.tracked.push_back({t.name, nearest_node(mesh, body, t.point)});
+  }
+  return r;
+}
+
+namespace {
+
+// model = "dcr": every listed surface must exist and have triangles.
+ContactSetup build_dcr(const Scene& scene, const Model& model) {
+  const ContactSpec& c = scene.contact;
+  const ModelMesh& mesh = model.mesh;
+  dcr::DcrSettings settings;
+  size_t triangles = 0;
+  for (const std::string& given : c.surfaces) {
+    const std::string name = given.find('/') == std::string::npos ? given + "/boundary" : given;
+    const auto it = mesh.surfaces.find(name);
+    if (it == mesh.surfaces.end())
+      fail(scene, c.where, "surfaces",
+           fmt::format("no surface named '{}' (surfaces: {})", name, known_names(mesh.surfaces)));
+    if (it->second.triangles.empty())
+      fail(scene, c.where, "surfaces", fmt::format("surface '{}' has no triangle", name));
+    if (std::find(settings.surfaces.begin(), settings.surfaces.end(), name) !=
+        settings.surfaces.end())
+      fail(scene, c.where, "surfaces", fmt::format("surface '{}' is listed twice", name));
+    settings.surfaces.push_back(name);
+    triangles += it->second.triangles.size();
+  }
+  settings.self_contact = c.self_contact;
+  settings.restitution = c.restitution;
+  settings.friction = c.friction;
+  settings.output.force_axis = c.force_axis;
+  for (const std::string& name : c.sensors) {
+    if (!mesh.surfaces.contains(name))
+      fail(scene, c.where, "sensors",
+           fmt::format("no surface named '{}' (surfaces: {})", name, known_names(mesh.surfaces)));
+    settings.output.sensors.push_back(name);
+  }
+  std::unique_ptr<dcr::DcrContact> dcr;
+  try {
+    dcr = std::make_unique<dcr::DcrContact>(mesh, settings, model.bcs.fixed_nodes);
+  } catch (const std::invalid_argument& e) {
+    fail(scene, c.where, "", e.what());
+  }
+  ContactSetup setup;
+  setup.model_name = "dcr";
+  setup.description = fmt::format(
+      "dcr: {} ({} triangles), self_contact {}, restitution {:.4g}, friction {:.4g}",
+      fmt::join(settings.surfaces, ", "), triangles, c.self_contact, c.restitution, c.friction);
+  setup.history = dcr.get();
+  setup.model = std::move(dcr);
+  return setup;
+}
+
+// "K_P 1e+06 N/m per point" (the thesis's) or the element mode's scale and range of k_q.
+std::string penalty_description(const RigidSpherePenalty& model) {
+  const RigidSpherePenaltyParams& p = model.params();
+  if (p.penalty_mode == PenaltyMode::per_point)
+    return fmt::format("K_P {:.4g} N/m per point", p.penalty);
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (size_t tri = 0; tri < model.surface_triangles(); ++tri) {
+    lo = std::min(lo, model.point_stiffness(tri));
+    hi = std::max(hi, model.point_stiffness(tri));
+  }
+  return fmt::format("element penalty s {:.4g} (k = s K A^2 / V, {:.4g} .. {:.4g} N/m per point)",
+                     p.penalty_scale, lo, hi);
+}
+
+}  // namespace
+
+ContactSetup build_contact(const Scene& scene, const Model& model) {
+  const ContactSpec& c = scene.contact;
+  ContactSetup setup;
+  if (c.kind == ContactKind::none) return setup;
+  if (c.kind == ContactKind::dcr) return build_dcr(scene, model);
+  const ModelMesh& mesh = model.mesh;
+  const int body = body_index(scene, mesh, c.where, "body", c.body);
+  const std::string_view key = c.surface ? "surface" : "body";
+  const std::string name = qualified(c.body, c.surface.value_or("boundary"));
+  const auto it = mesh.surfaces.find(name);
+  if (it == mesh.surfaces.end())
+    fail(scene, c.where, key,
+         fmt::format("no surface named '{}' (surfaces: {})", name, known_names(mesh.surfaces)));
+  if (it->second.body != body)
+    fail(scene, c.where, key, fmt::format("surface '{}' is not on body '{}'", name, c.body));
+  if (it->second.triangles.empty()) fail(scene, c.where, key, "the surface has no triangle");
+
+  RigidSpherePenaltyParams p;
+  p.name = c.sphere.name;
+  p.sphere = {c.sphere.radius, c.sphere.mass, c.sphere.center, c.sphere.velocity};
+  p.penalty_mode = c.penalty_mode;
+  p.penalty = c.penalty;
+  p.penalty_scale = c.penalty_scale;
+  p.damping = c.damping;
+  p.gravity = scene.gravity;
+  p.force_axis = c.force_axis;
+  std::unique_ptr<RigidSpherePenalty> penalty;
+  try {
+    penalty = std::make_unique<RigidSpherePenalty>(mesh, it->second.triangles, p);
+  } catch (const std::invalid_argument& e) {
+    fail(scene, c.where, "", e.what());
+  }
+  setup.model_name = "rigid_penalty";
+  setup.description = fmt::format(
+      "rigid_penalty: sphere '{}' (R {:.4g} m, {:.4g} kg) on '{}' ({} triangles), {}, damping "
+      "{:.4g} of critical",
+      p.name, p.sphere.radius, p.sphere.mass, name, it->second.triangles.size(),
+      penalty_description(*penalty), p.damping);
+  setup.history = penalty.get();
+  setup.model = std::move(penalty);
+  return setup;
+}
+
+TimeControl time_control(const SceneTime& time) {
+  TimeControl c;
+  c.end_time = time.end;
+  c.output_interval = time.output_interval;
+  c.dt_safety = time.dt_safety;
+  if (time.max_dt) c.max_dt = *time.max_dt;
+  if (time.max_steps) c.max_steps = *time.max_steps;
+  return c;
+}
+
+}  // namespace ccm

@@ -1,0 +1,40 @@
+// From a parsed Scene to what run_explicit needs: the Model (meshes, boundary conditions, initial
+// velocities, gravity), the output request and the time and monitor settings.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "engine/contact/contact_model.hpp"
+#include "engine/observe/history.hpp"
+#include "engine/solver/explicit_integrator.hpp"
+#include "engine/solver/model.hpp"
+#include "run/scene/scene.hpp"
+
+namespace ccm {
+
+// Meshes every body (Gmsh) and applies fixed nodes, surface loads, initial velocities and gravity.
+// Throws ConfigError naming the scene file, line and key when a body cannot be meshed (the
+// message names the body and the mesh file), a body name is unknown, a selection selects no
+// node or a load surface has no area.
+Model build_model(const Scene& scene);
+
+// The histories the scene asks for; tracked points become the nearest node of their body.
+// Throws ConfigError for an unknown body name.
+OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh);
+
+TimeControl time_control(const SceneTime& time);
+
+// The contact model a scene's [contact] table asks for; no model for "none" (or no table).
+struct ContactSetup {
+  std::unique_ptr<ContactModel> model;     // null: no contact
+  const HistorySource* history = nullptr;  // the model's history columns, if it has any
+  std::string model_name = "none";         // "none", "rigid_penalty"
+  std::string description;                 // one line for the run summary
+};
+
+// Throws ConfigError naming the scene file, line and key for an unknown body, a surface that does
+// not exist or is not on that body, or an empty surface.
+ContactSetup build_contact(const Scene& scene, const Model& model);
+
+}  // namespace ccm

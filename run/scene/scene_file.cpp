@@ -1,0 +1,728 @@
+#include "run/scene/scene_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <sstream>
+
+#include "config/did_you_mean.hpp"
+#include "config/text_file.hpp"
+#include "engine/core/time_table.hpp"
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+using Keys = std::initializer_list<std::string_view>;
+
+int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+
+std::string_view type_name(toml::node_type t) {
+  switch (t) {
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    case toml::node_type::none:
+      break;
+  }
+  return "nothing";
+}
+
+std::string unknown_key_problem(std::string_view key, std::span<const std::string_view> allowed) {
+  const std::string_view best = closest_name(key, allowed);
+  if (!best.empty()) return fmt::format("unknown key '{}' (did you mean '{}'?)", key, best);
+  return fmt::format("unknown key '{}' (allowed: {})", key, fmt::join(allowed, ", "));
+}
+
+// One table of the scene file with its key path: typed reads with precise messages.
+class Table {
+ public:
+  Table(const toml::table& t, std::string path, const fs::path& file)
+      : t_(&t), path_(std::move(path)), file_(&file) {}
+
+  const fs::path& file() const { return *file_; }
+  const std::string& path() const { return path_; }
+  int line() const { return std::max(1, line_of(*t_)); }
+  std::string key_path(std::string_view key) const { return ref_base().key_path(key); }
+  int line_of_key(std::string_view key) const {
+    const toml::node* n = key.empty() ? nullptr : t_->get(key);
+    return n ? std::max(1, line_of(*n)) : line();
+  }
+  // "<file>:<line>: <key path>" of a key of this table (the table itself when key is empty).
+  std::string where(std::string_view key) const {
+    return fmt::format("{}:{}: {}", file_->string(), line_of_key(key), key_path(key));
+  }
+  [[noreturn]] void fail(std::string_view key, std::string_view problem) const {
+    throw config_error(*file_, line_of_key(key), key_path(key), problem);
+  }
+  [[noreturn]] void fail_at(const toml::node& n, std::string_view key_path,
+                            std::string_view problem) const {
+    throw config_error(*file_, std::max(1, line_of(n)), key_path, problem);
+  }
+
+  void allow_only(Keys allowed) const {
+    for (auto&& [k, v] : *t_)
+      if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
+        fail(k.str(), unknown_key_problem(k.str(), {allowed.begin(), allowed.size()}));
+  }
+  bool has(std::string_view key) const { return t_->contains(key); }
+
+  template <typename T>
+  std::optional<T> get(std::string_view key) const {
+    const toml::node* n = t_->get(key);
+    if (!n) return std::nullopt;
+    return convert<T>(*n, key_path(key));
+  }
+  template <typename T>
+  T need(std::string_view key) const {
+    if (auto v = get<T>(key)) return *v;
+    fail(key, "required key is missing");
+  }
+  template <typename T>
+  T get_or(std::string_view key, T fallback) const {
+    return get<T>(key).value_or(fallback);
+  }
+
+  std::optional<Table> table(std::string_view key) const {
+    const toml::node* n = t_->get(key);
+    if (!n) return std::nullopt;
+    if (!n->is_table()) wrong_type(*n, key_path(key), "a table");
+    return Table(*n->as_table(), key_path(key), *file_);
+  }
+  Table need_table(std::string_view key) const {
+    if (auto t = table(key)) return *t;
+    fail(key, "required table is missing");
+  }
+  // An array of tables ([[key]] or key = [{...}, ...]); empty when absent.
+  std::vector<Table> tables(std::string_view key) const {
+    std::vector<Table> out;
+    const toml::node* n = t_->get(key);
+    if (!n) return out;
+    if (!n->is_array()) wrong_type(*n, key_path(key), "an array of tables");
+    const toml::array& a = *n->as_array();
+    for (size_t i = 0; i < a.size(); ++i) {
+      const std::string path = fmt::format("{}[{}]", key_path(key), i);
+      if (!a[i].is_table()) wrong_type(a[i], path, "a table");
+      out.emplace_back(*a[i].as_table(), path, *file_);
+    }
+    return out;
+  }
+  const toml::node* node(std::string_view key) const { return t_->get(key); }
+
+  // For the builder: the table's path and line, and the line of every key it sets.
+  SourceRef ref() const {
+    SourceRef r = ref_base();
+    for (auto&& [k, v] : *t_) r.key_lines.emplace(std::string(k.str()), std::max(1, line_of(v)));
+    return r;
+  }
+
+  [[noreturn]] void wrong_type(const toml::node& n, std::string_view path,
+                               std::string_view expected) const {
+    fail_at(n, path, fmt::format("expected {}, got {}", expected, type_name(n.type())));
+  }
+
+  double number(const toml::node& n, std::string_view path) const {
+    double v = 0.0;
+    if (const auto* f = n.as_floating_point())
+      v = f->get();
+    else if (const auto* i = n.as_integer())
+      v = static_cast<double>(i->get());
+    else
+      wrong_type(n, path, "a number");
+    if (!std::isfinite(v)) fail_at(n, path, fmt::format("must be finite (got {})", v));
+    return v;
+  }
+
+ private:
+  SourceRef ref_base() const { return SourceRef{path_, line(), {}}; }
+
+  template <typename T>
+  T convert(const toml::node& n, std::string_view path) const;
+
+  const toml::table* t_;
+  std::string path_;
+  const fs::path* file_;
+};
+
+template <>
+double Table::convert<double>(const toml::node& n, std::string_view path) const {
+  return number(n, path);
+}
+
+template <>
+long Table::convert<long>(const toml::node& n, std::string_view path) const {
+  if (!n.is_integer()) wrong_type(n, path, "an integer");
+  return static_cast<long>(n.as_integer()->get());
+}
+
+template <>
+bool Table::convert<bool>(const toml::node& n, std::string_view path) const {
+  if (!n.is_boolean()) wrong_type(n, path, "a boolean (true or false)");
+  return n.as_boolean()->get();
+}
+
+template <>
+std::string Table::convert<std::string>(const toml::node& n, std::string_view path) const {
+  if (!n.is_string()) wrong_type(n, path, "a string");
+  return n.as_string()->get();
+}
+
+template <>
+Vec3 Table::convert<Vec3>(const toml::node& n, std::string_view path) const {
+  const toml::array* a = n.as_array();
+  if (!a || a->size() != 3) wrong_type(n, path, "an array of 3 numbers");
+  Vec3 v;
+  for (size_t i = 0; i < 3; ++i)
+    v[static_cast<Eigen::Index>(i)] = number((*a)[i], fmt::format("{}[{}]", path, i));
+  return v;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Value checks
+
+double positive(const Table& t, std::string_view key, double v) {
+  if (!(v > 0.0)) t.fail(key, fmt::format("must be > 0 (got {})", v));
+  return v;
+}
+
+Vec3 non_zero(const Table& t, std::string_view key, const Vec3& v) {
+  if (!(v.norm() > 0.0)) t.fail(key, "must be a non-zero vector");
+  return v;
+}
+
+std::string checked_name(const Table& t, std::string_view key) {
+  std::string name = t.need<std::string>(key);
+  const bool ok = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+  if (!ok)
+    t.fail(key, fmt::format("'{}' is not a valid name (use letters, digits, _ and -)", name));
+  return name;
+}
+
+// Adds name to names, failing when it is already there.
+void require_unique(const Table& t, std::string_view key, const std::string& name,
+                    std::map<std::string, std::string>& names) {
+  const auto [it, fresh] = names.emplace(name, t.path());
+  if (!fresh) t.fail(key, fmt::format("duplicate name '{}' (also used by {})", name, it->second));
+}
+
+// Exactly one of `keys` is present; returns it.
+std::string_view one_of(const Table& t, Keys keys) {
+  std::vector<std::string_view> given;
+  for (std::string_view k : keys)
+    if (t.has(k)) given.push_back(k);
+  if (given.size() == 1) return given[0];
+  if (given.empty()) t.fail("", fmt::format("needs one of: {}", fmt::join(keys, ", ")));
+  t.fail(given[1], fmt::format("give only one of: {}", fmt::join(keys, ", ")));
+}
+
+// ---------------------------------------------------------------------------------------------
+// [time], [monitor], [gravity], title
+
+void parse_title(const Table& root, Scene& scene) {
+  scene.title = root.get_or<std::string>("title", "");
+}
+
+void parse_time(const Table& root, Scene& scene) {
+  const Table t = root.need_table("time");
+  t.allow_only({"end", "output_interval", "dt_safety", "max_dt", "max_steps"});
+  SceneTime& time = scene.time;
+  time.end = positive(t, "end", t.need<double>("end"));
+  time.output_interval =
+      positive(t, "output_interval", t.get_or("output_interval", time.end / 100));
+  time.dt_safety = positive(t, "dt_safety", t.get_or("dt_safety", kDefaultDtSafety));
+  if (time.dt_safety > 2.0)
+    t.fail("dt_safety", fmt::format("must be <= 2 (got {})", time.dt_safety));
+  if (time.dt_safety > 1.0)
+    scene.warnings.push_back(fmt::format(
+        "{}: {} > 1 exceeds the stable time step; use it only for stability experiments",
+        t.where("dt_safety"), time.dt_safety));
+  if (auto v = t.get<double>("max_dt")) time.max_dt = positive(t, "max_dt", *v);
+  if (auto v = t.get<long>("max_steps")) {
+    if (*v <= 0) t.fail("max_steps", fmt::format("must be > 0 (got {})", *v));
+    time.max_steps = *v;
+  }
+}
+
+void parse_monitor(const Table& root, Scene& scene) {
+  const auto t = root.table("monitor");
+  if (!t) return;
+  t->allow_only({"energy_tolerance", "check_interval", "dt_collapse_ratio"});
+  MonitorSettings& m = scene.monitor;
+  m.energy_tolerance =
+      positive(*t, "energy_tolerance", t->get_or("energy_tolerance", m.energy_tolerance));
+  const long interval = t->get_or("check_interval", static_cast<long>(m.check_interval));
+  if (interval < 1 || interval > 1'000'000'000)
+    t->fail("check_interval", fmt::format("must be >= 1 (got {})", interval));
+  m.check_interval = static_cast<int>(interval);
+  m.dt_collapse_ratio =
+      positive(*t, "dt_collapse_ratio", t->get_or("dt_collapse_ratio", m.dt_collapse_ratio));
+  if (m.dt_collapse_ratio >= 1.0)
+    t->fail("dt_collapse_ratio", fmt::format("must be < 1 (got {})", m.dt_collapse_ratio));
+}
+
+void parse_gravity(const Table& root, Scene& scene) {
+  const auto t = root.table("gravity");
+  if (!t) return;
+  t->allow_only({"acceleration"});
+  scene.gravity = t->need<Vec3>("acceleration");
+}
+
+// ---------------------------------------------------------------------------------------------
+// [[bodies]]
+
+MaterialParams parse_material(const Table& t) {
+  t.allow_only({"model", "E", "nu", "rho"});
+  MaterialParams m;
+  const std::string model = t.get_or<std::string>("model", "neo_hookean");
+  if (!parse_material_model(model, m.model))
+    t.fail("model", fmt::format("must be neo_hookean or linear_elastic (got '{}')", model));
+  m.E = t.need<double>("E");
+  m.nu = t.need<double>("nu");
+  m.rho = t.need<double>("rho");
+  // validate() answers "<field> <problem>"; report the problem at that field's key.
+  const std::string problem = validate(m);
+  if (!problem.empty()) {
+    const size_t space = problem.find(' ');
+    t.fail(problem.substr(0, space), problem.substr(space + 1));
+  }
+  return m;
+}
+
+struct ShapeInfo {
+  Shape shape;
+  std::string_view name;
+  std::vector<std::string_view> keys;  // the keys that apply, besides "shape"
+};
+
+const std::array<ShapeInfo, 5> kShapes{{
+    {Shape::sphere, "sphere", {"radius", "mesh_size", "refine"}},
+    {Shape::box, "box", {"size", "centered", "mesh_size", "refine"}},
+    {Shape::cylinder, "cylinder", {"radius", "length", "centered", "mesh_size", "refine"}},
+    {Shape::pipe, "pipe", {"radius", "inner_radius", "length", "centered", "mesh_size", "refine"}},
+    {Shape::mesh, "mesh", {"file"}},
+}};
+
+const ShapeInfo& shape_info(const Table& t) {
+  const std::string name = t.need<std::string>("shape");
+  for (const ShapeInfo& s : kShapes)
+    if (s.name == name) return s;
+  t.fail("shape", fmt::format("must be one of sphere, box, cylinder, pipe, mesh (got '{}')", name));
+}
+
+PrimitiveKind primitive_kind(Shape s) {
+  switch (s) {
+    case Shape::sphere:
+      return PrimitiveKind::sphere;
+    case Shape::cylinder:
+      return PrimitiveKind::cylinder;
+    case Shape::pipe:
+      return PrimitiveKind::pipe;
+    case Shape::box:
+    case Shape::mesh:
+      break;
+  }
+  return PrimitiveKind::box;
+}
+
+// refine = { center = [x, y, z], radius = r, mesh_size = h }: local coordinates of the shape.
+LocalRefinement parse_refinement(const Table& t, double mesh_size) {
+  t.allow_only({"center", "radius", "mesh_size"});
+  LocalRefinement r;
+  r.center = t.need<Vec3>("center");
+  r.radius = positive(t, "radius", t.need<double>("radius"));
+  r.mesh_size = positive(t, "mesh_size", t.need<double>("mesh_size"));
+  if (r.mesh_size > mesh_size)
+    t.fail("mesh_size",
+           fmt::format("must not exceed the body's mesh_size ({} > {})", r.mesh_size, mesh_size));
+  return r;
+}
+
+PrimitiveSpec parse_primitive(const Table& t, Shape shape) {
+  PrimitiveSpec p{primitive_kind(shape)};
+  if (t.has("radius")) p.radius = positive(t, "radius", t.need<double>("radius"));
+  if (t.has("length")) p.length = positive(t, "length", t.need<double>("length"));
+  if (t.has("size")) {
+    p.size = t.need<Vec3>("size");
+    if (!(p.size.minCoeff() > 0.0))
+      t.fail("size", fmt::format("every extent must be > 0 (got [{}])", fmt::join(p.size, ", ")));
+  }
+  if (t.has("inner_radius")) {
+    p.inner_radius = positive(t, "inner_radius", t.need<double>("inner_radius"));
+    if (!(p.inner_radius < p.radius))
+      t.fail("inner_radius",
+             fmt::format("must be < radius (got {} >= {})", p.inner_radius, p.radius));
+  }
+  p.centered = t.get_or("centered", false);
+  p.mesh_size = positive(t, "mesh_size", t.need<double>("mesh_size"));
+  if (const auto r = t.table("refine")) p.refinement = parse_refinement(*r, p.mesh_size);
+  return p;
+}
+
+GeometrySpec parse_geometry(const Table& t) {
+  t.allow_only({"shape", "size", "radius", "inner_radius", "length", "centered", "mesh_size",
+                "refine", "file"});
+  const ShapeInfo& info = shape_info(t);
+  for (std::string_view k :
+       {"size", "radius", "inner_radius", "length", "centered", "mesh_size", "refine", "file"})
+    if (t.has(k) && std::find(info.keys.begin(), info.keys.end(), k) == info.keys.end())
+      t.fail(k, fmt::format("key '{}' does not apply to shape '{}'", k, info.name));
+  for (std::string_view k : info.keys)
+    if (k != "centered" && k != "refine" && !t.has(k))
+      t.fail(k, fmt::format("required for shape '{}'", info.name));
+
+  GeometrySpec g;
+  g.shape = info.shape;
+  if (info.shape != Shape::mesh) {
+    g.primitive = parse_primitive(t, info.shape);
+    return g;
+  }
+  const fs::path file = t.need<std::string>("file");
+  if (file.empty()) t.fail("file", "must not be empty");
+  g.file = file.is_relative() ? t.file().parent_path() / file : file;
+  return g;
+}
+
+Placement parse_placement(const Table& t) {
+  t.allow_only({"translate", "rotate_axis", "rotate_deg"});
+  Placement p;
+  p.translation = t.get_or<Vec3>("translate", Vec3::Zero());
+  p.rotation_axis = non_zero(t, "rotate_axis", t.get_or<Vec3>("rotate_axis", Vec3::UnitZ()));
+  p.rotation_deg = t.get_or("rotate_deg", 0.0);
+  return p;
+}
+
+BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
+  t.allow_only({"name", "initial_velocity", "mass", "material", "geometry", "placement"});
+  BodySpec b;
+  b.name = checked_name(t, "name");
+  require_unique(t, "name", b.name, names);
+  b.initial_velocity = t.get_or<Vec3>("initial_velocity", Vec3::Zero());
+  if (t.has("mass")) b.mass = positive(t, "mass", t.need<double>("mass"));
+  b.material = parse_material(t.need_table("material"));
+  const Table geometry = t.need_table("geometry");
+  b.geometry = parse_geometry(geometry);
+  if (auto p = t.table("placement")) b.placement = parse_placement(*p);
+  b.where = t.ref();
+  b.geometry_where = geometry.ref();
+  return b;
+}
+
+void parse_bodies(const Table& root, Scene& scene) {
+  const std::vector<Table> tables = root.tables("bodies");
+  if (tables.empty()) root.fail("bodies", "at least one [[bodies]] table is required");
+  std::map<std::string, std::string> names;
+  for (const Table& t : tables) scene.bodies.push_back(parse_body(t, names));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Selections, [[fixed]], [[surface_loads]]
+
+BoxSpec parse_box(const Table& t) {
+  t.allow_only({"min", "max"});
+  BoxSpec b{t.need<Vec3>("min"), t.need<Vec3>("max")};
+  if (!(b.min.array() <= b.max.array()).all()) t.fail("max", "must be >= min in every component");
+  return b;
+}
+
+PlaneSpec parse_plane(const Table& t) {
+  t.allow_only({"point", "normal", "tolerance"});
+  PlaneSpec p;
+  p.point = t.need<Vec3>("point");
+  p.normal = non_zero(t, "normal", t.need<Vec3>("normal"));
+  p.tolerance = positive(t, "tolerance", t.get_or("tolerance", p.tolerance));
+  return p;
+}
+
+std::optional<std::string> parse_body_ref(const Table& t) {
+  if (!t.has("body")) return std::nullopt;
+  return t.need<std::string>("body");
+}
+
+FixedSpec parse_fixed_one(const Table& t) {
+  t.allow_only({"body", "node_set", "box", "plane"});
+  FixedSpec f;
+  f.body = parse_body_ref(t);
+  const std::string_view kind = one_of(t, {"node_set", "box", "plane"});
+  if (kind == "node_set")
+    f.selection = NodeSetRef{t.need<std::string>("node_set")};
+  else if (kind == "box")
+    f.selection = parse_box(t.need_table("box"));
+  else
+    f.selection = parse_plane(t.need_table("plane"));
+  f.where = t.ref();
+  return f;
+}
+
+void parse_fixed(const Table& root, Scene& scene) {
+  for (const Table& t : root.tables("fixed")) scene.fixed.push_back(parse_fixed_one(t));
+}
+
+std::vector<std::pair<double, double>> parse_force_table(const Table& t) {
+  const toml::node* n = t.node("force");
+  if (!n) t.fail("force", "required key is missing");
+  const std::string path = t.key_path("force");
+  const toml::array* a = n->as_array();
+  if (!a) t.wrong_type(*n, path, "an array of [t, F] pairs");
+  std::vector<std::pair<double, double>> points;
+  for (size_t i = 0; i < a->size(); ++i) {
+    const std::string item = fmt::format("{}[{}]", path, i);
+    const toml::array* pair = (*a)[i].as_array();
+    if (!pair || pair->size() != 2) t.wrong_type((*a)[i], item, "a [t, F] pair of numbers");
+    points.emplace_back(t.number((*pair)[0], item + "[0]"), t.number((*pair)[1], item + "[1]"));
+  }
+  const std::string problem = TimeTable::validate(points);
+  if (!problem.empty()) t.fail("force", problem);
+  return points;
+}
+
+SurfaceLoadSpec parse_surface_load(const Table& t, size_t index) {
+  t.allow_only({"name", "body", "surface", "plane", "direction", "force"});
+  SurfaceLoadSpec s;
+  s.name = t.has("name") ? checked_name(t, "name") : fmt::format("load{}", index);
+  s.body = parse_body_ref(t);
+  if (one_of(t, {"surface", "plane"}) == "surface")
+    s.surface = SurfaceRef{t.need<std::string>("surface")};
+  else
+    s.surface = parse_plane(t.need_table("plane"));
+  s.direction = non_zero(t, "direction", t.need<Vec3>("direction"));
+  s.force = parse_force_table(t);
+  s.where = t.ref();
+  return s;
+}
+
+void parse_surface_loads(const Table& root, Scene& scene) {
+  const std::vector<Table> tables = root.tables("surface_loads");
+  for (size_t i = 0; i < tables.size(); ++i)
+    scene.surface_loads.push_back(parse_surface_load(tables[i], i));
+}
+
+// ---------------------------------------------------------------------------------------------
+// [output]
+
+TrackSpec parse_track(const Table& t, std::map<std::string, std::string>& names) {
+  t.allow_only({"name", "body", "point"});
+  TrackSpec s;
+  s.name = checked_name(t, "name");
+  require_unique(t, "name", s.name, names);
+  s.body = t.need<std::string>("body");
+  s.point = t.need<Vec3>("point");
+  s.where = t.ref();
+  return s;
+}
+
+void parse_output(const Table& root, Scene& scene) {
+  const auto t = root.table("output");
+  if (!t) return;
+  t->allow_only({"kinetic_energy", "internal_energy", "displacement", "track"});
+  OutputSpec& o = scene.output;
+  o.kinetic_energy = t->get_or("kinetic_energy", o.kinetic_energy);
+  o.internal_energy = t->get_or("internal_energy", o.internal_energy);
+  o.displacement = t->get_or("displacement", o.displacement);
+  std::map<std::string, std::string> names;
+  for (const Table& track : t->tables("track")) o.track.push_back(parse_track(track, names));
+}
+
+// ---------------------------------------------------------------------------------------------
+// [contact]
+
+// The history columns of the sphere are "<name>.<quantity>", like a body's or a tracked
+// point's: its name must not be one of theirs.
+void check_column_prefix(const Table& t, std::string_view key, const std::string& name,
+                         const Scene& scene) {
+  for (const BodySpec& b : scene.bodies)
+    if (b.name == name)
+      t.fail(key, fmt::format("'{}' is also the name of a body (their history columns would clash)",
+                              name));
+  for (const TrackSpec& tr : scene.output.track)
+    if (tr.name == name)
+      t.fail(key,
+             fmt::format(
+                 "'{}' is also the name of a tracked point (their history columns would clash)",
+                 name));
+}
+
+RigidSphereSpec parse_sphere(const Table& t, const Scene& scene) {
+  t.allow_only({"name", "radius", "mass", "density", "center", "velocity"});
+  RigidSphereSpec s;
+  if (t.has("name")) s.name = checked_name(t, "name");
+  check_column_prefix(t, t.has("name") ? "name" : "", s.name, scene);
+  s.radius = positive(t, "radius", t.need<double>("radius"));
+  if (one_of(t, {"mass", "density"}) == "mass") {
+    s.mass = positive(t, "mass", t.need<double>("mass"));
+  } else {
+    const double rho = positive(t, "density", t.need<double>("density"));
+    s.mass = rho * 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius;
+  }
+  s.center = t.need<Vec3>("center");
+  s.velocity = t.get_or<Vec3>("velocity", Vec3::Zero());
+  return s;
+}
+
+// model = "dcr": the surfaces are checked against the meshes by the builder.
+// An array of distinct strings (surface names) at key.
+std::vector<std::string> surface_names(const Table& t, const std::string& key) {
+  const toml::node* n = t.node(key);
+  const toml::array* a = n ? n->as_array() : nullptr;
+  const std::string path = t.key_path(key);
+  if (!a) t.wrong_type(*n, path, "an array of strings");
+  std::vector<std::string> names;
+  for (size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = (*a)[i];
+    if (!e.is_string()) t.wrong_type(e, fmt::format("{}[{}]", path, i), "a string");
+    std::string name = e.as_string()->get();
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      t.fail_at(e, fmt::format("{}[{}]", path, i),
+                fmt::format("surface '{}' is listed twice", name));
+    names.push_back(std::move(name));
+  }
+  return names;
+}
+
+void parse_dcr(const Table& t, ContactSpec& c) {
+  t.allow_only(
+      {"model", "surfaces", "self_contact", "restitution", "friction", "force_axis", "sensors"});
+  c.kind = ContactKind::dcr;
+  if (!t.node("surfaces")) t.fail("surfaces", "required key is missing");
+  c.surfaces = surface_names(t, "surfaces");
+  if (c.surfaces.empty()) t.fail("surfaces", "needs at least one surface");
+  c.self_contact = t.get_or("self_contact", c.self_contact);
+  c.restitution = t.get_or("restitution", c.restitution);
+  if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
+    t.fail("restitution", fmt::format("must lie in [0, 1] (got {})", c.restitution));
+  c.friction = t.get_or("friction", c.friction);
+  if (!(c.friction >= 0.0)) t.fail("friction", fmt::format("must be >= 0 (got {})", c.friction));
+  if (t.has("force_axis")) c.force_axis = non_zero(t, "force_axis", t.need<Vec3>("force_axis"));
+  if (t.has("sensors")) c.sensors = surface_names(t, "sensors");
+  c.where = t.ref();
+}
+
+// penalty_mode = "per_point" (K_P = penalty) or "element" (s = penalty_scale); each key of one
+// mode is an error with the other.
+void parse_penalty(const Table& t, ContactSpec& c) {
+  if (t.has("penalty_mode")) {
+    const std::string mode = t.need<std::string>("penalty_mode");
+    if (!parse_penalty_mode(mode, c.penalty_mode))
+      t.fail("penalty_mode", unknown_value_problem(mode, kPenaltyModeNames));
+  }
+  const bool element = c.penalty_mode == PenaltyMode::element;
+  if (element && t.has("penalty"))
+    t.fail("penalty",
+           "applies only with penalty_mode = \"per_point\" (the element mode's springs are "
+           "penalty_scale K A^2 / V)");
+  if (!element && t.has("penalty_scale"))
+    t.fail("penalty_scale", "applies only with penalty_mode = \"element\"");
+  c.penalty = positive(t, "penalty", t.get_or("penalty", c.penalty));
+  c.penalty_scale = positive(t, "penalty_scale", t.get_or("penalty_scale", c.penalty_scale));
+}
+
+void parse_contact(const Table& root, Scene& scene) {
+  const auto t = root.table("contact");
+  if (!t) return;
+  const std::string model = t->need<std::string>("model");
+  if (model == "none") {
+    t->allow_only({"model"});
+    return;
+  }
+  if (model == "dcr") {
+    parse_dcr(*t, scene.contact);
+    return;
+  }
+  if (model != "rigid_penalty")
+    t->fail("model", fmt::format("must be one of none, rigid_penalty, dcr (got '{}')", model));
+  t->allow_only({"model", "body", "surface", "penalty_mode", "penalty", "penalty_scale", "damping",
+                 "force_axis", "sphere"});
+  ContactSpec& c = scene.contact;
+  c.kind = ContactKind::rigid_penalty;
+  c.body = t->need<std::string>("body");
+  if (t->has("surface")) c.surface = t->need<std::string>("surface");
+  parse_penalty(*t, c);
+  c.damping = t->get_or("damping", c.damping);
+  if (!(c.damping >= 0.0 && std::isfinite(c.damping)))
+    t->fail("damping", fmt::format("must be >= 0 (got {})", c.damping));
+  if (t->has("force_axis")) c.force_axis = non_zero(*t, "force_axis", t->need<Vec3>("force_axis"));
+  const Table sphere = t->need_table("sphere");
+  c.sphere = parse_sphere(sphere, scene);
+  c.where = t->ref();
+  c.sphere_where = sphere.ref();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The top level: one row per table or key. A new section is one more row.
+
+struct Section {
+  std::string_view key;
+  void (*parse)(const Table& root, Scene& scene);
+};
+
+const std::array<Section, 9> kSections = {{
+    {"title", parse_title},
+    {"time", parse_time},
+    {"monitor", parse_monitor},
+    {"gravity", parse_gravity},
+    {"bodies", parse_bodies},
+    {"fixed", parse_fixed},
+    {"surface_loads", parse_surface_loads},
+    {"output", parse_output},
+    {"contact", parse_contact},  // after bodies and output: its names must not clash with theirs
+}};
+
+void check_top_level_keys(const toml::table& root, const Table& t) {
+  for (auto&& [k, v] : root) {
+    const auto known = [&](const Section& s) { return s.key == k.str(); };
+    if (std::none_of(kSections.begin(), kSections.end(), known)) {
+      std::vector<std::string_view> allowed;
+      for (const Section& s : kSections) allowed.push_back(s.key);
+      t.fail(k.str(), unknown_key_problem(k.str(), allowed));
+    }
+  }
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source.string());
+  } catch (const toml::parse_error& e) {
+    throw config_error(source, static_cast<int>(e.source().begin.line), "",
+                       fmt::format("TOML syntax error: {}", e.description()));
+  }
+  Scene scene;
+  scene.source = source;
+  const Table t(root, "", source);
+  check_top_level_keys(root, t);
+  for (const Section& s : kSections) s.parse(t, scene);
+  return scene;
+}
+
+Scene parse_scene_file(const std::filesystem::path& file) {
+  return parse_scene(read_config_text(file), file);
+}
+
+}  // namespace ccm
