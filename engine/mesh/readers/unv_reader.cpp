@@ -119,6 +119,11 @@ class UnvParser {
   long dataset_number(int i) const {
     if (i >= f_.n_lines()) f_.fail(i - 1, "file", "ends after -1 without a dataset number");
     const auto fields = split_whitespace(f_.line(i));
+    if (!fields.empty() && fields[0].size() > 1 &&
+        (fields[0].back() == 'b' || fields[0].back() == 'B'))
+      if (const auto binary = parse_integer(fields[0].substr(0, fields[0].size() - 1)))
+        f_.fail(i, section_name(*binary),
+                "binary datasets are not supported (export the universal file as ASCII)");
     const auto n = fields.empty() ? std::nullopt : parse_integer(fields[0]);
     if (!n || *n <= 0)
       f_.fail(i, "file", fmt::format("expected a dataset number, found '{}'", trim(f_.line(i))));
