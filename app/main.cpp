@@ -4,7 +4,8 @@
 // `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--axis N=V]... [--json]`,
 // `ccm report --db FILE --out DIR [--max-error E]`, `ccm rig list`,
 // `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]`,
-// `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`, `ccm mesh info FILE [--json]`.
+// `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`,
+// `ccm mesh info FILE [--json]`.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -171,8 +172,9 @@ int main(int argc, char** argv) {
       "info", "Node and tet counts, extent, named groups and element quality of a mesh file");
   mesh_info->add_option("FILE", mesh_info_args.file, "Mesh file (see docs/meshes.md)")->required();
   mesh_info->add_flag("--json", mesh_info_args.json, "Print the figures as JSON");
-  mesh_info->footer("Exit codes: 0 read, 1 internal error, 2 bad input (the message names the "
-                    "file, the line and the dataset or keyword).");
+  mesh_info->footer(
+      "Exit codes: 0 read, 1 internal error, 2 bad input (the message names the "
+      "file, the line and the dataset or keyword).");
 
   try {
     app.parse(argc, argv);

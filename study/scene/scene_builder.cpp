@@ -35,6 +35,7 @@ TetMesh mesh_body(const Scene& scene, const BodySpec& body) {
   try {
     if (!from_file) return mesh_primitive(g.primitive, body.placement);
     TetMesh mesh = read_mesh_file(g.file);
+    for (Vec3& x : mesh.nodes) x *= g.scale;
     place(mesh, body.placement);
     return mesh;
   } catch (const MeshError& e) {

@@ -69,3 +69,22 @@ TEST_CASE("ccm run: a free UNV body keeps its kinetic energy 1/2 rho V v^2", "[s
   }
   CHECK(rows >= 2);
 }
+
+TEST_CASE("scene: scale turns a mesh in millimetres into metres", "[scene][inp]") {
+  test::TempDir dir;
+  // The 10-unit cube read with scale = 0.001: the cube [0, 0.01]^3.
+  const auto scene =
+      dir.write("s.toml", body_from("abaqusreader_cube_tet4.inp") + "scale = 0.001\n");
+  const Model model = build_model(parse_scene_file(scene));
+  Vec3 top = Vec3::Zero();
+  for (const Vec3& x : model.mesh.X) top = top.cwiseMax(x);
+  CHECK(top.isApprox(Vec3::Constant(0.01), 1e-15));
+  const auto bad = dir.write("bad.toml", body_from("abaqusreader_cube_tet4.inp") + "scale = 0\n");
+  std::string message = "(no error)";
+  try {
+    parse_scene_file(bad);
+  } catch (const SceneError& e) {
+    message = e.what();
+  }
+  CHECK(message == bad.string() + ":12: bodies[0].geometry.scale: must be > 0 (got 0)");
+}
