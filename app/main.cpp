@@ -4,11 +4,13 @@
 // `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--axis N=V]... [--json]`,
 // `ccm report --db FILE --out DIR [--max-error E]`, `ccm rig list`,
 // `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]`,
-// `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`.
+// `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`,
+// `ccm mesh info FILE [--json]`.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 
+#include "app/mesh_commands.hpp"
 #include "app/rig_commands.hpp"
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
@@ -163,6 +165,17 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   rig_calibrate->footer("Exit codes: 0 done, 1 internal error, 2 bad input (nothing written).");
 
+  ccm::MeshInfoArgs mesh_info_args;
+  CLI::App* mesh = app.add_subcommand("mesh", "Mesh files (.msh, .unv, .inp, .geo)");
+  mesh->require_subcommand(1);
+  CLI::App* mesh_info = mesh->add_subcommand(
+      "info", "Node and tet counts, extent, named groups and element quality of a mesh file");
+  mesh_info->add_option("FILE", mesh_info_args.file, "Mesh file (see docs/meshes.md)")->required();
+  mesh_info->add_flag("--json", mesh_info_args.json, "Print the figures as JSON");
+  mesh_info->footer(
+      "Exit codes: 0 read, 1 internal error, 2 bad input (the message names the "
+      "file, the line and the dataset or keyword).");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -178,5 +191,6 @@ int main(int argc, char** argv) {
   if (*rig_run) return ccm::rig_run_command(rig_run_args);
   if (*rig_calibrate) return ccm::rig_calibrate_command(rig_calibrate_args);
   if (*report) return ccm::report_command(report_args);
+  if (*mesh_info) return ccm::mesh_info_command(mesh_info_args);
   return ccm::run_command(args);
 }

@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "engine/mesh/face_table.hpp"
+
 namespace ccm {
 namespace {
 
@@ -223,35 +225,6 @@ std::map<std::string, std::vector<GmshTriangle>> named_gmsh_triangles() {
   return by_name;
 }
 
-// Tet faces (sorted node triple) with the node opposite, sorted for binary search. Only faces
-// whose nodes all satisfy `keep` are listed, which keeps the table small.
-struct FaceTable {
-  std::vector<std::pair<std::array<int, 3>, int>> faces;
-
-  FaceTable(const std::vector<Tet>& tets, const std::vector<char>& keep) {
-    for (const Tet& t : tets) {
-      for (int opposite = 0; opposite < 4; ++opposite) {
-        std::array<int, 3> f;
-        for (int k = 0, j = 0; k < 4; ++k)
-          if (k != opposite) f[j++] = t[k];
-        if (!keep[f[0]] || !keep[f[1]] || !keep[f[2]]) continue;
-        std::sort(f.begin(), f.end());
-        faces.push_back({f, t[opposite]});
-      }
-    }
-    std::stable_sort(faces.begin(), faces.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-  }
-  // The opposite node of the first tet (lowest index) with this face, or -1.
-  int opposite_node(std::array<int, 3> f) const {
-    std::sort(f.begin(), f.end());
-    const auto it =
-        std::lower_bound(faces.begin(), faces.end(), f,
-                         [](const auto& entry, const auto& key) { return entry.first < key; });
-    return it != faces.end() && it->first == f ? it->second : -1;
-  }
-};
-
 // The triangle on the compact numbering, oriented with its normal away from the tet it bounds.
 Triangle outward_triangle(const GmshTriangle& g, const Extracted& ex, const FaceTable& table,
                           const std::string& where) {
@@ -260,10 +233,7 @@ Triangle outward_triangle(const GmshTriangle& g, const Extracted& ex, const Face
   const int opposite = t[0] < 0 || t[1] < 0 || t[2] < 0 ? -1 : table.opposite_node(t);
   if (opposite < 0)
     throw MeshError(fmt::format("{}: triangle {} is not a face of any tetrahedron", where, g.tag));
-  const auto& x = ex.mesh.nodes;
-  const Vec3 normal = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
-  if (normal.dot(x[opposite] - x[t[0]]) > 0) std::swap(t[1], t[2]);
-  return t;
+  return oriented_away_from(t, opposite, ex.mesh.nodes);
 }
 
 std::map<std::string, std::vector<Triangle>> named_surfaces(const Extracted& ex,

@@ -57,6 +57,12 @@ void add_body(ModelMesh& mesh, const std::string& name, const MaterialParams& ma
     mesh.node_sets[name + "/" + surface_name] = nodes_of(s.triangles);
     mesh.surfaces[name + "/" + surface_name] = std::move(s);
   }
+  for (const auto& [set_name, nodes] : geometry.named_node_sets) {
+    std::vector<int>& set = mesh.node_sets[name + "/" + set_name];  // a surface's: the union
+    for (int n : nodes) set.push_back(n + node_offset);
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+  }
   mesh.bodies.push_back(std::move(body));
 }
 

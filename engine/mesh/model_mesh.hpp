@@ -40,7 +40,8 @@ struct ModelMesh {
 };
 
 // Appends a body: its nodes and tets are renumbered after the existing ones, its boundary
-// surface extracted, and node sets "<name>", "<name>/boundary" and one per named surface made.
+// surface extracted, and node sets "<name>", "<name>/boundary" and one per named surface and named
+// node set made (a named node set with a surface's name adds its nodes to the surface's set).
 void add_body(ModelMesh& mesh, const std::string& name, const MaterialParams& material,
               const TetMesh& geometry);
 

@@ -15,12 +15,14 @@ using Tet = std::array<int, 4>;       // node indices; positive reference volume
 using Triangle = std::array<int, 3>;  // node indices; counter-clockwise seen from outside
 
 // Geometry as it comes from a mesher or a mesh file: nodes, tets, the named surfaces the file or
-// primitive defines (physical groups of dimension 2) and, for a model of several volumes, the
-// named region of every tet (physical groups of dimension 3).
+// primitive defines (physical groups of dimension 2, UNV groups of triangles, Abaqus *SURFACE),
+// the named node sets a file defines beyond its surfaces (UNV node groups, Abaqus *NSET) and, for
+// a model of several volumes, the named region of every tet (physical groups of dimension 3).
 struct TetMesh {
   std::vector<Vec3> nodes;
   std::vector<Tet> tets;
   std::map<std::string, std::vector<Triangle>> named_surfaces;
+  std::map<std::string, std::vector<int>> named_node_sets;  // sorted unique node indices
   std::vector<std::string> region_names;  // empty: the mesh is one region
   std::vector<int> tet_region;            // per tet, an index into region_names (or empty)
 

@@ -56,6 +56,7 @@ struct GeometrySpec {
   Shape shape = Shape::box;
   PrimitiveSpec primitive{PrimitiveKind::box};  // sphere, box, cylinder, pipe
   std::filesystem::path file;                   // mesh: resolved against the scene's folder
+  double scale = 1.0;  // mesh: the file's coordinates times this, before placement (0.001: mm)
 };
 
 struct BodySpec {

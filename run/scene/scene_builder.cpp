@@ -12,6 +12,7 @@
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
 #include "engine/core/time_table.hpp"
+#include "engine/mesh/readers/mesh_file.hpp"
 
 namespace ccm {
 namespace {
@@ -33,7 +34,8 @@ TetMesh mesh_body(const Scene& scene, const BodySpec& body) {
   const bool from_file = g.shape == Shape::mesh;
   try {
     if (!from_file) return mesh_primitive(g.primitive, body.placement);
-    TetMesh mesh = read_msh_file(g.file);
+    TetMesh mesh = read_mesh_file(g.file);
+    for (Vec3& x : mesh.nodes) x *= g.scale;
     place(mesh, body.placement);
     return mesh;
   } catch (const MeshError& e) {

@@ -325,7 +325,7 @@ const std::array<ShapeInfo, 5> kShapes{{
     {Shape::box, "box", {"size", "centered", "mesh_size", "refine"}},
     {Shape::cylinder, "cylinder", {"radius", "length", "centered", "mesh_size", "refine"}},
     {Shape::pipe, "pipe", {"radius", "inner_radius", "length", "centered", "mesh_size", "refine"}},
-    {Shape::mesh, "mesh", {"file"}},
+    {Shape::mesh, "mesh", {"file", "scale"}},
 }};
 
 const ShapeInfo& shape_info(const Table& t) {
@@ -386,14 +386,14 @@ PrimitiveSpec parse_primitive(const Table& t, Shape shape) {
 
 GeometrySpec parse_geometry(const Table& t) {
   t.allow_only({"shape", "size", "radius", "inner_radius", "length", "centered", "mesh_size",
-                "refine", "file"});
+                "refine", "file", "scale"});
   const ShapeInfo& info = shape_info(t);
-  for (std::string_view k :
-       {"size", "radius", "inner_radius", "length", "centered", "mesh_size", "refine", "file"})
+  for (std::string_view k : {"size", "radius", "inner_radius", "length", "centered", "mesh_size",
+                             "refine", "file", "scale"})
     if (t.has(k) && std::find(info.keys.begin(), info.keys.end(), k) == info.keys.end())
       t.fail(k, fmt::format("key '{}' does not apply to shape '{}'", k, info.name));
   for (std::string_view k : info.keys)
-    if (k != "centered" && k != "refine" && !t.has(k))
+    if (k != "centered" && k != "refine" && k != "scale" && !t.has(k))
       t.fail(k, fmt::format("required for shape '{}'", info.name));
 
   GeometrySpec g;
@@ -405,6 +405,7 @@ GeometrySpec parse_geometry(const Table& t) {
   const fs::path file = t.need<std::string>("file");
   if (file.empty()) t.fail("file", "must not be empty");
   g.file = file.is_relative() ? t.file().parent_path() / file : file;
+  g.scale = positive(t, "scale", t.get_or("scale", 1.0));
   return g;
 }
 
