@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "study/scene/scene_builder.hpp"
-#include "study/scene/scene_file.hpp"
+#include "run/scene/scene_builder.hpp"
+#include "run/scene/scene_file.hpp"
 #include "tests/engine/mesh/readers/mesh_test_files.hpp"
 
 using namespace ccm;
@@ -83,7 +83,7 @@ TEST_CASE("scene: scale turns a mesh in millimetres into metres", "[scene][inp]"
   std::string message = "(no error)";
   try {
     parse_scene_file(bad);
-  } catch (const SceneError& e) {
+  } catch (const ConfigError& e) {
     message = e.what();
   }
   CHECK(message == bad.string() + ":12: bodies[0].geometry.scale: must be > 0 (got 0)");
