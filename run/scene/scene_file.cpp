@@ -10,10 +10,13 @@
 #include <initializer_list>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <sstream>
+#include <type_traits>
 
 #include "config/did_you_mean.hpp"
+#include "config/strict_table.hpp"
 #include "config/text_file.hpp"
 #include "engine/core/time_table.hpp"
 
@@ -23,78 +26,22 @@ namespace {
 namespace fs = std::filesystem;
 using Keys = std::initializer_list<std::string_view>;
 
-int line_of(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
-
-std::string_view type_name(toml::node_type t) {
-  switch (t) {
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a float";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::date:
-      return "a date";
-    case toml::node_type::time:
-      return "a time";
-    case toml::node_type::date_time:
-      return "a date-time";
-    case toml::node_type::none:
-      break;
-  }
-  return "nothing";
-}
-
-std::string unknown_key_problem(std::string_view key, std::span<const std::string_view> allowed) {
-  const std::string_view best = closest_name(key, allowed);
-  if (!best.empty()) return fmt::format("unknown key '{}' (did you mean '{}'?)", key, best);
-  return fmt::format("unknown key '{}' (allowed: {})", key, fmt::join(allowed, ", "));
-}
-
-// One table of the scene file with its key path: typed reads with precise messages.
-class Table {
+// One table of the scene file: the strict reader (config/strict_table.hpp) with the scene's
+// vectors and the source references the builder's messages need.
+class Table : public StrictTable {
  public:
-  Table(const toml::table& t, std::string path, const fs::path& file)
-      : t_(&t), path_(std::move(path)), file_(&file) {}
-
-  const fs::path& file() const { return *file_; }
-  const std::string& path() const { return path_; }
-  int line() const { return std::max(1, line_of(*t_)); }
-  std::string key_path(std::string_view key) const { return ref_base().key_path(key); }
-  int line_of_key(std::string_view key) const {
-    const toml::node* n = key.empty() ? nullptr : t_->get(key);
-    return n ? std::max(1, line_of(*n)) : line();
-  }
-  // "<file>:<line>: <key path>" of a key of this table (the table itself when key is empty).
-  std::string where(std::string_view key) const {
-    return fmt::format("{}:{}: {}", file_->string(), line_of_key(key), key_path(key));
-  }
-  [[noreturn]] void fail(std::string_view key, std::string_view problem) const {
-    throw config_error(*file_, line_of_key(key), key_path(key), problem);
-  }
-  [[noreturn]] void fail_at(const toml::node& n, std::string_view key_path,
-                            std::string_view problem) const {
-    throw config_error(*file_, std::max(1, line_of(n)), key_path, problem);
-  }
-
-  void allow_only(Keys allowed) const {
-    for (auto&& [k, v] : *t_)
-      if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
-        fail(k.str(), unknown_key_problem(k.str(), {allowed.begin(), allowed.size()}));
-  }
-  bool has(std::string_view key) const { return t_->contains(key); }
+  using StrictTable::StrictTable;
+  explicit Table(StrictTable t) : StrictTable(std::move(t)) {}
 
   template <typename T>
   std::optional<T> get(std::string_view key) const {
-    const toml::node* n = t_->get(key);
-    if (!n) return std::nullopt;
-    return convert<T>(*n, key_path(key));
+    if constexpr (std::is_same_v<T, Vec3>) {
+      const toml::node* n = node(key);
+      if (!n) return std::nullopt;
+      return vec3(*n, key_path(key));
+    } else {
+      return StrictTable::get<T>(key);
+    }
   }
   template <typename T>
   T need(std::string_view key) const {
@@ -107,98 +54,30 @@ class Table {
   }
 
   std::optional<Table> table(std::string_view key) const {
-    const toml::node* n = t_->get(key);
-    if (!n) return std::nullopt;
-    if (!n->is_table()) wrong_type(*n, key_path(key), "a table");
-    return Table(*n->as_table(), key_path(key), *file_);
+    if (auto t = StrictTable::table(key)) return Table(std::move(*t));
+    return std::nullopt;
   }
-  Table need_table(std::string_view key) const {
-    if (auto t = table(key)) return *t;
-    fail(key, "required table is missing");
-  }
+  Table need_table(std::string_view key) const { return Table(StrictTable::need_table(key)); }
   // An array of tables ([[key]] or key = [{...}, ...]); empty when absent.
   std::vector<Table> tables(std::string_view key) const {
     std::vector<Table> out;
-    const toml::node* n = t_->get(key);
-    if (!n) return out;
-    if (!n->is_array()) wrong_type(*n, key_path(key), "an array of tables");
-    const toml::array& a = *n->as_array();
-    for (size_t i = 0; i < a.size(); ++i) {
-      const std::string path = fmt::format("{}[{}]", key_path(key), i);
-      if (!a[i].is_table()) wrong_type(a[i], path, "a table");
-      out.emplace_back(*a[i].as_table(), path, *file_);
-    }
+    for (StrictTable& t : StrictTable::tables(key)) out.emplace_back(std::move(t));
     return out;
   }
-  const toml::node* node(std::string_view key) const { return t_->get(key); }
 
   // For the builder: the table's path and line, and the line of every key it sets.
-  SourceRef ref() const {
-    SourceRef r = ref_base();
-    for (auto&& [k, v] : *t_) r.key_lines.emplace(std::string(k.str()), std::max(1, line_of(v)));
-    return r;
-  }
-
-  [[noreturn]] void wrong_type(const toml::node& n, std::string_view path,
-                               std::string_view expected) const {
-    fail_at(n, path, fmt::format("expected {}, got {}", expected, type_name(n.type())));
-  }
-
-  double number(const toml::node& n, std::string_view path) const {
-    double v = 0.0;
-    if (const auto* f = n.as_floating_point())
-      v = f->get();
-    else if (const auto* i = n.as_integer())
-      v = static_cast<double>(i->get());
-    else
-      wrong_type(n, path, "a number");
-    if (!std::isfinite(v)) fail_at(n, path, fmt::format("must be finite (got {})", v));
-    return v;
-  }
+  SourceRef ref() const { return SourceRef{path(), line(), key_lines()}; }
 
  private:
-  SourceRef ref_base() const { return SourceRef{path_, line(), {}}; }
-
-  template <typename T>
-  T convert(const toml::node& n, std::string_view path) const;
-
-  const toml::table* t_;
-  std::string path_;
-  const fs::path* file_;
+  Vec3 vec3(const toml::node& n, std::string_view path) const {
+    const toml::array* a = n.as_array();
+    if (!a || a->size() != 3) wrong_type(n, path, "an array of 3 numbers");
+    Vec3 v;
+    for (size_t i = 0; i < 3; ++i)
+      v[static_cast<Eigen::Index>(i)] = number((*a)[i], fmt::format("{}[{}]", path, i));
+    return v;
+  }
 };
-
-template <>
-double Table::convert<double>(const toml::node& n, std::string_view path) const {
-  return number(n, path);
-}
-
-template <>
-long Table::convert<long>(const toml::node& n, std::string_view path) const {
-  if (!n.is_integer()) wrong_type(n, path, "an integer");
-  return static_cast<long>(n.as_integer()->get());
-}
-
-template <>
-bool Table::convert<bool>(const toml::node& n, std::string_view path) const {
-  if (!n.is_boolean()) wrong_type(n, path, "a boolean (true or false)");
-  return n.as_boolean()->get();
-}
-
-template <>
-std::string Table::convert<std::string>(const toml::node& n, std::string_view path) const {
-  if (!n.is_string()) wrong_type(n, path, "a string");
-  return n.as_string()->get();
-}
-
-template <>
-Vec3 Table::convert<Vec3>(const toml::node& n, std::string_view path) const {
-  const toml::array* a = n.as_array();
-  if (!a || a->size() != 3) wrong_type(n, path, "an array of 3 numbers");
-  Vec3 v;
-  for (size_t i = 0; i < 3; ++i)
-    v[static_cast<Eigen::Index>(i)] = number((*a)[i], fmt::format("{}[{}]", path, i));
-  return v;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Value checks
