@@ -95,7 +95,10 @@ std::string surfaces_grid(const XdmfLayout& l, int frame) {
   s += "          </Geometry>\n";
   for (FieldKind kind : l.fields) {
     const FieldInfo& info = field_info(kind);
-    if (kind == FieldKind::contact_pressure)
+    // The node fields again (the same datasets): the surfaces can be warped and coloured alone.
+    if (info.centre == FieldCentre::node)
+      s += attribute(l, info, "Node", {frame_dataset(frame, kind), l.n_nodes, 3, false});
+    else if (kind == FieldKind::contact_pressure)
       s += attribute(l, info, "Cell", {frame_dataset(frame, kind), l.n_faces, 1, false});
     else if (kind == FieldKind::body_id)
       s += attribute(l, info, "Cell", {kFaceBodyIdDataset, l.n_faces, 1, true});

@@ -132,7 +132,7 @@ TEST_CASE("ccm study scene | ccm run - --fields: the study point's fields, as fr
   test::check_datasets(piped / fields::kXdmfFile, c);
   REQUIRE(c.frames.size() == 31);  // every 1 ms output sample, 0 ... 30 ms
   CHECK(c.frames[0].grids == std::vector<std::string>{"bodies", "surfaces"});
-  CHECK(c.frames[0].attributes.size() == 7);  // every field
+  CHECK(c.frames[0].attributes.size() == 9);  // every field
   // Same scene, same run: the same displacements, bit for bit.
   for (int k : {10, 30}) {
     const std::string u = fields::frame_dataset(k, FieldKind::displacement);
@@ -188,5 +188,5 @@ TEST_CASE("ccm rig run --fields: the rig's fields next to its other files",
   test::check_datasets(out / fields::kXdmfFile, c);
   REQUIRE(c.frames.size() == 9);  // 0, 2.5, ..., 17.5 ms and the end, 19 ms
   CHECK(c.frames.back().time == Approx(0.019).epsilon(1e-9));
-  CHECK(c.frames[0].attributes.size() == 7);
+  CHECK(c.frames[0].attributes.size() == 9);
 }
