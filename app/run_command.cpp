@@ -90,6 +90,7 @@ struct RunRecord {
   std::string started;
   std::string finished;
   int exit_code = 0;
+  int field_frames = 0;  // frames in fields.xdmf (0: no field output)
 };
 
 std::string instability_text(const Instability& i) {
@@ -131,6 +132,9 @@ void print_summary_table(const RunRecord& r) {
   if (s.verdict == Verdict::unstable)
     fmt::print("  {:<15}{}\n", "instability", instability_text(s.instability));
   fmt::print("  {:<15}{}\n", "results", r.args.out.string());
+  if (r.field_frames > 0)
+    fmt::print("  {:<15}{} ({} frames; docs/fields.md)\n", "fields",
+               (r.args.out / fields::kXdmfFile).string(), r.field_frames);
 }
 
 std::string summary_toml(const RunRecord& r) {
@@ -140,9 +144,10 @@ std::string summary_toml(const RunRecord& r) {
   std::string t = "# ccm run summary\n";
   t += fmt::format("ccm_version = {}\n", toml_string(version_string()));
   const bool from_stdin = scene.source == kStdinSceneName;
-  t += fmt::format("scene = {}\n",
-                   toml_string(from_stdin ? scene.source.string()
-                                          : fs::absolute(scene.source).lexically_normal().string()));
+  t +=
+      fmt::format("scene = {}\n",
+                  toml_string(from_stdin ? scene.source.string()
+                                         : fs::absolute(scene.source).lexically_normal().string()));
   t += fmt::format("scene_fnv1a64 = {}\n", toml_string(study::fnv1a64(r.prepared.text)));
   t += fmt::format("title = {}\n", toml_string(scene.title));
   t += fmt::format("started = {}\nfinished = {}\n", r.started, r.finished);
@@ -180,6 +185,9 @@ std::string summary_toml(const RunRecord& r) {
   if (contact.model)
     t += fmt::format("description = {}\nwork = {}  # J, of the contact on the bodies\n",
                      toml_string(contact.description), toml_float(contact.model->work()));
+  if (r.field_frames > 0)
+    t += fmt::format("\n[fields]\nfile = {}\nframes = {}\n", toml_string(fields::kXdmfFile),
+                     r.field_frames);
   for (const Body& b : mesh.bodies)
     t += fmt::format("\n[[bodies]]\nname = {}\nnodes = {}\nelements = {}\n", toml_string(b.name),
                      b.n_nodes, b.n_elements);
@@ -219,7 +227,8 @@ int run(const RunArgs& args) {
   const int code =
       summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
   write_history_csv(args.out / "history.csv", history);
-  const RunRecord record{args, p, summary, started, utc_timestamp(SystemClock::now()), code};
+  const RunRecord record{
+      args, p, summary, started, utc_timestamp(SystemClock::now()), code, fields.frames_written()};
   write_atomic(args.out / "summary.toml", summary_toml(record));
   if (!args.quiet) print_summary_table(record);
   return code;

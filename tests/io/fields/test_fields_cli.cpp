@@ -143,6 +143,7 @@ TEST_CASE("ccm study scene | ccm run - --fields: the study point's fields, as fr
   std::stringstream text;
   text << summary.rdbuf();
   CHECK_THAT(text.str(), Catch::Contains("scene = \"<stdin>\""));
+  CHECK_THAT(text.str(), Catch::Contains("\n[fields]\nfile = \"fields.xdmf\"\nframes = 31\n"));
 }
 
 TEST_CASE("ccm rig run --fields: refused without --out or with an interval off the samples",
