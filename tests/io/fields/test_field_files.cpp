@@ -119,9 +119,16 @@ TEST_CASE("Field files: valid XDMF 3, every dataset present with its shape, disp
     return test::read_h5_doubles(tmp.path / kH5File, frame_dataset(k, FieldKind::contact_pressure));
   };
   for (double p : pressure(0)) CHECK(p == 0.0);
-  double p_max = 0.0;
-  for (double p : pressure(6)) p_max = std::max(p_max, p);
+  double p_max = 0.0, p_min = 0.0;
+  for (double p : pressure(6)) {
+    p_max = std::max(p_max, p);
+    p_min = std::min(p_min, p);
+  }
   CHECK(p_max > 0.0);
+  // The ends push: the largest pressure is compressive. The rim's side faces share the rim
+  // nodes' forces, which are not exactly along x there (edge contacts, Poisson bulge): they read
+  // a small pull, 3 % of the peak here (docs/fields.md, limits). Bound it at 10 %.
+  CHECK(p_min >= -0.1 * p_max);
 }
 
 TEST_CASE("Field files: the last sample is a frame, fields not asked are not written", "[fields]") {
