@@ -11,7 +11,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev libnlopt-dev gnuplot-nox nlohmann-json3-dev
   chromium
   libxml2-dev                  # tests: the field output's XDMF is parsed with libxml2
-  python3-paraview xvfb xauth  # tests: ParaView opens the field output, renders it headless
+  python3-paraview xvfb        # tests: ParaView opens the field output, renders it headless
 )
 
 missing=()

@@ -1,8 +1,9 @@
 // ParaView opens the field output (docs/fields.md): the example ball-on-plate scene is run with
-// fields, then pvbatch (python3-paraview) under a virtual X server (xvfb-run: Debian's ParaView
-// renders through X11, it has no EGL or OSMesa build) reads it with its XDMF 3 reader
+// fields, then pvbatch (python3-paraview) under a virtual X server of its own
+// (tests/io/fields/headless.sh: Debian's ParaView renders through X11, it has no EGL or OSMesa
+// build) reads it with its XDMF 3 reader
 // (tests/io/fields/paraview_field.py), and what it read is compared with the HDF5 file, exactly,
-// and renders one screenshot. Fails, never skips, when pvbatch or xvfb-run is missing
+// and renders one screenshot. Fails, never skips, when pvbatch or Xvfb is missing
 // (scripts/install-deps.sh installs them). With CCM_UPDATE_DOC_IMAGES=1 in the environment the
 // screenshot is also copied to docs/images/paraview-field.png (the README's figure).
 #include <fmt/format.h>
@@ -61,8 +62,8 @@ using namespace paraview_test;
 
 TEST_CASE("ParaView opens the field output, reads the values ccm wrote, renders it headless",
           "[fields][paraview][heavy]") {
-  REQUIRE(have("pvbatch"));   // python3-paraview
-  REQUIRE(have("xvfb-run"));  // xvfb
+  REQUIRE(have("pvbatch"));  // python3-paraview
+  REQUIRE(have("Xvfb"));     // xvfb
   test::TempDir tmp;
   const fs::path scene = tmp.write("ball.toml", example_with_fields());
   const fs::path out = tmp.path / "out", png = tmp.path / "paraview-field.png";
@@ -71,14 +72,15 @@ TEST_CASE("ParaView opens the field output, reads the values ccm wrote, renders 
   const fs::path xdmf = out / fields::kXdmfFile, h5 = out / fields::kH5File;
   const int frame = 3;
   const fs::path log = tmp.path / "pvbatch.txt";
+  const fs::path here = fs::path(CCM_SOURCE_DIR) / "tests" / "io" / "fields";
   const std::string pvbatch = fmt::format(
-      "xvfb-run -a -s '-screen 0 1280x1024x24' pvbatch '{}' '{}' {} '{}' > '{}' 2>&1",
-      (fs::path(CCM_SOURCE_DIR) / "tests" / "io" / "fields" / "paraview_field.py").string(),
-      xdmf.string(), frame, png.string(), log.string());
-  // Once more if the first attempt fails: on a loaded machine the virtual X server has been seen
-  // to refuse pvbatch's first connection ("bad X server connection").
-  int status = system_status(pvbatch);
-  if (status != 0) status = system_status(pvbatch);
+      "'{}' pvbatch '{}' '{}' {} '{}' > '{}' 2>&1", (here / "headless.sh").string(),
+      (here / "paraview_field.py").string(), xdmf.string(), frame, png.string(), log.string());
+  // Up to three attempts, each with a fresh X server: on the shared, loaded build machine about
+  // one pvbatch in three started at the same moment failed to open its (running, ready) display
+  // ("bad X server connection"); the cause was not found. A missing tool still fails at once.
+  int status = -1;
+  for (int attempt = 0; attempt < 3 && status != 0; ++attempt) status = system_status(pvbatch);
   const std::string printed = read_text(log);
   INFO(printed);
   REQUIRE(status == 0);
