@@ -62,12 +62,17 @@ int main(int argc, char** argv) {
 
   ccm::RunArgs args;
   CLI::App* run = app.add_subcommand("run", "Run a scene file and write its results into a folder");
-  run->add_option("SCENE", args.scene, "Scene file (TOML; see docs/scene-file.md)")->required();
+  run->add_option("SCENE", args.scene,
+                  "Scene file (TOML; see docs/scene-file.md); - reads it from stdin")
+      ->required();
   run->add_option("--out,-o", args.out,
                   "Output folder for history.csv, summary.toml and scene.toml (created only "
                   "once the scene has been read and meshed)")
       ->required();
   run->add_flag("--quiet,-q", args.quiet, "No progress line and no summary table");
+  run->add_flag("--fields", args.fields,
+                "Write every field (fields.xdmf + fields.h5 for ParaView, docs/fields.md) at the "
+                "scene's field_interval, whatever its [output] fields says");
   run->footer(
       "Exit codes: 0 completed, 1 internal error, 2 bad input (nothing written), 3 unstable "
       "(results up to the instability written).");
@@ -142,6 +147,12 @@ int main(int argc, char** argv) {
   CLI::App* rig_run = rig->add_subcommand(
       "run", "Simulate a case, compare it with its measured trials, store and print the result");
   add_rig_options(rig_run, rig_run_args);
+  rig_run->add_flag("--fields", rig_run_args.fields,
+                    "Also write every field into --out (fields.xdmf + fields.h5 for ParaView, "
+                    "docs/fields.md)");
+  rig_run->add_option("--field-interval", rig_run_args.field_interval,
+                      "Time between field frames [s]; a whole multiple of the case's output "
+                      "interval; default 10 output intervals");
   rig_run->footer(
       "Exit codes: 0 completed, 1 internal error, 2 bad input (nothing written), 3 unstable "
       "(results up to the instability stored and written).");

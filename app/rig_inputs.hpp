@@ -30,7 +30,13 @@ struct RigCommonArgs {
   std::optional<std::filesystem::path> out;
   std::optional<std::filesystem::path> db;
   bool quiet = false;
+  // `ccm rig run --fields [--field-interval S]`: every field into --out (docs/fields.md), a
+  // frame every field_interval (default kRigFieldEvery output samples).
+  bool fields = false;
+  std::optional<double> field_interval;  // s
 };
+
+inline constexpr int kRigFieldEvery = 10;
 
 inline constexpr int kDefaultTrial = 2;
 

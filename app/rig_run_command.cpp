@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "engine/mesh/gmsh_mesher.hpp"
+#include "engine/observe/field_catalog.hpp"
 #include "rig_models/core/rig_error.hpp"
 #include "app/rig_command_errors.hpp"
 #include "app/rig_commands.hpp"
@@ -14,8 +15,22 @@
 namespace ccm {
 namespace {
 
+// --fields writes into --out; --field-interval is a whole multiple of the case's output interval.
+void check_field_args(const RigCommonArgs& args, const RigInputs& in) {
+  if (args.field_interval && !args.fields)
+    throw std::invalid_argument("--field-interval applies only with --fields");
+  if (!args.fields) return;
+  if (!args.out) throw std::invalid_argument("--fields writes into the output folder: give --out DIR");
+  if (!args.field_interval) return;
+  const double output_interval = in.cases.simulation.output_interval.value;
+  const std::string problem = field_interval_problem(*args.field_interval, output_interval);
+  if (!problem.empty())
+    throw std::invalid_argument(fmt::format("--field-interval {}: {}", *args.field_interval, problem));
+}
+
 int run(const RigCommonArgs& args) {
   const RigInputs in = read_rig_inputs(args);
+  check_field_args(args, in);
   if (in.db.has_parent_path()) std::filesystem::create_directories(in.db.parent_path());
   db::RigStore store(in.db);
   const RigRunOutcome o = run_rig_once(in, args, in.parameters, in.rig_case->code);

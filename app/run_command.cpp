@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <iostream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -17,6 +19,7 @@
 #include "config/text_file.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
+#include "io/fields/field_recorder.hpp"
 #include "records/content_hash.hpp"
 #include "records/provenance/timestamp.hpp"
 #include "records/provenance/version.hpp"
@@ -55,9 +58,22 @@ void check_out_dir(const fs::path& out) {
     throw UsageError(fmt::format("--out {}: exists and is not a directory", out.string()));
 }
 
+// The scene's text and the name it goes by: a file, or stdin for "-" (`ccm study scene ... |
+// ccm run - --out DIR`; a relative mesh path is then taken from the working directory).
+fs::path read_scene(const RunArgs& args, std::string& text) {
+  if (args.scene != "-") {
+    text = read_config_text(args.scene);
+    return args.scene;
+  }
+  text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+  if (std::cin.bad()) throw UsageError("cannot read the scene from stdin");
+  return kStdinSceneName;
+}
+
 void prepare(const RunArgs& args, Prepared& p) {
-  p.text = read_config_text(args.scene);
-  p.scene = parse_scene(p.text, args.scene);
+  const fs::path source = read_scene(args, p.text);
+  p.scene = parse_scene(p.text, source);
+  if (args.fields) p.scene.output.fields = fields::all_fields();
   for (const std::string& w : p.scene.warnings) fmt::print(stderr, "ccm: warning: {}\n", w);
   check_out_dir(args.out);
   p.model = build_model(p.scene);
@@ -75,6 +91,7 @@ struct RunRecord {
   std::string started;
   std::string finished;
   int exit_code = 0;
+  int field_frames = 0;  // frames in fields.xdmf (0: no field output)
 };
 
 std::string instability_text(const Instability& i) {
@@ -117,6 +134,9 @@ void print_summary_table(const RunRecord& r) {
   if (s.verdict == Verdict::unstable)
     fmt::print("  {:<15}{}\n", "instability", instability_text(s.instability));
   fmt::print("  {:<15}{}\n", "results", r.args.out.string());
+  if (r.field_frames > 0)
+    fmt::print("  {:<15}{} ({} frames; docs/fields.md)\n", "fields",
+               (r.args.out / fields::kXdmfFile).string(), r.field_frames);
 }
 
 std::string summary_toml(const RunRecord& r) {
@@ -125,8 +145,11 @@ std::string summary_toml(const RunRecord& r) {
   const ModelMesh& mesh = r.prepared.model.mesh;
   std::string t = "# ccm run summary\n";
   t += fmt::format("ccm_version = {}\n", toml_string(version_string()));
-  t += fmt::format("scene = {}\n",
-                   toml_string(fs::absolute(scene.source).lexically_normal().string()));
+  const bool from_stdin = scene.source == kStdinSceneName;
+  t +=
+      fmt::format("scene = {}\n",
+                  toml_string(from_stdin ? scene.source.string()
+                                         : fs::absolute(scene.source).lexically_normal().string()));
   t += fmt::format("scene_fnv1a64 = {}\n", toml_string(study::fnv1a64(r.prepared.text)));
   t += fmt::format("title = {}\n", toml_string(scene.title));
   t += fmt::format("started = {}\nfinished = {}\n", r.started, r.finished);
@@ -164,6 +187,9 @@ std::string summary_toml(const RunRecord& r) {
   if (contact.model)
     t += fmt::format("description = {}\nwork = {}  # J, of the contact on the bodies\n",
                      toml_string(contact.description), toml_float(contact.model->ledger().work));
+  if (r.field_frames > 0)
+    t += fmt::format("\n[fields]\nfile = {}\nframes = {}\n", toml_string(fields::kXdmfFile),
+                     r.field_frames);
   for (const Body& b : mesh.bodies)
     t += fmt::format("\n[[bodies]]\nname = {}\nnodes = {}\nelements = {}\n", toml_string(b.name),
                      b.n_nodes, b.n_elements);
@@ -173,13 +199,15 @@ std::string summary_toml(const RunRecord& r) {
 // ---------------------------------------------------------------------------------------------
 // The command
 
-RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history) {
+RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history,
+                     fields::FieldRecorder& fields) {
   RunOptions options;
   options.time = time_control(p.scene.time);
   options.monitor = p.scene.monitor;
   options.history = &history;
   options.contact = p.contact.model.get();
   if (p.contact.history) history.add_source(*p.contact.history);
+  fields.attach(options);
   ProgressLine progress;
   options.progress = progress.on_terminal(args.quiet);
   const RunSummary summary = run_explicit(p.model, options);
@@ -194,11 +222,15 @@ int run(const RunArgs& args) {
   fs::create_directories(args.out);
   write_atomic(args.out / "scene.toml", p.text);
   HistoryRecorder history(p.model.mesh, p.output);
-  const RunSummary summary = run_scene(args, p, history);
+  const OutputSpec& out = p.scene.output;
+  fields::FieldRecorder fields(p.model, {out.fields, out.field_interval, p.scene.title}, args.out);
+  const RunSummary summary = run_scene(args, p, history, fields);
+  fields.finish();
   const int code =
       summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
   write_history_csv(args.out / "history.csv", history);
-  const RunRecord record{args, p, summary, started, utc_timestamp(SystemClock::now()), code};
+  const RunRecord record{
+      args, p, summary, started, utc_timestamp(SystemClock::now()), code, fields.frames_written()};
   write_atomic(args.out / "summary.toml", summary_toml(record));
   if (!args.quiet) print_summary_table(record);
   return code;

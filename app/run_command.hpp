@@ -15,10 +15,14 @@ constexpr int unstable = 3;
 }  // namespace exit_code
 
 struct RunArgs {
-  std::filesystem::path scene;
+  std::filesystem::path scene;  // "-": read the scene from stdin (relative paths: the cwd's)
   std::filesystem::path out;
-  bool quiet = false;  // no progress line and no summary table
+  bool quiet = false;   // no progress line and no summary table
+  bool fields = false;  // write every field (docs/fields.md), whatever [output] fields says
 };
+
+// The name a scene read from stdin goes by in messages.
+inline constexpr const char* kStdinSceneName = "<stdin>";
 
 // Runs the scene and returns the exit code. Messages go to stderr as "ccm: error: ...";
 // the summary table goes to stdout.

@@ -12,4 +12,5 @@ find_package(SQLite3 REQUIRED)
 find_package(HDF5 REQUIRED COMPONENTS C)
 if(CCM_BUILD_TESTS)
   find_package(Catch2 2 REQUIRED)
+  find_package(LibXml2 REQUIRED)  # libxml2-dev: the field tests parse the XDMF output with it
 endif()

@@ -10,6 +10,8 @@ packages=(
   libfmt-dev catch2 libgmsh-dev
   libcli11-dev libtomlplusplus-dev libnlopt-dev gnuplot-nox nlohmann-json3-dev
   chromium
+  libxml2-dev                  # tests: the field output's XDMF is parsed with libxml2
+  python3-paraview xvfb        # tests: ParaView opens the field output, renders it headless
 )
 
 missing=()

@@ -174,6 +174,7 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
     s.impulse.push_back(probe.impulse());
     s.pin_angle.push_back(pin_joint ? pin_joint->angle() : 0.0);
   };
+  if (req.instrument) req.instrument(rig.model, opt);
   out.summary = run_explicit(rig.model, opt);
   out.model = facts_of(rig, table, pin);
   out.raw = raw_histories(s, rig.track);

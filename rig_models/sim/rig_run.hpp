@@ -5,6 +5,7 @@
 // the measured timestamps when a trial drives the run.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct RigRunRequest {
   double mesh_scale = 1.0;
   RunParameters parameters;
   ProgressFn progress;  // engine progress, simulation time from the window's start
+  // Optional: called once the model is built, just before the run, with the options the run
+  // will use (field output wraps the contact model and chains on_sample there).
+  std::function<void(const Model& model, RunOptions& options)> instrument;
 };
 
 // The model as it was run, for tables and the store.

@@ -23,6 +23,7 @@
 #include "engine/material/material.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
 #include "engine/monitor/stability_monitor.hpp"
+#include "engine/observe/field_catalog.hpp"
 
 namespace ccm {
 
@@ -119,6 +120,10 @@ struct OutputSpec {
   bool internal_energy = true;
   bool displacement = true;
   std::vector<TrackSpec> track;
+  // Field files for ParaView (docs/fields.md): empty writes none. field_interval [s] is a whole
+  // multiple of time.output_interval; the parser sets it to output_interval when not given.
+  std::vector<FieldKind> fields;
+  double field_interval = 0.0;
 };
 
 // [contact] (docs/scene-file.md).

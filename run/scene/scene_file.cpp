@@ -416,16 +416,54 @@ TrackSpec parse_track(const Table& t, std::map<std::string, std::string>& names)
   return s;
 }
 
+// fields = ["displacement", ...]: names of engine/observe/field_catalog.hpp, each once.
+std::vector<FieldKind> parse_field_list(const Table& t) {
+  const toml::node* n = t.node("fields");
+  const toml::array* a = n->as_array();
+  const std::string path = t.key_path("fields");
+  if (!a) t.wrong_type(*n, path, "an array of field names");
+  static constexpr auto kNames = field_names();
+  std::vector<FieldKind> fields;
+  for (size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = (*a)[i];
+    const std::string item = fmt::format("{}[{}]", path, i);
+    if (!e.is_string()) t.wrong_type(e, item, "a string");
+    const std::string& name = e.as_string()->get();
+    const std::optional<FieldKind> kind = parse_field_name(name);
+    if (!kind) t.fail_at(e, item, unknown_value_problem(name, kNames));
+    if (std::find(fields.begin(), fields.end(), *kind) != fields.end())
+      t.fail_at(e, item, fmt::format("field '{}' is listed twice", name));
+    fields.push_back(*kind);
+  }
+  return fields;
+}
+
+// field_interval: > 0 and a whole multiple of the output interval, so that every field frame
+// falls on an output sample (the step lands exactly on those).
+double parse_field_interval(const Table& t, double output_interval) {
+  if (!t.has("field_interval")) return output_interval;
+  const double v = positive(t, "field_interval", t.need<double>("field_interval"));
+  const std::string problem = field_interval_problem(v, output_interval);
+  if (!problem.empty()) t.fail("field_interval", problem);
+  return v;
+}
+
 void parse_output(const Table& root, Scene& scene) {
+  OutputSpec& o = scene.output;
+  o.field_interval = scene.time.output_interval;
   const auto t = root.table("output");
   if (!t) return;
-  t->allow_only({"kinetic_energy", "internal_energy", "displacement", "track"});
-  OutputSpec& o = scene.output;
+  t->allow_only({"kinetic_energy", "internal_energy", "displacement", "track", "fields",
+                 "field_interval"});
   o.kinetic_energy = t->get_or("kinetic_energy", o.kinetic_energy);
   o.internal_energy = t->get_or("internal_energy", o.internal_energy);
   o.displacement = t->get_or("displacement", o.displacement);
   std::map<std::string, std::string> names;
   for (const Table& track : t->tables("track")) o.track.push_back(parse_track(track, names));
+  if (t->has("fields")) o.fields = parse_field_list(*t);
+  if (t->has("field_interval") && !t->has("fields"))
+    t->fail("field_interval", "applies only with fields = [...]");
+  o.field_interval = parse_field_interval(*t, scene.time.output_interval);
 }
 
 // ---------------------------------------------------------------------------------------------
