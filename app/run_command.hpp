@@ -18,7 +18,12 @@ struct RunArgs {
   std::filesystem::path scene;
   std::filesystem::path out;
   bool quiet = false;  // no progress line and no summary table
+  int threads = 0;     // 0: CCM_THREADS, else the cores available (resolve_threads)
 };
+
+// The thread count of a run: `requested` when positive, else CCM_THREADS when set, else
+// `automatic`. Throws std::invalid_argument for a negative request or a bad CCM_THREADS.
+int resolve_threads(int requested, int automatic);
 
 // Runs the scene and returns the exit code. Messages go to stderr as "ccm: error: ...";
 // the summary table goes to stdout.

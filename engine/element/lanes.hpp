@@ -10,10 +10,13 @@ namespace ccm {
 
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
 
-// glibc's libmvec vector log (AVX2 variant, < 4 ulp). math.h declares it only under
+// glibc's libmvec vector log (AVX-512 or AVX2 variant, < 4 ulp). math.h declares it only under
 // -ffast-math, which would also drop the NaN semantics the stability monitor relies on, so it
 // is declared here under its ABI name. Results repeat exactly on the same machine.
-#if defined(__x86_64__) && defined(__AVX2__) && defined(__GLIBC__)
+#if defined(__x86_64__) && defined(__AVX512F__) && defined(__GLIBC__)
+extern "C" Lanes _ZGVeN8v_log(Lanes) noexcept;  // the AVX-512 variant (8 lanes)
+inline Lanes vector_log(Lanes v) { return _ZGVeN8v_log(v); }
+#elif defined(__x86_64__) && defined(__AVX2__) && defined(__GLIBC__)
 extern "C" Lanes _ZGVdN4v_log(Lanes) noexcept;
 inline Lanes vector_log(Lanes v) { return _ZGVdN4v_log(v); }
 #else
