@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "engine/element/element_pack.hpp"
+
 namespace ccm {
 namespace {
 
@@ -34,6 +36,22 @@ bool slabs_separated(const std::vector<Tet>& tets, const BlockSlabs& s, size_t n
   return true;
 }
 
+// Interleaves each full group of kLanes x kLaneStride elements so that lane l of the group's
+// pack k holds its element l kLaneStride + k: the lanes of a pack are elements kLaneStride apart
+// in the mesh order, which rarely share a node, so the scatter's read-modify-writes of one pack
+// do not wait on each other; each lane still walks through the mesh in order.
+void interleave_lanes(std::span<int> elements) {
+  constexpr int kGroup = kLanes * kLaneStride;
+  std::vector<int> group(kGroup);
+  for (size_t g = 0; g + kGroup <= elements.size(); g += kGroup) {
+    std::copy_n(elements.begin() + static_cast<long>(g), kGroup, group.begin());
+    for (int k = 0; k < kLaneStride; ++k)
+      for (int l = 0; l < kLanes; ++l)
+        elements[g + static_cast<size_t>(k * kLanes + l)] =
+            group[static_cast<size_t>(l * kLaneStride + k)];
+  }
+}
+
 }  // namespace
 
 BlockSlabs cut_into_slabs(std::span<const Vec3> X, const std::vector<Tet>& tets, int first,
@@ -59,9 +77,12 @@ BlockSlabs cut_into_slabs(std::span<const Vec3> X, const std::vector<Tet>& tets,
     for (int k = 0; k <= n_slabs; ++k)
       s.begin.push_back(static_cast<int>(static_cast<long>(count) * k / n_slabs));
     // Inside a slab the mesh's own order, which keeps neighbouring elements close in memory.
-    for (int k = 0; k < n_slabs; ++k)
-      std::sort(s.elements.begin() + s.begin[static_cast<size_t>(k)],
-                s.elements.begin() + s.begin[static_cast<size_t>(k) + 1]);
+    for (int k = 0; k < n_slabs; ++k) {
+      const auto slab_begin = s.elements.begin() + s.begin[static_cast<size_t>(k)];
+      const auto slab_end = s.elements.begin() + s.begin[static_cast<size_t>(k) + 1];
+      std::sort(slab_begin, slab_end);
+      if (kLaneStride > 1) interleave_lanes(std::span<int>(slab_begin, slab_end));
+    }
     if (n_slabs <= 2 || slabs_separated(tets, s, X.size())) return s;
   }
 }

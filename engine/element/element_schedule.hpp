@@ -7,7 +7,8 @@
 // slabs of every block, phase 1 the odd ones: the slabs of one phase share no node, so they
 // scatter into the nodal forces concurrently, and every node receives its contributions in one
 // fixed order (its even slab's elements, then its odd slab's, each in slab order) whatever the
-// number of threads.
+// number of threads. Inside a slab the elements keep the mesh's order, interleaved so that the
+// lanes of a pack are kLaneStride elements apart (they seldom share a node).
 #pragma once
 
 #include <span>
@@ -20,6 +21,7 @@ namespace ccm {
 
 inline constexpr int kMinSlabElements = 512;  // a smaller slab is not worth a thread
 inline constexpr int kMaxSlabs = 32;          // per block: 16 per phase, balanced up to 16 threads
+inline constexpr int kLaneStride = 16;        // mesh-order distance of a pack's lanes
 
 struct Slab {
   int block = 0;

@@ -36,14 +36,11 @@ struct PackForces {
 // Edges e[c][r] = x_{c+1,r} - x_{0,r} (the columns of Ds), gathered from x (3 n doubles).
 template <class Pack>
 CCM_INLINE void gather_edges(const Pack& p, const double* x, Lanes (&e)[3][3]) {
-  for (int r = 0; r < 3; ++r) {
-    Lanes x0;
-    for (int l = 0; l < kLanes; ++l) x0[l] = x[3 * p.node[0][l] + r];
-    for (int c = 0; c < 3; ++c) {
-      Lanes xc;
-      for (int l = 0; l < kLanes; ++l) xc[l] = x[3 * p.node[c + 1][l] + r];
-      e[c][r] = xc - x0;
-    }
+  Lanes x0[3];
+  gather_xyz(x, p.node[0], x0[0], x0[1], x0[2]);
+  for (int c = 0; c < 3; ++c) {
+    gather_xyz(x, p.node[c + 1], e[c][0], e[c][1], e[c][2]);
+    for (int r = 0; r < 3; ++r) e[c][r] -= x0[r];
   }
 }
 

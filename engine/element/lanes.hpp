@@ -1,5 +1,8 @@
-// A vector of kLanes doubles (GCC vector extension: one AVX2 register) and the log the
-// Neo-Hookean kernel needs on it.
+// A vector of kLanes doubles (GCC vector extension: one SIMD register), the log the Neo-Hookean
+// kernel needs on it, and the gather of a nodal array of Vec3 (x y z, packed) into lanes.
+// (Gathers and scatters by masked 256-bit loads and stores and an 8 x 4 transpose were measured
+// slower here than these scalar moves: the scatter's masked stores do not forward to the next
+// read of the same node.)
 #pragma once
 
 #include <cmath>
@@ -25,5 +28,18 @@ inline Lanes vector_log(Lanes v) {
   return v;
 }
 #endif
+
+// x[l] = a[3 n_l], y[l] = a[3 n_l + 1], z[l] = a[3 n_l + 2] for the nodes n_l of the lanes.
+inline void gather_xyz(const double* a, const int (&n)[kLanes], Lanes& x, Lanes& y, Lanes& z) {
+  Lanes gx{}, gy{}, gz{};
+  for (int l = 0; l < kLanes; ++l) {
+    gx[l] = a[3 * n[l]];
+    gy[l] = a[3 * n[l] + 1];
+    gz[l] = a[3 * n[l] + 2];
+  }
+  x = gx;
+  y = gy;
+  z = gz;
+}
 
 }  // namespace ccm

@@ -7,7 +7,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -70,7 +69,8 @@ TEST_CASE("A bad thread count is refused", "[threads][cli]") {
   const int status = std::system(command.c_str());
   CHECK(WEXITSTATUS(status) == 2);
   std::ifstream in(err);
-  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string message, line;
+  while (std::getline(in, line)) message += line + "\n";
   CHECK_THAT(message, Catch::Contains("--threads -1"));
   CHECK_FALSE(std::filesystem::exists(out));
   std::filesystem::remove(err);
