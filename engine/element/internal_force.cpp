@@ -315,6 +315,7 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
   const double* xp = x.data()->data();
   double* fp = f.data()->data();
   const bool with_energy = !block_energy.empty();
+  threads = std::max(1, threads);
   const ElementSchedule& schedule = elements.schedule;
   std::vector<SlabTotals> totals(schedule.slabs.size());
   // The slabs of one phase share no node; the barrier at the end of each `omp for` keeps the

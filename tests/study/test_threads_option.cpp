@@ -39,7 +39,8 @@ class ThreadsVariable {
 
 }  // namespace
 
-TEST_CASE("--threads, then CCM_THREADS, then the automatic count", "[threads][cli]") {
+TEST_CASE("The thread count: --threads, then CCM_THREADS, then the automatic count",
+          "[threads][cli]") {
   {
     const ThreadsVariable unset(nullptr);
     CHECK(resolve_threads(3, 2) == 3);
