@@ -63,6 +63,14 @@ double cpu_seconds(int threads) {
 
 // Node loops shorter than this stay on one thread (a parallel region costs microseconds).
 constexpr int kMinParallelNodes = 2048;
+// A model of fewer elements runs on one thread whatever was asked: its step lasts tens of
+// microseconds, of the order of the cost of the step's parallel regions and barriers.
+constexpr int kMinParallelElements = 8192;
+
+int threads_for(const Model& model, const RunOptions& options) {
+  const int requested = options.threads > 0 ? options.threads : default_threads();
+  return model.mesh.n_elements() >= kMinParallelElements ? requested : 1;
+}
 
 struct StepChoice {
   double dt;
@@ -99,7 +107,7 @@ class CentralDifference {
   CentralDifference(const Model& model, const RunOptions& options)
       : model_(model),
         opt_(options),
-        threads_(options.threads > 0 ? options.threads : default_threads()),
+        threads_(threads_for(model, options)),
         load_work_(model.bcs),
         body_energy_(model.mesh.bodies.size(), 0.0) {}
 

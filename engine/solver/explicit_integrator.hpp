@@ -99,7 +99,8 @@ struct RunOptions {
   double progress_seconds = 0.5;
   // Threads for the structure's work (internal forces, stable step, nodal updates, energy sums);
   // 0: default_threads() (thread_count.hpp). The result is bitwise the same for any count; the
-  // contact model's phases and the boundary conditions run on one thread.
+  // contact model's phases and the boundary conditions run on one thread, and so does a model
+  // of fewer than 8,192 elements (RunSummary::threads says what was used).
   int threads = 0;
 };
 
