@@ -73,6 +73,9 @@ int main(int argc, char** argv) {
   run->add_flag("--fields", args.fields,
                 "Write every field (fields.xdmf + fields.h5 for ParaView, docs/fields.md) at the "
                 "scene's field_interval, whatever its [output] fields says");
+  run->add_option("--threads", args.threads,
+                  "Threads for the structure (0, the default: $CCM_THREADS, else the cores "
+                  "available); the result is bitwise the same for any count");
   run->footer(
       "Exit codes: 0 completed, 1 internal error, 2 bad input (nothing written), 3 unstable "
       "(results up to the instability written).");
@@ -94,6 +97,9 @@ int main(int argc, char** argv) {
                    "Local worker processes (under mpirun each rank is one worker)")
       ->default_val(1);
   study_run->add_flag("--quiet,-q", study_run_args.quiet, "No progress line and no tables");
+  study_run->add_option("--threads", study_run_args.threads,
+                        "Threads per run (0, the default: $CCM_THREADS, else the cores available "
+                        "divided among the --jobs workers; 1 per MPI rank)");
   study_run->footer(
       "Resumes where a killed study stopped. Exit codes: 0 done, 1 some run failed or internal "
       "error, 2 bad input.");

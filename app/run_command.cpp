@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,6 +21,7 @@
 #include "config/text_file.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
+#include "engine/solver/thread_count.hpp"
 #include "io/fields/field_recorder.hpp"
 #include "records/content_hash.hpp"
 #include "records/provenance/timestamp.hpp"
@@ -71,6 +74,11 @@ fs::path read_scene(const RunArgs& args, std::string& text) {
 }
 
 void prepare(const RunArgs& args, Prepared& p) {
+  try {
+    set_default_threads(resolve_threads(args.threads, available_cores()));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   const fs::path source = read_scene(args, p.text);
   p.scene = parse_scene(p.text, source);
   if (args.fields) p.scene.output.fields = fields::all_fields();
@@ -169,8 +177,10 @@ std::string summary_toml(const RunRecord& r) {
   t += fmt::format("wall_seconds = {}\nns_per_element_step = {}\n", toml_float(s.wall_seconds),
                    toml_float(s.ns_per_element_step));
   t += fmt::format(
-      "step_wall_seconds = {}\nstep_cpu_seconds = {}  # thread CPU time of the step loop\n",
+      "step_wall_seconds = {}\nstep_cpu_seconds = {}  # CPU time of the step loop, all its "
+      "threads\n",
       toml_float(s.step_wall_seconds), toml_float(s.step_cpu_seconds));
+  t += fmt::format("threads = {}  # the result does not depend on it\n", s.threads);
   t += fmt::format("energy_balance_error = {}  # largest relative error (0.01 = 1 %)\n",
                    toml_float(s.energy_balance_error));
   t += fmt::format(
@@ -242,6 +252,15 @@ void report(std::string_view kind, std::string_view message) {
 }
 
 }  // namespace
+
+int resolve_threads(int requested, int automatic) {
+  if (requested < 0)
+    throw std::invalid_argument(fmt::format(
+        "--threads {}: must be a positive number of threads (0: automatic)", requested));
+  if (requested > 0) return requested;
+  if (const std::optional<int> env = threads_from_environment()) return *env;
+  return std::max(1, automatic);
+}
 
 int run_command(const RunArgs& args) {
   try {

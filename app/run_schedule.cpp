@@ -77,4 +77,6 @@ SharedCounter::~SharedCounter() { munmap(memory_, sizeof(Counter)); }
 
 std::size_t SharedCounter::next() { return static_cast<Counter*>(memory_)->fetch_add(1); }
 
+int threads_per_job(int cores, int jobs) { return std::max(1, cores / std::max(1, jobs)); }
+
 }  // namespace ccm

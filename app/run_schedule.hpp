@@ -48,6 +48,10 @@ std::vector<std::size_t> longest_first(const std::vector<PlannedRun>& runs);
 std::vector<std::size_t> longest_first(const std::vector<PlannedRun>& runs,
                                        const std::vector<std::vector<std::size_t>>& groups);
 
+// Threads per run when `jobs` workers share `cores`: max(1, cores / jobs), so that the workers'
+// threads together fill the cores without oversubscribing them.
+int threads_per_job(int cores, int jobs);
+
 // A counter shared by forked worker processes (an anonymous shared mapping, created before the
 // fork): next() hands out 0, 1, 2, ... once each across all of them.
 class SharedCounter {

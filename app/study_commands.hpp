@@ -18,6 +18,7 @@ struct StudyRunArgs {
   std::filesystem::path db;
   int jobs = 1;        // local worker processes (without MPI)
   bool quiet = false;  // no progress line, no tables
+  int threads = 0;     // per run; 0: CCM_THREADS, else threads_per_job (run_schedule.hpp)
 };
 
 struct StudySceneArgs {

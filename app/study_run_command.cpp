@@ -33,6 +33,7 @@
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/point_metrics.hpp"
 #include "study/metrics/thesis_trends.hpp"
+#include "engine/solver/thread_count.hpp"
 
 namespace ccm {
 namespace {
@@ -299,6 +300,14 @@ int study_run_command(const StudyRunArgs& args) {
     study::RankContext ranks;
     if (args.jobs < 1) {
       fmt::print(stderr, "ccm: error: --jobs must be at least 1 (got {})\n", args.jobs);
+      return exit_code::bad_input;
+    }
+    try {  // each forked worker inherits it; MPI ranks fill the cores one per rank
+      const int automatic =
+          ranks.size() > 1 ? 1 : threads_per_job(available_cores(), args.jobs);
+      set_default_threads(resolve_threads(args.threads, automatic));
+    } catch (const std::invalid_argument& e) {
+      fmt::print(stderr, "ccm: error: {}\n", e.what());
       return exit_code::bad_input;
     }
     return study_run(args, ranks);

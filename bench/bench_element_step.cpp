@@ -1,13 +1,21 @@
-// Single-thread cost per element-step of the explicit engine on a structured box of
-// 201,600 tets (40 x 40 x 21 cells x 6): the internal-force kernel alone, and the whole step
-// (internal forces, stable-time-step estimate, predict and correct updates, monitor checks).
+// Cost per element-step of the explicit engine on a structured box of 201,600 tets
+// (40 x 40 x 21 cells x 6) without contact, on 1 and 2 threads (or the counts given): the
+// internal-force kernel alone, and the whole step (internal forces, stable-time-step estimate,
+// predict and correct updates, monitor checks and energy sums). Each figure is repeated; the
+// minimum and the median of the wall time are printed, the minimum CPU time per thread (which a
+// loaded machine inflates less), and the parallel efficiency t_1 / (N t_N) of the whole step.
+// The final positions and velocities of every thread count are compared bit for bit.
 //
-//   ./build/bench_element_step [--cells NX NY NZ] [--steps N]
+//   ./build/bench_element_step [--cells NX NY NZ] [--steps N] [--repeat R] [--threads 1,2]
+#include <time.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "engine/element/internal_force.hpp"
 #include "engine/mesh/structured_box.hpp"
@@ -20,7 +28,28 @@ namespace {
 struct Options {
   int nx = 40, ny = 40, nz = 21;
   int steps = 200;
+  int repeat = 5;
+  std::vector<int> threads{1, 2};
 };
+
+std::vector<int> parse_list(const char* text) {
+  std::vector<int> out;
+  for (const char* p = text; *p;) {
+    char* end = nullptr;
+    const long v = std::strtol(p, &end, 10);
+    if (end == p || v < 1) return {};
+    out.push_back(static_cast<int>(v));
+    p = *end == ',' ? end + 1 : end;
+  }
+  return out;
+}
+
+[[noreturn]] void usage(const char* argv0) {
+  std::fprintf(stderr,
+               "usage: %s [--cells NX NY NZ] [--steps N] [--repeat R] [--threads N1,N2,...]\n",
+               argv0);
+  std::exit(2);
+}
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -31,11 +60,16 @@ Options parse(int argc, char** argv) {
       o.nz = std::atoi(argv[++i]);
     } else if (!std::strcmp(argv[i], "--steps") && i + 1 < argc) {
       o.steps = std::atoi(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) {
+      o.repeat = std::atoi(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
+      o.threads = parse_list(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: %s [--cells NX NY NZ] [--steps N]\n", argv[0]);
-      std::exit(2);
+      usage(argv[0]);
     }
   }
+  if (o.nx < 1 || o.ny < 1 || o.nz < 1 || o.steps < 1 || o.repeat < 1 || o.threads.empty())
+    usage(argv[0]);
   return o;
 }
 
@@ -53,16 +87,65 @@ Model make_bench_model(const Options& o) {
   return model;
 }
 
-double time_kernel(const Model& model, int repeats) {
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+struct KernelTime {
+  double wall_ns, cpu_ns;  // per element-step; CPU time divided by the thread count
+};
+
+KernelTime time_kernel(const Model& model, int repeats, int threads) {
   std::vector<Vec3> f(model.mesh.X.size(), Vec3::Zero());
   std::vector<Vec3> x = model.mesh.X;
   for (size_t i = 0; i < x.size(); ++i) x[i] += 1e-3 * Vec3(x[i].y(), x[i].z(), x[i].x());
   double sink = 0.0;
+  const double c0 = process_cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
-  for (int r = 0; r < repeats; ++r) sink += add_internal_forces(model.elements, x, f).stable_dt;
+  for (int r = 0; r < repeats; ++r)
+    sink += add_internal_forces(model.elements, x, f, {}, threads).stable_dt;
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = process_cpu_seconds() - c0;
   if (sink < 0) std::puts("");
-  return 1e9 * s / (repeats * static_cast<double>(model.elements.n_elements()));
+  const double element_steps = repeats * static_cast<double>(model.elements.n_elements());
+  return {1e9 * s / element_steps, 1e9 * cpu / (threads * element_steps)};
+}
+
+struct StepRun {
+  RunSummary summary;
+  std::vector<Vec3> x, v;
+};
+
+StepRun time_steps(const Model& model, int steps, int threads) {
+  RunOptions run;
+  const double dt = 0.5 * reference_stable_dt(model.elements, model.mesh.X);
+  run.time.max_dt = dt;
+  run.time.end_time = steps * dt;
+  run.time.output_interval = 0.0;
+  run.threads = threads;
+  StepRun out;
+  run.on_sample = [&](const State& s) {
+    out.x = s.x;
+    out.v = s.v;
+  };
+  out.summary = run_explicit(model, run);
+  return out;
+}
+
+struct Stats {
+  double min, median;
+};
+
+Stats stats(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return {v.front(), n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2])};
+}
+
+bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
 }
 
 }  // namespace
@@ -71,22 +154,44 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   const Model model = make_bench_model(o);
   const int n_el = model.elements.n_elements();
-  std::printf("mesh: %d tets, %d nodes (structured box %d x %d x %d cells)\n", n_el,
-              model.mesh.n_nodes(), o.nx, o.ny, o.nz);
-
-  time_kernel(model, 5);  // warm up
-  const double kernel_ns = time_kernel(model, o.steps);
-
-  RunOptions run;
-  const double dt = 0.5 * reference_stable_dt(model.elements, model.mesh.X);
-  run.time.max_dt = dt;
-  run.time.end_time = o.steps * dt;
-  run.time.output_interval = 0.0;
-  const RunSummary s = run_explicit(model, run);
-
-  std::printf("internal-force kernel (F, P, f_int, stable dt): %.1f ns per element-step\n",
-              kernel_ns);
-  std::printf("whole explicit step (%ld steps, verdict %s):      %.1f ns per element-step\n",
-              s.steps, std::string(to_string(s.verdict)).c_str(), s.ns_per_element_step);
-  return s.verdict == Verdict::completed ? 0 : 1;
+  std::printf(
+      "mesh: %d tets, %d nodes (structured box %d x %d x %d cells), %zu slabs in %zu "
+      "phases, %d lanes per pack\n",
+      n_el, model.mesh.n_nodes(), o.nx, o.ny, o.nz, model.elements.schedule.slabs.size(),
+      model.elements.schedule.phases.size(), kLanes);
+  std::printf("%d steps per whole-step run, %d repetitions; ns per element-step, min / median\n",
+              o.steps, o.repeat);
+  std::printf("%-8s %-20s %-20s %-12s %-12s %s\n", "threads", "kernel (f_int, dt)", "whole step",
+              "kernel CPU", "step CPU", "efficiency (whole step, min)");
+  bool identical = true;
+  StepRun first;
+  double step_one_thread = 0.0;
+  for (int t : o.threads) {
+    time_kernel(model, 3, t);  // warm up
+    std::vector<double> kernel, kernel_cpu, step, cpu;
+    for (int r = 0; r < o.repeat; ++r) {
+      const KernelTime k = time_kernel(model, o.steps, t);
+      kernel.push_back(k.wall_ns);
+      kernel_cpu.push_back(k.cpu_ns);
+      StepRun run = time_steps(model, o.steps, t);
+      if (run.summary.verdict != Verdict::completed) {
+        std::fprintf(stderr, "run ended %s\n", std::string(to_string(run.summary.verdict)).c_str());
+        return 1;
+      }
+      step.push_back(run.summary.ns_per_element_step);
+      cpu.push_back(1e9 * run.summary.step_cpu_seconds /
+                    (static_cast<double>(run.summary.steps) * n_el * t));
+      if (first.x.empty())
+        first = std::move(run);
+      else
+        identical = identical && same_bits(first.x, run.x) && same_bits(first.v, run.v);
+    }
+    const Stats k = stats(kernel), kc = stats(kernel_cpu), s = stats(step), c = stats(cpu);
+    if (t == o.threads.front()) step_one_thread = s.min * t;
+    std::printf("%-8d %7.2f / %-10.2f %7.2f / %-10.2f %-12.2f %-12.2f %.0f %%\n", t, k.min,
+                k.median, s.min, s.median, kc.min, c.min, 100.0 * step_one_thread / (t * s.min));
+  }
+  std::printf("positions and velocities bitwise identical across thread counts: %s\n",
+              identical ? "yes" : "NO");
+  return identical ? 0 : 1;
 }

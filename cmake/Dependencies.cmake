@@ -8,6 +8,7 @@ find_package(Gmsh REQUIRED)
 find_package(NLopt CONFIG REQUIRED)  # libnlopt-dev: target NLopt::nlopt (C API, nlopt.h)
 set(MPI_CXX_SKIP_MPICXX ON)
 find_package(MPI REQUIRED COMPONENTS C CXX)
+find_package(OpenMP REQUIRED COMPONENTS CXX)  # the compiler's own (libgomp): engine threads
 find_package(SQLite3 REQUIRED)
 find_package(HDF5 REQUIRED COMPONENTS C)
 if(CCM_BUILD_TESTS)

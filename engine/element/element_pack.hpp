@@ -3,6 +3,7 @@
 // belongs to one element and a loop over lanes vectorizes.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "engine/element/tet4.hpp"
@@ -10,21 +11,33 @@
 
 namespace ccm {
 
-// One AVX2 register of doubles. (8 lanes in AVX-512 registers measured 1.6x slower here.)
+// One SIMD register of doubles: 8 with AVX-512, else 4 (AVX2).
+#if defined(__AVX512F__)
+inline constexpr int kLanes = 8;
+#else
 inline constexpr int kLanes = 4;
+#endif
 
-struct alignas(64) ElementPack {
-  double Dm_inv[9][kLanes];  // row-major entries of Dm^-1
-  double V0[kLanes];         // reference volume; 0 in padding lanes (they add no force)
-  double inv_6V0[kLanes];    // 1 / (6 V0), so J = det(Ds) / (6 V0)
+// The reference geometry a pack carries, per lane: GeometryRows numbers (see the aliases below).
+template <int GeometryRows>
+struct alignas(64) PackOf {
+  static constexpr int kGeometryRows = GeometryRows;
   int node[4][kLanes];
-  int element[kLanes];  // global element index (padding lanes repeat the last element)
+  double V0[kLanes];  // reference volume (a padding lane repeats the last element)
+  double geometry[GeometryRows][kLanes];
 };
 
-// Packs elements [first, first + count); the last pack is padded by repeating the last element
-// with zero volume weight.
-std::vector<ElementPack> make_element_packs(const std::vector<Tet>& tets,
-                                            const std::vector<TetReference>& reference, int first,
-                                            int count);
+// Neo-Hookean: G = Dm^-1 Dm^-T (symmetric; entries 00 11 22 01 02 12). The forces need no F:
+// H = -V0 P Dm^-T = -mu V0 Ds G + V0 (mu - lambda ln J) Ds^-T (docs/equations.md).
+using NeoHookeanPack = PackOf<6>;
+// Linear elastic: Dm^-1, row-major (the small strain needs F = Ds Dm^-1 itself).
+using LinearPack = PackOf<9>;
+
+// Packs the given elements in order; the last pack is padded by repeating the last element
+// (its padding lanes are skipped by the scatter and the sums).
+template <class Pack>
+std::vector<Pack> make_element_packs(const std::vector<Tet>& tets,
+                                     const std::vector<TetReference>& reference,
+                                     std::span<const int> elements);
 
 }  // namespace ccm

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -13,180 +14,257 @@ namespace {
 
 enum class WithEnergy { no, yes };
 
-// Per-lane results of one pack, reduced and scattered after the vector code.
-struct PackResult {
-  double f[4][3][kLanes];  // f[a][i]: component i of the force on local node a
-  double h2[kLanes];       // squared characteristic length, scaled to the reference wave speed
-  double J[kLanes];
-  double W[kLanes];  // V0 * strain energy density (only WithEnergy::yes)
-};
+#define CCM_INLINE inline __attribute__((always_inline))
 
-struct Accumulator {
-  double min_ratio2 = std::numeric_limits<double>::infinity();  // min_e (h_e / c_d,e)^2
-  double min_J = std::numeric_limits<double>::infinity();
-  int first_bad = -1;
-  double bad_J = 0.0;
-  double energy = 0.0;  // of the current block
-};
-
-inline Lanes load(const double (&a)[kLanes]) {
+CCM_INLINE Lanes load(const double (&a)[kLanes]) {
   Lanes v;
   std::memcpy(&v, a, sizeof v);
   return v;
 }
 
-inline void store(double (&a)[kLanes], Lanes v) { std::memcpy(a, &v, sizeof v); }
+CCM_INLINE Lanes broadcast(double s) { return Lanes{} + s; }
 
-inline Lanes broadcast(double s) { return Lanes{} + s; }
+// What one pack's kernel hands on: the forces on local nodes 1..3 (h[a][i], component i of the
+// force on node a + 1; node 0 takes minus their sum), J, the stable-step measure y and V0 W.
+struct PackForces {
+  Lanes h[3][3];
+  Lanes J;
+  Lanes y;  // sum_f |n_f|^2 M / det(Ds)^2 = rho / dt_e^2: the largest y sets the stable step
+  Lanes W;  // V0 x strain energy density (WithEnergy::yes only)
+};
 
-// Component k of node a of every lane, gathered from x (3 n doubles).
-inline Lanes gather(const ElementPack& p, int a, int k, const double* x) {
-  Lanes v;
-  for (int l = 0; l < kLanes; ++l) v[l] = x[3 * p.node[a][l] + k];
-  return v;
+// Edges e[c][r] = x_{c+1,r} - x_{0,r} (the columns of Ds), gathered from x (3 n doubles).
+template <class Pack>
+CCM_INLINE void gather_edges(const Pack& p, const double* x, Lanes (&e)[3][3]) {
+  Lanes x0[3];
+  gather_xyz(x, p.node[0], x0[0], x0[1], x0[2]);
+  for (int c = 0; c < 3; ++c) {
+    gather_xyz(x, p.node[c + 1], e[c][0], e[c][1], e[c][2]);
+    for (int r = 0; r < 3; ++r) e[c][r] -= x0[r];
+  }
 }
 
-// The element kernel on kLanes elements at once. Notation: e_c = x_{c+1} - x_0 (columns of
-// Ds), F = Ds Dm^-1, n_f the face normals scaled by twice the face area.
-template <MaterialModel Model, WithEnergy Energy>
-void pack_kernel(const ElementPack& p, const double* x, const Lame& lame, PackResult& out) {
-  Lanes e[3][3];  // e[c][r]: component r of edge c
-  for (int r = 0; r < 3; ++r) {
-    const Lanes x0 = gather(p, 0, r, x);
-    for (int c = 0; c < 3; ++c) e[c][r] = gather(p, c + 1, r, x) - x0;
-  }
-  // n0 = e1 x e2 ... cyclic: n_c = e_{c+1} x e_{c+2}; the fourth face is -(n0 + n1 + n2).
-  Lanes n[3][3];
+// Shared by both models: the face normals n_c = e_{c+1} x e_{c+2} (the columns of cof(Ds); the
+// fourth face is -(n0 + n1 + n2)), det(Ds), 1 / det(Ds) and J = det(Ds) / (6 V0) from one
+// division, and sum_f |n_f|^2 = det(Ds)^2 / h_e^2 (tet4.hpp).
+struct Shape {
+  Lanes n[3][3];  // n[c][r]
+  Lanes det, inv_det, J, sum_n2;
+};
+
+CCM_INLINE Shape shape_of(const Lanes (&e)[3][3], Lanes V0) {
+  Shape s;
   for (int c = 0; c < 3; ++c) {
     const Lanes* a = e[(c + 1) % 3];
     const Lanes* b = e[(c + 2) % 3];
-    n[c][0] = a[1] * b[2] - a[2] * b[1];
-    n[c][1] = a[2] * b[0] - a[0] * b[2];
-    n[c][2] = a[0] * b[1] - a[1] * b[0];
+    s.n[c][0] = a[1] * b[2] - a[2] * b[1];
+    s.n[c][1] = a[2] * b[0] - a[0] * b[2];
+    s.n[c][2] = a[0] * b[1] - a[1] * b[0];
   }
-  const Lanes det = e[0][0] * n[0][0] + e[0][1] * n[0][1] + e[0][2] * n[0][2];
-  Lanes sum_n2 = broadcast(0.0);
+  s.det = e[0][0] * s.n[0][0] + e[0][1] * s.n[0][1] + e[0][2] * s.n[0][2];
+  const Lanes six_V0 = 6.0 * V0;
+  const Lanes q = 1.0 / (s.det * six_V0);
+  s.inv_det = q * six_V0;
+  s.J = s.det * s.det * q;
+  s.sum_n2 = broadcast(0.0);
   for (int k = 0; k < 3; ++k) {
-    const Lanes s = n[0][k] + n[1][k] + n[2][k];
-    sum_n2 += n[0][k] * n[0][k] + n[1][k] * n[1][k] + n[2][k] * n[2][k] + s * s;
+    const Lanes t = s.n[0][k] + s.n[1][k] + s.n[2][k];
+    s.sum_n2 += s.n[0][k] * s.n[0][k] + s.n[1][k] * s.n[1][k] + s.n[2][k] * s.n[2][k] + t * t;
   }
-  const Lanes h2 = det * det / sum_n2;  // h_e^2 = det(Ds)^2 / sum_f |n_f|^2   (tet4.hpp)
+  return s;
+}
 
+// Compressible Neo-Hookean (eq. 2.3; neo_hookean.hpp): P = mu F + (lambda ln J - mu) F^-T, so
+// with F = Ds Dm^-1 and G = Dm^-1 Dm^-T the nodal forces are
+//   H = -V0 P Dm^-T = -mu V0 Ds G + V0 (mu - lambda ln J) cof(Ds) / det(Ds)
+// (F^-T Dm^-T = Ds^-T), and tr C = tr(F^T F) = sum_rc Ds_rc (Ds G)_rc.
+template <WithEnergy Energy>
+CCM_INLINE PackForces neo_hookean_pack(const NeoHookeanPack& p, const double* x, const Lame& lame) {
+  Lanes e[3][3];
+  gather_edges(p, x, e);
+  const Lanes V0 = load(p.V0);
+  const Shape s = shape_of(e, V0);
+  PackForces out;
+  out.J = s.J;
+  const Lanes log_J = vector_log(s.J > 0.0 ? s.J : broadcast(1.0));  // bad lanes: reported only
+  const Lanes g00 = load(p.geometry[0]), g11 = load(p.geometry[1]), g22 = load(p.geometry[2]);
+  const Lanes g01 = load(p.geometry[3]), g02 = load(p.geometry[4]), g12 = load(p.geometry[5]);
+  const Lanes A = -lame.mu * V0;
+  const Lanes B = V0 * (lame.mu - lame.lambda * log_J) * s.inv_det;
+  Lanes trC = broadcast(0.0);
+  for (int r = 0; r < 3; ++r) {
+    const Lanes d0 = e[0][r], d1 = e[1][r], d2 = e[2][r];  // row r of Ds
+    const Lanes dg0 = d0 * g00 + d1 * g01 + d2 * g02;      // row r of Ds G
+    const Lanes dg1 = d0 * g01 + d1 * g11 + d2 * g12;
+    const Lanes dg2 = d0 * g02 + d1 * g12 + d2 * g22;
+    trC += d0 * dg0 + d1 * dg1 + d2 * dg2;
+    out.h[0][r] = A * dg0 + B * s.n[0][r];
+    out.h[1][r] = A * dg1 + B * s.n[1][r];
+    out.h[2][r] = A * dg2 + B * s.n[2][r];
+  }
+  const Lanes mu = broadcast(lame.mu), lambda = broadcast(lame.lambda);
+  if constexpr (Energy == WithEnergy::yes)  // W = lambda/2 ln^2 J - mu ln J + mu/2 (tr C - 3)
+    out.W = V0 * (0.5 * lambda * log_J * log_J - mu * log_J + 0.5 * mu * (trC - 3.0));
+  // Stiffening under compression: the wave speed uses the tangent modulus of the current state,
+  // M = lambda (1 + 2 |ln J|) + mu (2 + max(tr C - 3, 0)) (docs/time-step.md).
+  const Lanes abs_log_J = log_J < 0.0 ? -log_J : log_J;
+  const Lanes stretch = trC > 3.0 ? trC - 3.0 : broadcast(0.0);
+  const Lanes M = lambda * (1.0 + 2.0 * abs_log_J) + mu * (2.0 + stretch);
+  out.y = s.sum_n2 * M * (s.inv_det * s.inv_det);
+  return out;
+}
+
+// Linear elastic (eq. 2.1; linear_elastic.hpp): sigma = lambda tr(eps) I + 2 mu eps with
+// eps = sym(F - I), H(i, a) = -V0 sum_c P(i, c) Dm^-1(a, c); the reference moduli set the step.
+template <WithEnergy Energy>
+CCM_INLINE PackForces linear_pack(const LinearPack& p, const double* x, const Lame& lame) {
+  Lanes e[3][3];
+  gather_edges(p, x, e);
+  const Lanes V0 = load(p.V0);
+  const Shape s = shape_of(e, V0);
+  PackForces out;
+  out.J = s.J;
   Lanes Dm[9];
-  for (int k = 0; k < 9; ++k) Dm[k] = load(p.Dm_inv[k]);
+  for (int k = 0; k < 9; ++k) Dm[k] = load(p.geometry[k]);
   Lanes F[3][3];  // F(i, c) = sum_k Ds(i, k) Dm^-1(k, c)
   for (int i = 0; i < 3; ++i)
     for (int c = 0; c < 3; ++c)
       F[i][c] = e[0][i] * Dm[c] + e[1][i] * Dm[3 + c] + e[2][i] * Dm[6 + c];
-  const Lanes J = det * load(p.inv_6V0);  // J = det F = V / V0
-  store(out.J, J);
-
-  Lanes P[3][3];
-  Lanes W = broadcast(0.0);
   const Lanes mu = broadcast(lame.mu), lambda = broadcast(lame.lambda);
-  if constexpr (Model == MaterialModel::neo_hookean) {
-    // cof(F) columns: F_1 x F_2, F_2 x F_0, F_0 x F_1 (F_c = column c): F^-T = cof(F) / J.
-    Lanes C[3][3];
+  const Lanes tr = F[0][0] + F[1][1] + F[2][2] - 3.0;
+  Lanes P[3][3];
+  Lanes eps_sq = broadcast(0.0);
+  for (int i = 0; i < 3; ++i)
     for (int c = 0; c < 3; ++c) {
-      const int a = (c + 1) % 3, b = (c + 2) % 3;
-      C[0][c] = F[1][a] * F[2][b] - F[2][a] * F[1][b];
-      C[1][c] = F[2][a] * F[0][b] - F[0][a] * F[2][b];
-      C[2][c] = F[0][a] * F[1][b] - F[1][a] * F[0][b];
+      const Lanes eps = 0.5 * (F[i][c] + F[c][i]) - (i == c ? 1.0 : 0.0);
+      P[i][c] = 2.0 * mu * eps + (i == c ? lambda * tr : broadcast(0.0));
+      eps_sq += eps * eps;
     }
-    const Lanes log_J = vector_log(J > 0.0 ? J : broadcast(1.0));  // bad lanes: reported only
-    // P = mu F + (lambda ln J - mu) F^-T   (eq. 2.3; neo_hookean.hpp)
-    const Lanes k = (lambda * log_J - mu) / J;
-    Lanes trC = broadcast(0.0);
-    for (int i = 0; i < 3; ++i)
-      for (int c = 0; c < 3; ++c) {
-        P[i][c] = mu * F[i][c] + k * C[i][c];
-        trC += F[i][c] * F[i][c];
-      }
-    if constexpr (Energy == WithEnergy::yes)  // W = lambda/2 ln^2 J - mu ln J + mu/2 (tr C - 3)
-      W = 0.5 * lambda * log_J * log_J - mu * log_J + 0.5 * mu * (trC - 3.0);
-    // Stiffening under compression: the wave speed uses the tangent modulus of the current
-    // state, M = lambda (1 + 2 |ln J|) + mu (2 + max(tr C - 3, 0)) (docs/time-step.md), so
-    // h_e^2 is scaled by (lambda + 2 mu) / M before it is divided by c_d^2 of the block.
-    const Lanes abs_log_J = log_J < 0.0 ? -log_J : log_J;
-    const Lanes stretch = trC > 3.0 ? trC - 3.0 : broadcast(0.0);
-    const Lanes M = lambda * (1.0 + 2.0 * abs_log_J) + mu * (2.0 + stretch);
-    store(out.h2, h2 * (lambda + 2.0 * mu) / M);
-  } else {
-    // sigma = lambda tr(eps) I + 2 mu eps, eps = sym(F - I)   (eq. 2.1; linear_elastic.hpp)
-    const Lanes tr = F[0][0] + F[1][1] + F[2][2] - 3.0;
-    Lanes eps_sq = broadcast(0.0);
-    for (int i = 0; i < 3; ++i)
-      for (int c = 0; c < 3; ++c) {
-        const Lanes eps = 0.5 * (F[i][c] + F[c][i]) - (i == c ? 1.0 : 0.0);
-        P[i][c] = 2.0 * mu * eps + (i == c ? lambda * tr : broadcast(0.0));
-        eps_sq += eps * eps;
-      }
-    if constexpr (Energy == WithEnergy::yes) W = 0.5 * lambda * tr * tr + mu * eps_sq;
-    store(out.h2, h2);  // small strain: the reference moduli
-  }
-  const Lanes V0 = load(p.V0);
-  if constexpr (Energy == WithEnergy::yes) store(out.W, V0 * W);
+  if constexpr (Energy == WithEnergy::yes) out.W = V0 * (0.5 * lambda * tr * tr + mu * eps_sq);
+  for (int i = 0; i < 3; ++i)
+    for (int a = 0; a < 3; ++a)
+      out.h[a][i] = -V0 * (P[i][0] * Dm[3 * a] + P[i][1] * Dm[3 * a + 1] + P[i][2] * Dm[3 * a + 2]);
+  out.y = s.sum_n2 * (lambda + 2.0 * mu) * (s.inv_det * s.inv_det);
+  return out;
+}
 
-  // f_a = -V0 P grad N_a: for a = 1..3 the columns of H = -V0 P Dm^-T,
-  // H(i, a) = -V0 sum_c P(i, c) Dm^-1(a, c); f_0 = -(f_1 + f_2 + f_3)   (docs/equations.md "Linear tetrahedron")
-  for (int i = 0; i < 3; ++i) {
-    Lanes f0 = broadcast(0.0);
+// Adds the first `lanes` lanes' nodal forces into f, lane by lane, nodes 1, 2, 3 then 0: the
+// fixed order every thread count shares (lanes may share nodes).
+template <class Pack>
+CCM_INLINE void scatter(const Pack& p, const PackForces& r, int lanes, double* f) {
+  Lanes h0[3];
+  for (int i = 0; i < 3; ++i) h0[i] = -(r.h[0][i] + r.h[1][i] + r.h[2][i]);
+  for (int l = 0; l < lanes; ++l) {
     for (int a = 0; a < 3; ++a) {
-      const Lanes h =
-          -V0 * (P[i][0] * Dm[3 * a] + P[i][1] * Dm[3 * a + 1] + P[i][2] * Dm[3 * a + 2]);
-      store(out.f[a + 1][i], h);
-      f0 -= h;
+      double* fa = f + 3 * p.node[a + 1][l];
+      fa[0] += r.h[a][0][l];
+      fa[1] += r.h[a][1][l];
+      fa[2] += r.h[a][2][l];
     }
-    store(out.f[0][i], f0);
+    double* f0 = f + 3 * p.node[0][l];
+    f0[0] += h0[0][l];
+    f0[1] += h0[1][l];
+    f0[2] += h0[2][l];
   }
 }
 
-// Adds the pack's nodal forces into the global f; sequential, since lanes may share nodes.
-void scatter(const ElementPack& p, const PackResult& r, double* f) {
-  for (int l = 0; l < kLanes; ++l)
-    for (int a = 0; a < 4; ++a) {
-      double* fa = f + 3 * p.node[a][l];
-      fa[0] += r.f[a][0][l];
-      fa[1] += r.f[a][1][l];
-      fa[2] += r.f[a][2][l];
+// What a slab reports; slabs are combined in slab order.
+struct SlabTotals {
+  double max_y = 0.0;
+  double min_J = std::numeric_limits<double>::infinity();  // over the elements with J > 0
+  int first_bad = -1;
+  double bad_J = 0.0;
+  double energy = 0.0;
+};
+
+// Per-lane running values over a slab's packs, reduced once at its end.
+struct LaneTotals {
+  Lanes max_y = broadcast(0.0);
+  Lanes min_J = broadcast(std::numeric_limits<double>::infinity());
+  Lanes energy = broadcast(0.0);
+};
+
+template <class Pack, WithEnergy Energy>
+CCM_INLINE void account(const ElementBlock& b, int pack, const PackForces& r, int lanes,
+                        LaneTotals& t, SlabTotals& slab) {
+  t.max_y = r.y > t.max_y ? r.y : t.max_y;  // a NaN y is left out: its J reports it
+  const auto good = r.J > 0.0;
+  t.min_J = good && r.J < t.min_J ? r.J : t.min_J;
+  if constexpr (Energy == WithEnergy::yes) {
+    Lanes W = r.W;
+    if (lanes < kLanes)
+      for (int l = lanes; l < kLanes; ++l) W[l] = 0.0;
+    t.energy += W;
+  }
+  bool all_good = true;
+  for (int l = 0; l < kLanes; ++l) all_good &= good[l] != 0;
+  if (all_good) [[likely]]
+    return;
+  for (int l = 0; l < lanes; ++l) {
+    if (good[l]) continue;
+    const int e = b.lane_element[static_cast<size_t>(pack * kLanes + l)];
+    if (slab.first_bad < 0 || e < slab.first_bad) {
+      slab.first_bad = e;
+      slab.bad_J = r.J[l];
     }
+  }
 }
 
-template <WithEnergy Energy>
-void reduce(const ElementPack& p, const PackResult& r, double& min_h2, Accumulator& acc) {
+template <class Pack, WithEnergy Energy>
+SlabTotals run_slab(const ElementBlock& b, const std::vector<Pack>& packs, const Slab& slab,
+                    const double* x, double* f) {
+  SlabTotals out;
+  LaneTotals t;
+  const int end = slab.first_pack + slab.n_packs;
+  for (int i = slab.first_pack; i < end; ++i) {
+    const Pack& p = packs[static_cast<size_t>(i)];
+    const int lanes = i + 1 == end ? slab.last_lanes : kLanes;
+    PackForces r;
+    if constexpr (std::is_same_v<Pack, NeoHookeanPack>)
+      r = neo_hookean_pack<Energy>(p, x, b.lame);
+    else
+      r = linear_pack<Energy>(p, x, b.lame);
+    scatter(p, r, lanes, f);
+    account<Pack, Energy>(b, i, r, lanes, t, out);
+  }
   for (int l = 0; l < kLanes; ++l) {
-    min_h2 = std::min(min_h2, r.h2[l]);
-    if (!(r.J[l] > 0.0)) [[unlikely]] {
-      if (acc.first_bad < 0) {
-        acc.first_bad = p.element[l];
-        acc.bad_J = r.J[l];
-      }
-    } else {
-      acc.min_J = std::min(acc.min_J, r.J[l]);
-    }
-    if constexpr (Energy == WithEnergy::yes) acc.energy += r.W[l];
+    out.max_y = std::max(out.max_y, t.max_y[l]);
+    out.min_J = std::min(out.min_J, t.min_J[l]);
+    out.energy += t.energy[l];
   }
+  return out;
 }
 
-template <MaterialModel Model, WithEnergy Energy>
-void block_forces(const ElementBlock& b, const double* x, double* f, Accumulator& acc) {
-  double min_h2 = std::numeric_limits<double>::infinity();
-  PackResult r;
-  for (const ElementPack& p : b.packs) {
-    pack_kernel<Model, Energy>(p, x, b.lame, r);
-    scatter(p, r, f);
-    reduce<Energy>(p, r, min_h2, acc);
-  }
-  // dt_e = h_e / c_d is monotone in h for one material: one division per block.
-  acc.min_ratio2 = std::min(acc.min_ratio2, min_h2 / (b.wave_speed * b.wave_speed));
-}
-
-template <WithEnergy Energy>
-void dispatch(const ElementBlock& b, const double* x, double* f, Accumulator& acc) {
+SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const double* x, double* f,
+                    bool with_energy) {
   if (b.model == MaterialModel::neo_hookean)
-    block_forces<MaterialModel::neo_hookean, Energy>(b, x, f, acc);
-  else
-    block_forces<MaterialModel::linear_elastic, Energy>(b, x, f, acc);
+    return with_energy
+               ? run_slab<NeoHookeanPack, WithEnergy::yes>(b, b.neo_hookean_packs, slab, x, f)
+               : run_slab<NeoHookeanPack, WithEnergy::no>(b, b.neo_hookean_packs, slab, x, f);
+  return with_energy ? run_slab<LinearPack, WithEnergy::yes>(b, b.linear_packs, slab, x, f)
+                     : run_slab<LinearPack, WithEnergy::no>(b, b.linear_packs, slab, x, f);
+}
+
+// Appends the packs of one slab's elements to its block, with their lane-to-element map.
+void add_slab(ElementSet& es, int block, std::span<const int> elements) {
+  ElementBlock& b = es.blocks[static_cast<size_t>(block)];
+  Slab slab;
+  slab.block = block;
+  const int count = static_cast<int>(elements.size());
+  slab.n_packs = (count + kLanes - 1) / kLanes;
+  slab.last_lanes = count - (slab.n_packs - 1) * kLanes;
+  if (b.model == MaterialModel::neo_hookean) {
+    slab.first_pack = static_cast<int>(b.neo_hookean_packs.size());
+    auto packs = make_element_packs<NeoHookeanPack>(es.tets, es.reference, elements);
+    b.neo_hookean_packs.insert(b.neo_hookean_packs.end(), packs.begin(), packs.end());
+  } else {
+    slab.first_pack = static_cast<int>(b.linear_packs.size());
+    auto packs = make_element_packs<LinearPack>(es.tets, es.reference, elements);
+    b.linear_packs.insert(b.linear_packs.end(), packs.begin(), packs.end());
+  }
+  for (int i = 0; i < slab.n_packs * kLanes; ++i)
+    b.lane_element.push_back(elements[static_cast<size_t>(std::min(i, count - 1))]);
+  es.schedule.slabs.push_back(slab);
 }
 
 }  // namespace
@@ -204,37 +282,72 @@ ElementSet make_element_set(const ModelMesh& mesh) {
                       mesh.bodies[static_cast<size_t>(mesh.element_body[e])].name));
     es.reference.push_back(*ref);
   }
+  std::vector<BlockSlabs> cuts;
   for (const Body& body : mesh.bodies) {
-    es.blocks.push_back(
-        {body.first_element, body.n_elements, body.material.model, lame_from(body.material),
-         dilatational_wave_speed(body.material),
-         make_element_packs(es.tets, es.reference, body.first_element, body.n_elements)});
+    es.blocks.push_back({body.first_element,
+                         body.n_elements,
+                         body.material.model,
+                         lame_from(body.material),
+                         dilatational_wave_speed(body.material),
+                         {},
+                         {},
+                         {}});
+    cuts.push_back(cut_into_slabs(mesh.X, mesh.tets, body.first_element, body.n_elements));
   }
+  std::vector<std::span<const int>> slab_elements;
+  for (size_t b = 0; b < cuts.size(); ++b)
+    for (size_t k = 0; k + 1 < cuts[b].begin.size(); ++k) {
+      const std::span<const int> all(cuts[b].elements);
+      const auto span = all.subspan(static_cast<size_t>(cuts[b].begin[k]),
+                                    static_cast<size_t>(cuts[b].begin[k + 1] - cuts[b].begin[k]));
+      if (span.empty()) continue;
+      add_slab(es, static_cast<int>(b), span);
+      slab_elements.push_back(span);
+    }
+  es.schedule.phases = make_phases(mesh.n_nodes(), es.tets, es.schedule.slabs, slab_elements);
   return es;
 }
 
 InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const Vec3> x,
-                                        std::span<Vec3> f, std::span<double> block_energy) {
+                                        std::span<Vec3> f, std::span<double> block_energy,
+                                        int threads) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
   const double* xp = x.data()->data();
   double* fp = f.data()->data();
-  Accumulator acc;
-  for (size_t i = 0; i < elements.blocks.size(); ++i) {
-    const ElementBlock& b = elements.blocks[i];
-    if (b.count == 0) continue;
-    if (block_energy.empty()) {
-      dispatch<WithEnergy::no>(b, xp, fp, acc);
-    } else {
-      acc.energy = 0.0;
-      dispatch<WithEnergy::yes>(b, xp, fp, acc);
-      block_energy[i] = acc.energy;
+  const bool with_energy = !block_energy.empty();
+  threads = std::max(1, threads);
+  const ElementSchedule& schedule = elements.schedule;
+  std::vector<SlabTotals> totals(schedule.slabs.size());
+  // The slabs of one phase share no node; the barrier at the end of each `omp for` keeps the
+  // phases in order (element_schedule.hpp).
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  for (const std::vector<int>& phase : schedule.phases) {
+#pragma omp for schedule(dynamic, 1)
+    for (size_t k = 0; k < phase.size(); ++k) {
+      const auto s = static_cast<size_t>(phase[k]);
+      const Slab& slab = schedule.slabs[s];
+      totals[s] =
+          run_slab(elements.blocks[static_cast<size_t>(slab.block)], slab, xp, fp, with_energy);
     }
   }
+  // Fixed-order combination: slab order, whatever thread ran which slab.
+  if (with_energy) std::fill(block_energy.begin(), block_energy.end(), 0.0);
   InternalForceResult r;
-  r.stable_dt = std::sqrt(acc.min_ratio2);
-  r.min_J = acc.min_J;
-  r.first_bad_element = acc.first_bad;
-  r.bad_J = acc.bad_J;
+  double min_ratio2 = std::numeric_limits<double>::infinity();  // min_e (h_e / c_d,e)^2
+  for (size_t s = 0; s < schedule.slabs.size(); ++s) {
+    const SlabTotals& t = totals[s];
+    const ElementBlock& b = elements.blocks[static_cast<size_t>(schedule.slabs[s].block)];
+    // y = rho / dt_e^2 with rho = (lambda + 2 mu) / c_d^2.
+    const double c2 = b.wave_speed * b.wave_speed;
+    min_ratio2 = std::min(min_ratio2, (b.lame.lambda + 2.0 * b.lame.mu) / (c2 * t.max_y));
+    r.min_J = std::min(r.min_J, t.min_J);
+    if (t.first_bad >= 0 && (r.first_bad_element < 0 || t.first_bad < r.first_bad_element)) {
+      r.first_bad_element = t.first_bad;
+      r.bad_J = t.bad_J;
+    }
+    if (with_energy) block_energy[static_cast<size_t>(schedule.slabs[s].block)] += t.energy;
+  }
+  r.stable_dt = std::sqrt(min_ratio2);
   return r;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/element/element_pack.hpp"
+#include "engine/element/element_schedule.hpp"
 #include "engine/element/tet4.hpp"
 #include "engine/material/material.hpp"
 #include "engine/mesh/model_mesh.hpp"
@@ -19,14 +20,19 @@ struct ElementBlock {
   int count = 0;
   MaterialModel model = MaterialModel::neo_hookean;
   Lame lame{};
-  double wave_speed = 0.0;         // dilatational c_d of the material
-  std::vector<ElementPack> packs;  // the block's elements as the kernel reads them
+  double wave_speed = 0.0;  // dilatational c_d of the material
+  // The block's elements as the kernel reads them, slab after slab (element_schedule.hpp): one
+  // of the two, by the model.
+  std::vector<NeoHookeanPack> neo_hookean_packs;
+  std::vector<LinearPack> linear_packs;
+  std::vector<int> lane_element;  // the global element of every pack lane (padding repeats)
 };
 
 struct ElementSet {
   std::vector<Tet> tets;
   std::vector<TetReference> reference;
   std::vector<ElementBlock> blocks;
+  ElementSchedule schedule;
   int n_elements() const { return static_cast<int>(tets.size()); }
 };
 
@@ -36,16 +42,18 @@ ElementSet make_element_set(const ModelMesh& mesh);
 struct InternalForceResult {
   double stable_dt = std::numeric_limits<double>::infinity();  // min_e h_e / c_d,e (no safety)
   double min_J = std::numeric_limits<double>::infinity();
-  int first_bad_element = -1;  // first element with J <= 0 or non-finite J, else -1
+  int first_bad_element = -1;  // lowest-numbered element with J <= 0 or non-finite J, else -1
   double bad_J = 0.0;          // its J
 };
 
 // f_int is ADDED into f as the force ON the nodes (f_a = -V0 P grad N_a); x is the current
 // configuration. Reads each tet once: F, P, forces and stable step. When block_energy is not
 // empty (one entry per block) the stored energy sum_e V0 W(F_e) of each block is written there;
-// otherwise it is not computed.
+// otherwise it is not computed. Up to `threads` OpenMP threads share the slabs of each phase of
+// elements.schedule; every result is bitwise the same for any thread count.
 InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const Vec3> x,
-                                        std::span<Vec3> f, std::span<double> block_energy = {});
+                                        std::span<Vec3> f, std::span<double> block_energy = {},
+                                        int threads = 1);
 
 // Reference-configuration stable step min_e h_e / c_d,e, used before the first evaluation.
 double reference_stable_dt(const ElementSet& elements, std::span<const Vec3> X);

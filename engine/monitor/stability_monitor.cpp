@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/monitor/fixed_order_sum.hpp"
+
 namespace ccm {
 
 void EnergyBalance::start(double kinetic, double internal, double floor) {
@@ -21,11 +23,12 @@ double EnergyBalance::update(double kinetic, double internal, double external_wo
   return last_error_;
 }
 
-double leapfrog_kinetic_energy(const State& s, double dt) {
+double leapfrog_kinetic_energy(const State& s, double dt, int threads) {
   const double q = 0.25 * dt * dt;
-  double ke = 0.0;
-  for (size_t i = 0; i < s.v.size(); ++i)
-    ke += s.m_lumped[i] * (s.v[i].squaredNorm() - q * s.a[i].squaredNorm());
+  const double ke = fixed_order_sum(s.n_nodes(), threads, [&](int n) {
+    const auto i = static_cast<size_t>(n);
+    return s.m_lumped[i] * (s.v[i].squaredNorm() - q * s.a[i].squaredNorm());
+  });
   return 0.5 * ke;
 }
 

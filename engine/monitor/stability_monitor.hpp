@@ -6,8 +6,8 @@
 #include <string>
 #include <string_view>
 
-#include "engine/element/internal_force.hpp"
 #include "engine/core/state.hpp"
+#include "engine/element/internal_force.hpp"
 
 namespace ccm {
 
@@ -24,8 +24,8 @@ struct Instability {
   int node = -1;
 };
 
-// Energy balance (docs/equations.md "Energy balance"): KE + IE - (KE_0 + IE_0) - W_ext, relative to the largest
-// energy seen in the run so that a body at rest that is then loaded is judged fairly.
+// Energy balance (docs/equations.md "Energy balance"): KE + IE - (KE_0 + IE_0) - W_ext, relative to
+// the largest energy seen in the run so that a body at rest that is then loaded is judged fairly.
 class EnergyBalance {
  public:
   // floor: the smallest energy scale the error is measured against [J], so that round-off on a
@@ -48,7 +48,8 @@ class EnergyBalance {
 // = 1/2 sum m (|v_n|^2 - (dt/2)^2 |a_n|^2): with it, KE + IE is exactly conserved by central
 // difference for a linear system, so the energy balance measures drift and instability rather
 // than the O((omega dt)^2) oscillation of the synchronous kinetic energy of high modes.
-double leapfrog_kinetic_energy(const State& s, double dt);
+// Summed in a fixed order (fixed_order_sum.hpp): the same bits for any thread count.
+double leapfrog_kinetic_energy(const State& s, double dt, int threads = 1);
 
 std::optional<Instability> check_elements(const InternalForceResult& r, double t);
 std::optional<Instability> check_finite(const State& s);

@@ -9,7 +9,9 @@
 #include <optional>
 #include <string>
 
+#include "engine/monitor/fixed_order_sum.hpp"
 #include "engine/solver/lumped_mass.hpp"
+#include "engine/solver/thread_count.hpp"
 
 namespace ccm {
 
@@ -51,12 +53,23 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// CPU time of the calling thread [s]: the cost of the step loop, unaffected by other processes
-// sharing the machine (wall time is not).
-double thread_cpu_seconds() {
+// CPU time [s] of the calling thread (one thread) or of the process (more): the cost of the step
+// loop, unaffected by other processes sharing the machine (wall time is not).
+double cpu_seconds(int threads) {
   timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  clock_gettime(threads > 1 ? CLOCK_PROCESS_CPUTIME_ID : CLOCK_THREAD_CPUTIME_ID, &ts);
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Node loops shorter than this stay on one thread (a parallel region costs microseconds).
+constexpr int kMinParallelNodes = 2048;
+// A model of fewer elements runs on one thread whatever was asked: its step lasts tens of
+// microseconds, of the order of the cost of the step's parallel regions and barriers.
+constexpr int kMinParallelElements = 8192;
+
+int threads_for(const Model& model, const RunOptions& options) {
+  const int requested = options.threads > 0 ? options.threads : default_threads();
+  return model.mesh.n_elements() >= kMinParallelElements ? requested : 1;
 }
 
 struct StepChoice {
@@ -94,6 +107,7 @@ class CentralDifference {
   CentralDifference(const Model& model, const RunOptions& options)
       : model_(model),
         opt_(options),
+        threads_(threads_for(model, options)),
         load_work_(model.bcs),
         body_energy_(model.mesh.bodies.size(), 0.0) {}
 
@@ -115,8 +129,11 @@ class CentralDifference {
   std::optional<Instability> check(bool energy_check);
   void report_progress(double dt, Clock::time_point start, double& last_report);
 
+  bool parallel_nodes() const { return threads_ > 1 && s_.n_nodes() >= kMinParallelNodes; }
+
   const Model& model_;
   const RunOptions& opt_;
+  const int threads_;
   State s_;
   LoadWork load_work_;
   EnergyBalance energy_;
@@ -145,8 +162,10 @@ void CentralDifference::initialise() {
   for (KinematicConstraint* c : opt_.constraints) c->initialise(s_);
   summary_.dt_initial = opt_.time.dt_safety * last_eval_.stable_dt;
   last_dt_ = summary_.dt_initial;
-  energy_.start(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), energy_floor());
+  energy_.start(leapfrog_kinetic_energy(s_, last_dt_, threads_), total_internal_energy(),
+                energy_floor());
   summary_.n_nodes = mesh.n_nodes();
+  summary_.threads = threads_;
   summary_.n_elements = mesh.n_elements();
 }
 
@@ -189,7 +208,9 @@ void CentralDifference::count_step(const StepChoice& step, double t_n) {
 // x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28)
 void CentralDifference::predict(double dt) {
   const double half_dt = 0.5 * dt;
-  for (size_t i = 0; i < s_.x.size(); ++i) {
+  const auto n = s_.x.size();
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
+  for (size_t i = 0; i < n; ++i) {
     s_.v[i] += half_dt * s_.a[i];
     s_.x[i] += dt * s_.v[i];
   }
@@ -197,15 +218,18 @@ void CentralDifference::predict(double dt) {
 
 // a_{n+1} = M^-1 (f_ext + f_int) + g   (eq. 2.29)
 void CentralDifference::evaluate(bool with_energy) {
-  std::fill(s_.f.begin(), s_.f.end(), Vec3::Zero());
+  const auto n = s_.f.size();
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
+  for (size_t i = 0; i < n; ++i) s_.f[i].setZero();
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
   for (StateLoad* load : opt_.loads) load->add_forces(s_, s_.f);
-  last_eval_ =
-      add_internal_forces(model_.elements, s_.x, s_.f,
-                          with_energy ? std::span<double>(body_energy_) : std::span<double>());
+  last_eval_ = add_internal_forces(
+      model_.elements, s_.x, s_.f,
+      with_energy ? std::span<double>(body_energy_) : std::span<double>(), threads_);
   if (opt_.contact) opt_.contact->add_forces(s_);
   const Vec3 g = model_.bcs.gravity;
-  for (size_t i = 0; i < s_.a.size(); ++i) s_.a[i] = s_.inv_m[i] * s_.f[i] + g;
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
+  for (size_t i = 0; i < n; ++i) s_.a[i] = s_.inv_m[i] * s_.f[i] + g;
 }
 
 void CentralDifference::apply_fixed_nodes() {
@@ -220,16 +244,18 @@ void CentralDifference::apply_fixed_nodes() {
 // v_{n+1} = v* + dt/2 a_{n+1}   (eq. 2.31)
 void CentralDifference::correct(double dt) {
   const double half_dt = 0.5 * dt;
-  for (size_t i = 0; i < s_.v.size(); ++i) s_.v[i] += half_dt * s_.a[i];
+  const auto n = s_.v.size();
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
+  for (size_t i = 0; i < n; ++i) s_.v[i] += half_dt * s_.a[i];
 }
 
 // Work of gravity = sum m g . u (exact: gravity is a constant field).
 double CentralDifference::gravity_work() const {
   if (!model_.bcs.has_gravity()) return 0.0;
-  double w = 0.0;
-  for (size_t i = 0; i < s_.x.size(); ++i)
-    w += s_.m_lumped[i] * model_.bcs.gravity.dot(s_.x[i] - s_.X[i]);
-  return w;
+  return fixed_order_sum(s_.n_nodes(), threads_, [&](int n) {
+    const auto i = static_cast<size_t>(n);
+    return s_.m_lumped[i] * model_.bcs.gravity.dot(s_.x[i] - s_.X[i]);
+  });
 }
 
 // 1e-12 of the energy the model would carry with every node moving at the fastest wave speed:
@@ -272,8 +298,8 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
       load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->ledger().work : 0.0);
   for (const KinematicConstraint* c : opt_.constraints) w_ext += c->work();
   for (const StateLoad* load : opt_.loads) w_ext += load->work();
-  const double err =
-      energy_.update(leapfrog_kinetic_energy(s_, last_dt_), total_internal_energy(), w_ext);
+  const double err = energy_.update(leapfrog_kinetic_energy(s_, last_dt_, threads_),
+                                    total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
   if (auto bad = check_energy(err, opt_.monitor.energy_tolerance, s_.t)) return bad;
   if (!opt_.contact) return std::nullopt;
@@ -293,7 +319,7 @@ RunSummary CentralDifference::run() {
   const auto start = Clock::now();
   initialise();
   const auto loop_start = Clock::now();
-  const double loop_cpu_start = thread_cpu_seconds();
+  const double loop_cpu_start = cpu_seconds(threads_);
   if (auto bad = check(true)) {
     summary_.verdict = Verdict::unstable;
     summary_.instability = *bad;
@@ -352,7 +378,7 @@ RunSummary CentralDifference::run() {
     }
     report_progress(dt, start, last_report);
   }
-  summary_.step_cpu_seconds = thread_cpu_seconds() - loop_cpu_start;
+  summary_.step_cpu_seconds = cpu_seconds(threads_) - loop_cpu_start;
   summary_.step_wall_seconds = seconds_since(loop_start);
   summary_.end_time = s_.t;
   summary_.wall_seconds = seconds_since(start);

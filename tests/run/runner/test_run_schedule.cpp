@@ -77,3 +77,10 @@ TEST_CASE("a shared counter hands each number to one forked worker only", "[stud
   REQUIRE(got.size() == kTotal);
   for (std::size_t i = 0; i < kTotal; ++i) CHECK(got[i] == i);
 }
+
+TEST_CASE("the workers of a study share the cores between them", "[study][schedule][threads]") {
+  CHECK(threads_per_job(2, 1) == 2);  // one worker: every core
+  CHECK(threads_per_job(2, 2) == 1);
+  CHECK(threads_per_job(8, 3) == 2);  // never more threads than cores in total
+  CHECK(threads_per_job(2, 4) == 1);  // at least one
+}
