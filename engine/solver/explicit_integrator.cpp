@@ -150,6 +150,9 @@ void CentralDifference::initialise() {
   summary_.n_elements = mesh.n_elements();
 }
 
+// Up to this many steps before an output time are made equal (docs/time-step.md).
+constexpr double kEqualLandingSteps = 64.0;
+
 StepChoice CentralDifference::next_dt() const {
   StepChoice step{opt_.time.dt_safety * last_eval_.stable_dt, StepLimiter::structure};
   if (opt_.time.max_dt < step.dt) step = {opt_.time.max_dt, StepLimiter::max_dt};
@@ -160,8 +163,17 @@ StepChoice CentralDifference::next_dt() const {
   double stop = opt_.time.end_time;
   if (opt_.time.output_interval > 0.0)
     stop = std::min(stop, static_cast<double>(next_output_index_) * opt_.time.output_interval);
-  // Land exactly on the next output time or the end, rather than step a hair short of it.
-  if (s_.t + step.dt * (1.0 + 1e-9) >= stop) step = {stop - s_.t, StepLimiter::landing};
+  // Land exactly on the next output time or the end, rather than step a hair short of it. The
+  // n = ceil(remaining / dt) steps the landing needs are made equal (as many steps as full
+  // steps plus a short one), so the step does not jump at every output time: the leapfrog
+  // energy measure is consistent only between steps of one length (with an output interval of
+  // 1.33 steps, full and 0.33 steps alternated and the coarse Hertz test's energy balance read
+  // 0.8 % at -O3 and 5 % at -O1, against 0.02 % with equal steps). A step that lands in one
+  // counts as `landing`; an equal share keeps the bound that set it.
+  const double remaining = stop - s_.t;
+  if (s_.t + step.dt * (1.0 + 1e-9) >= stop) return {remaining, StepLimiter::landing};
+  const double n = std::ceil(remaining / step.dt * (1.0 - 1e-9));
+  if (n <= kEqualLandingSteps) step.dt = remaining / n;
   return step;
 }
 

@@ -26,6 +26,13 @@ TEST_CASE("DCR Hertz: two elastic spheres, coarse mesh", "[dcr][hertz]") {
                    << test::relative_error(r.duration, r.hertz.duration) << "), peak force "
                    << r.force_max << " N vs " << r.hertz.force_max << " (rel "
                    << test::relative_error(r.force_max, r.hertz.force_max) << ")");
+  WARN("work: projection " << r.work_parts.projection << " J, impulses " << r.work_parts.impulses
+                           << " J, restitution " << r.work_parts.restitution << " J, injected "
+                           << r.injected << " J, initial KE " << r.initial_kinetic << " J; steps "
+                           << r.summary.steps << ", contact-limited " << r.summary.limiters.contact
+                           << ", dt_contact_min " << r.summary.dt_contact_min << ", dt_initial "
+                           << r.summary.dt_initial << ", energy balance "
+                           << r.summary.energy_balance_error);
   REQUIRE(r.summary.verdict == Verdict::completed);
   CHECK(r.momentum_error < 1e-10);
   CHECK(test::relative_error(r.duration, r.hertz.duration) < 0.10);
