@@ -150,8 +150,10 @@ void CentralDifference::initialise() {
   summary_.n_elements = mesh.n_elements();
 }
 
-// Up to this many steps before an output time are made equal (docs/time-step.md).
-constexpr double kEqualLandingSteps = 64.0;
+// When an output time is at most this many steps away, the steps to it are made equal; farther,
+// full steps are taken until it is (one step in 8 then shortened by at most 1/8, and regular
+// steps remain between output times for the energy check).
+constexpr double kEqualLandingSteps = 8.0;
 
 StepChoice CentralDifference::next_dt() const {
   StepChoice step{opt_.time.dt_safety * last_eval_.stable_dt, StepLimiter::structure};
