@@ -139,6 +139,8 @@ void print_summary_table(const RunRecord& r) {
   fmt::print("  {:<15}{:.3g} % (largest energy-balance error)\n", "energy error",
              100.0 * s.energy_balance_error);
   fmt::print("  {:<15}{}\n", "verdict", to_string(s.verdict));
+  if (contact.solve_warning && !contact.solve_warning().empty())
+    fmt::print("  {:<15}{}\n", "warning", contact.solve_warning());
   if (s.verdict == Verdict::unstable)
     fmt::print("  {:<15}{}\n", "instability", instability_text(s.instability));
   fmt::print("  {:<15}{}\n", "results", r.args.out.string());
@@ -197,6 +199,8 @@ std::string summary_toml(const RunRecord& r) {
   if (contact.model)
     t += fmt::format("description = {}\nwork = {}  # J, of the contact on the bodies\n",
                      toml_string(contact.description), toml_float(contact.model->ledger().work));
+  if (contact.solve_warning && !contact.solve_warning().empty())
+    t += fmt::format("warning = {}\n", toml_string(contact.solve_warning()));
   if (r.field_frames > 0)
     t += fmt::format("\n[fields]\nfile = {}\nframes = {}\n", toml_string(fields::kXdmfFile),
                      r.field_frames);

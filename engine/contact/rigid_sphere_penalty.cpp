@@ -28,7 +28,7 @@ constexpr std::array<double, 3> shape_at(int k) {
   return N;
 }
 
-// The stable-step search's safety (see stable_dt_limit, docs/contact-time-step.md): a point counts
+// The stable-step search's safety (see step_bound, docs/contact-time-step.md): a point counts
 // when twice the predictor's reach bound could bring it within kRoundOffMargin R of the sphere's
 // surface within the step; points closer than that always count.
 constexpr double kReachSafety = 2.0;

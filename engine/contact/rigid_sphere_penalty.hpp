@@ -206,12 +206,12 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
 
   // |x_q - x_s|^2 of every point (3 per triangle), as add_forces last computed them on the
   // state d2_of_ at time d2_t_ (null when they are not add_forces's: after begin_step, as the
-  // sphere moves, or after stable_dt_limit recomputed them for another state). stable_dt_limit
+  // sphere moves, or after step_bound recomputed them for another state). step_bound
   // reuses them for that state and time: the engine does not move the nodes between the two.
   mutable std::vector<double> d2_;
   mutable const State* d2_of_ = nullptr;
   double d2_t_ = 0.0;
-  mutable std::vector<std::pair<double, int>> scratch_;  // stable_dt_limit: (d^2, triangle)
+  mutable std::vector<std::pair<double, int>> scratch_;  // step_bound: (d^2, triangle)
 };
 
 }  // namespace ccm

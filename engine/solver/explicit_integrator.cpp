@@ -169,6 +169,10 @@ void CentralDifference::initialise() {
   summary_.n_elements = mesh.n_elements();
 }
 
+// When an output time (not the end) is at most this many steps away, the steps to it are made
+// equal: a full step and a short one become two equal ones.
+constexpr double kEqualLandingSteps = 2.0;
+
 // The one safety factor s = dt_safety applies here, to the structure's stable step and to the
 // stiffness a contact model adds, combined in squares; a contact's kinematic bound caps the
 // step as it is (eq. CT.1, engine/contact/contact_model.hpp; docs/contact-time-step.md).
@@ -189,8 +193,17 @@ StepChoice CentralDifference::next_dt() const {
   double stop = opt_.time.end_time;
   if (opt_.time.output_interval > 0.0)
     stop = std::min(stop, static_cast<double>(next_output_index_) * opt_.time.output_interval);
-  // Land exactly on the next output time or the end, rather than step a hair short of it.
-  if (s_.t + step.dt * (1.0 + 1e-9) >= stop) step = {stop - s_.t, StepLimiter::landing};
+  // Land exactly on the next output time or the end, rather than step a hair short of it. When
+  // an output time is less than two steps away, the two steps to it are made equal (as many
+  // steps as a full and a short one), so that the step does not alternate between a full and a
+  // short one at every output time: the leapfrog energy measure is consistent only between
+  // steps of one length (with an output interval of 1.33 steps, the coarse Hertz test's energy
+  // balance read 0.8 % at -O3 and 5 % at -O1, against 3e-5 with equal steps). A step that lands
+  // in one counts as `landing`; an equal share keeps the bound that set it.
+  const double remaining = stop - s_.t;
+  if (s_.t + step.dt * (1.0 + 1e-9) >= stop) return {remaining, StepLimiter::landing};
+  const double n = std::ceil(remaining / step.dt * (1.0 - 1e-9));
+  if (n <= kEqualLandingSteps && stop < opt_.time.end_time) step.dt = remaining / n;
   return step;
 }
 

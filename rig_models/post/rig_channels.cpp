@@ -53,19 +53,6 @@ TimeSeries artifact_angle_deg(std::span<const double> t, std::span<const double>
   return out;
 }
 
-TimeSeries raw_pressure_kpa(std::span<const double> t, std::span<const double> contact_force_n,
-                            double sensor_area_m2) {
-  require_same_size(t.size(), contact_force_n.size(), "raw pressure");
-  if (!(sensor_area_m2 > 0.0) || !std::isfinite(sensor_area_m2))
-    throw std::invalid_argument(
-        fmt::format("raw pressure: sensor area must be > 0 (got {} m^2)", sensor_area_m2));
-  TimeSeries out{{t.begin(), t.end()}, std::vector<double>(t.size())};
-  for (size_t i = 0; i < t.size(); ++i)
-    out.value[i] = std::abs(contact_force_n[i]) / sensor_area_m2 * 1e-3;  // (3.8), Pa -> kPa
-  check_time_series(out, "raw pressure");
-  return out;
-}
-
 TimeSeries sensed_pressure_kpa(const TimeSeries& raw_kpa, const PressureSensor& sensor,
                                std::span<const double> measurement_times) {
   const TimeSeries filtered =

@@ -1,5 +1,6 @@
 // The three rig channels from sampled simulation histories (thesis 3.3.3), on plain vectors:
-// impactor velocity V_i, artifact angle theta_a (3.7) and sensor pressure P (3.8), the latter
+// impactor velocity V_i, artifact angle theta_a (3.7) and sensor pressure P, the latter from
+// the DCR's contact output (eq. 3.8 is computed once, in engine/contact/dcr/contact_output.hpp)
 // passed through the sensor model (deadband, 64 Hz low-pass) and sampled at the measurement's
 // timestamps.
 #pragma once
@@ -22,11 +23,6 @@ TimeSeries impactor_velocity(std::span<const double> t, std::span<const Eigen::V
 // displacement along the impactor motion, x_z its distance from the centre of rotation (> 0).
 TimeSeries artifact_angle_deg(std::span<const double> t, std::span<const double> u_y,
                               std::span<const double> x_z);
-
-// P_raw(t) = |F_c(t)| / A_p   (thesis eq. 3.8), in kPa: F_c the contact force on the sensor
-// surface projected on the impactor axis [N], A_p the sensor area [m^2].
-TimeSeries raw_pressure_kpa(std::span<const double> t, std::span<const double> contact_force_n,
-                            double sensor_area_m2);
 
 // What the pressure sensor reads (thesis 3.3.3, docs/equations.md "Rig post-processing"): the
 // deadband on P_raw, then the first-order Butterworth low-pass at the cutoff (bilinear, at

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
+#include <string>
+#include <vector>
 #include <utility>
 
 #include "engine/bc/pin_joint.hpp"
@@ -13,7 +16,6 @@
 #include "rig_models/geometry/rig_model.hpp"
 #include "rig_models/post/rig_channels.hpp"
 #include "rig_models/signal/resample.hpp"
-#include "rig_models/sim/contact_probe.hpp"
 
 namespace ccm::rig {
 namespace {
@@ -44,8 +46,14 @@ TimeTable shifted_force(const OpenLoopDrive& d, double start) {
 struct Samples {
   std::vector<double> t;
   std::vector<Eigen::Vector3d> v_front, v_back;
-  std::vector<double> u_y, x_z, impulse, pin_angle;
+  std::vector<double> u_y, x_z, pressure_pa, pin_angle;
 };
+
+// The DCR's sensor pressure column (engine/contact/dcr/contact_output.hpp, thesis eq. 3.8).
+constexpr const char* kSensorSurface = "envelope/sensor";
+std::string sensor_pressure_column() {
+  return fmt::format("contact.{}.pressure", kSensorSurface);
+}
 
 RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, bool frictional_pin) {
   RigModelFacts f;
@@ -66,16 +74,22 @@ RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, bool fric
   return f;
 }
 
-// The raw channels (3.3.3): V_i of the two pearls, theta_a (3.7), the mean contact force over
-// each output interval from the probe's running impulse (3.8's F_c).
-RawHistories raw_histories(const Samples& s, const Vec3& track) {
+// The raw channels (3.3.3): V_i of the two pearls, theta_a (3.7), and the DCR's sensor pressure
+// P_raw = |F_c . d| / A_p (3.8, one implementation: the engine's contact output, its F_c the
+// mean over each output interval of the momentum the contact gave the sensor's nodes, A_p the
+// patch's mesh area, the area F_c is gathered over); the contact
+// force column is F_c . d = P_raw A_p.
+RawHistories raw_histories(const Samples& s, const Vec3& track, double sensor_mesh_area) {
   RawHistories r;
   r.t = s.t;
   r.impactor_velocity = impactor_velocity(s.t, s.v_front, s.v_back, track).value;
   r.angle_deg = artifact_angle_deg(s.t, s.u_y, s.x_z).value;
-  r.contact_force.assign(s.t.size(), 0.0);
-  for (size_t k = 1; k < s.t.size(); ++k)
-    r.contact_force[k] = (s.impulse[k] - s.impulse[k - 1]) / (s.t[k] - s.t[k - 1]);
+  r.pressure_kpa.resize(s.t.size());
+  r.contact_force.resize(s.t.size());
+  for (size_t k = 0; k < s.t.size(); ++k) {
+    r.pressure_kpa[k] = 1e-3 * s.pressure_pa[k];
+    r.contact_force[k] = s.pressure_pa[k] * sensor_mesh_area;
+  }
   r.pin_angle = s.pin_angle;
   return r;
 }
@@ -86,7 +100,7 @@ RigChannels sensed_channels(const RawHistories& raw, const RigCaseTable& table,
   RigChannels c;
   if (raw.t.size() < 2) return c;
   const TimeSeries V{raw.t, raw.impactor_velocity}, theta{raw.t, raw.angle_deg};
-  const TimeSeries P_raw = raw_pressure_kpa(raw.t, raw.contact_force, table.rig.sensor_area.value);
+  const TimeSeries P_raw{raw.t, raw.pressure_kpa};
   const PressureSensor sensor{table.rig.sensor_deadband.value, table.rig.low_pass_cutoff.value};
   const double t0 = raw.t.front(), t1 = raw.t.back();
   if (!trial) {
@@ -152,14 +166,19 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   contact.surfaces = rig.contact_surfaces;
   contact.friction = setup.geometry.contact.friction.value;
   contact.restitution = setup.geometry.contact.restitution.value;
+  contact.output.force_axis = rig.track;
+  contact.output.sensors = {kSensorSurface};
   dcr::DcrContact dcr(rig.model.mesh, contact, rig.model.bcs.fixed_nodes);
-  ContactProbe probe(dcr, rig.sensor_nodes, rig.track);
+  const std::vector<std::string> columns = dcr.history_columns();
+  const auto pressure_at = static_cast<size_t>(
+      std::find(columns.begin(), columns.end(), sensor_pressure_column()) - columns.begin());
+  std::vector<double> row;
 
   Samples s;
   RunOptions opt;
   opt.time.end_time = w.end - w.start;
   opt.time.output_interval = table.simulation.output_interval.value;
-  opt.contact = &probe;
+  opt.contact = &dcr;
   opt.constraints.push_back(&guide);
   if (pin_joint) opt.constraints.push_back(pin_joint.get());
   if (weight) opt.loads.push_back(weight.get());
@@ -171,13 +190,15 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
     s.v_back.push_back(st.v[static_cast<size_t>(rig.pearl_back)]);
     s.u_y.push_back(st.x[angle].y() - st.X[angle].y());
     s.x_z.push_back(rig.pin_point.z() - st.x[angle].z());  // current distance below the pin
-    s.impulse.push_back(probe.impulse());
+    row.clear();
+    dcr.append_history(st, row);  // closes the output interval of the contact output
+    s.pressure_pa.push_back(row.at(pressure_at));
     s.pin_angle.push_back(pin_joint ? pin_joint->angle() : 0.0);
   };
   if (req.instrument) req.instrument(rig.model, opt);
   out.summary = run_explicit(rig.model, opt);
   out.model = facts_of(rig, table, pin);
-  out.raw = raw_histories(s, rig.track);
+  out.raw = raw_histories(s, rig.track, rig.sensor_mesh_area);
   out.channels = sensed_channels(out.raw, table, req.trial);
   return out;
 }

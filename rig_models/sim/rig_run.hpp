@@ -47,7 +47,8 @@ struct RawHistories {
   std::vector<double> t;
   std::vector<double> impactor_velocity;  // V_i, m/s
   std::vector<double> angle_deg;          // theta_a, eq. 3.7
-  std::vector<double> contact_force;      // F_c on the sensor, mean over each interval, N
+  std::vector<double> pressure_kpa;       // P_raw, eq. 3.8 (the DCR's contact output), kPa
+  std::vector<double> contact_force;      // F_c . d on the sensor, mean over each interval, N
   std::vector<double> pin_angle;          // rad (free artifact)
 };
 

@@ -239,6 +239,14 @@ ContactSetup build_dcr(const Scene& scene, const Model& model) {
       "dcr: {} ({} triangles), self_contact {}, restitution {:.4g}, friction {:.4g}",
       fmt::join(settings.surfaces, ", "), triangles, c.self_contact, c.restitution, c.friction);
   setup.history = dcr.get();
+  setup.solve_warning = [model = dcr.get()] {
+    const long v = model->unconverged_velocity_solves(), p = model->unconverged_projections();
+    if (v == 0 && p == 0) return std::string();
+    return fmt::format(
+        "dcr: {} velocity solves and {} position projections stopped at their sweep cap without "
+        "converging",
+        v, p);
+  };
   setup.model = std::move(dcr);
   return setup;
 }

@@ -2,6 +2,7 @@
 // velocities, gravity), the output request and the time and monitor settings.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -31,6 +32,9 @@ struct ContactSetup {
   const HistorySource* history = nullptr;  // the model's history columns, if it has any
   std::string model_name = "none";         // "none", "rigid_penalty"
   std::string description;                 // one line for the run summary
+  // Non-empty after a run when some contact solves stopped at their sweep cap without
+  // converging (DCR): a warning for the run summary, with the counts.
+  std::function<std::string()> solve_warning;
 };
 
 // Throws ConfigError naming the scene file, line and key for an unknown body, a surface that does

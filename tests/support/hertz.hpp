@@ -60,6 +60,9 @@ struct HertzRun {
   double mass = 0.0;       // lumped mass of one sphere (the mesh's volume, not 4/3 pi R^3)
   double momentum_error = 0.0;
   int elements = 0;
+  dcr::DcrContact::WorkParts work_parts;  // the contact's work by mechanism [J]
+  double injected = 0.0;                  // the contact's injected_energy() at the end [J]
+  double initial_kinetic = 0.0;           // m v^2 / 4 of the pair [J]
   RunSummary summary;
 };
 
@@ -109,6 +112,9 @@ inline HertzRun run_hertz(const HertzCase& c) {
     }
   };
   out.summary = run_explicit(model, opt);
+  out.work_parts = contact.work_parts();
+  out.injected = contact.injected_energy();
+  out.initial_kinetic = 0.25 * out.mass * c.v * c.v;
   out.duration = last - first;
   for (size_t i = 1; i + 1 < t.size(); ++i)
     out.force_max =

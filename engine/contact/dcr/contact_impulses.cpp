@@ -58,7 +58,7 @@ double update_row(ContactRow& r, const std::vector<double>& inv_m, std::vector<V
 
 }  // namespace
 
-int ContactImpulses::solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
+ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
                            const std::vector<double>& inv_m, std::vector<Vec3>& v,
                            const ImpulseSettings& settings) {
   // Reference speed: the fastest contact node (a solve that moves no node by more than
@@ -67,18 +67,22 @@ int ContactImpulses::solve(std::vector<ContactRow>& rows, const std::vector<int>
   for (const ContactRow& r : rows)
     for (int n : r.nodes) v_ref = std::max(v_ref, v[static_cast<size_t>(n)].norm());
   const double limit = settings.tolerance * std::max(v_ref, 1e-300);
-  int sweep = 0;
-  while (sweep < settings.max_iterations) {
+  ImpulseSolve out{0, rows.empty()};
+  while (out.sweeps < settings.max_iterations) {
     double worst = 0.0;
+    const int sweep = out.sweeps;
     const bool forward = sweep % 2 == 0;
     for (size_t j = 0; j < order.size(); ++j) {
       ContactRow& r = rows[static_cast<size_t>(order[forward ? j : order.size() - 1 - j])];
       worst = std::max(worst, update_row(r, inv_m, v, settings.friction));
     }
-    ++sweep;
-    if (worst <= limit) break;
+    ++out.sweeps;
+    if (worst <= limit) {
+      out.converged = true;
+      break;
+    }
   }
-  return sweep;
+  return out;
 }
 
 }  // namespace ccm::dcr

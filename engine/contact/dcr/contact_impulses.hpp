@@ -42,12 +42,17 @@ struct ImpulseSettings {
   double tolerance = 1e-9;   // stop when no row changes a velocity by more than this x v_ref
 };
 
+struct ImpulseSolve {
+  int sweeps = 0;
+  bool converged = true;  // false: stopped at max_iterations with a row still changing
+};
+
 class ContactImpulses {
  public:
   // Solves the rows, visited in `order` (a permutation of their indices), against the
   // velocities v (indexed by global node id; only the rows' nodes are read and written) and
-  // returns the number of sweeps made.
-  int solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
+  // returns the number of sweeps made and whether the last one met the tolerance.
+  ImpulseSolve solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
             const std::vector<double>& inv_m, std::vector<Vec3>& v,
             const ImpulseSettings& settings);
 };

@@ -46,7 +46,7 @@ struct DcrSettings {
   int max_iterations = 100;           // Gauss-Seidel sweeps of the velocity solve
   // Gauss-Seidel sweeps of the position projection (per round of re-detection).
   int max_projection_iterations = 400;
-  double step_fraction = 0.5;   // dt limit: relative motion per step <= this x min edge
+  double step_fraction = 0.5;   // dt limit: a pair's approach per step <= gap + this x its edge
   double proximity = 0.1;       // persistent contacts: gap <= this x min edge
   ContactOutputRequest output;  // pair forces and sensor pressures, when asked
 };
@@ -69,16 +69,22 @@ class DcrContact : public ContactModel, public HistorySource {
   void correct(State& state, double dt) override;
   // Publishes the ledger (work, injected energy, failure) of the step.
   void end_step(const State& state, double dt) override;
-  // A kinematic bound only: step_fraction of the shortest edge at the fastest node's speed, or
-  // the bodies' reach time when that is longer (docs/contact-time-step.md, "DCR").
+  // A kinematic bound only, per candidate pair (docs/contact-time-step.md, "DCR").
   ContactStepBound step_bound(const State& state) const override;
-  // Work on the bodies so far, but for this step's projection: the integrator measured the
-  // stored energy before the contact moved any node, so this step's projection energy enters
-  // its balance with the next evaluation (the history column contact.work has it all).
-  double work() const { return work_ - projection_work_; }
+  // Work on the bodies so far, but for the stored energy this step's projection put into the
+  // elements: the integrator measured the stored energy before the contact moved any node, so
+  // that part enters its balance with the next evaluation (the kinetic part of the projection,
+  // dt/2 v* . df, it sees in this step; the history column contact.work has it all).
+  double work() const { return work_ - projection_stored_; }
   // Every DCR contact is between bodies of the model and can only dissipate (inelastic
-  // constraints, dissipative restitution and friction): net positive work is injected.
-  double injected_energy() const { return std::max(0.0, work()); }
+  // constraints, dissipative restitution and friction): net positive work is injected. The
+  // constraints' work (projection and impulses, which hand the impact energy back and forth
+  // between them from one step to the next: 5x the impact energy each way on the coarse Hertz
+  // test, docs/contact-time-step.md) is netted over the run, but never against the
+  // restitution's dissipation, which is counted apart.
+  double injected_energy() const {
+    return std::max(0.0, parts_.projection + parts_.impulses) + std::max(0.0, parts_.restitution);
+  }
   // Non-empty when the projection left a penetration deeper than kFailurePenetration times the
   // shortest surface edge (the iterations did not converge: the contact no longer holds).
   std::string failure() const;
@@ -93,7 +99,20 @@ class DcrContact : public ContactModel, public HistorySource {
   // and all contacts held (acting or within the proximity distance).
   int active_contacts() const { return active_; }
   int held_contacts() const { return static_cast<int>(constraints_.size()); }
-  int solver_sweeps() const { return sweeps_; }  // Jacobi sweeps of the velocity solve
+  int solver_sweeps() const { return sweeps_; }  // Gauss-Seidel sweeps of the velocity solve
+  // Solves that stopped at their sweep cap without meeting their tolerance, since the start:
+  // velocity solves (max_iterations) and position projections (max_projection_iterations in a
+  // round). The run goes on (momentum stays exact, the work stays booked, the next step's
+  // projection takes up what is left; a projection that leaves a penetration deeper than
+  // kFailurePenetration ends it, failure()); the summary reports them as a warning.
+  // The work so far [J] by mechanism: the position projection (dQ + dK, projection_update.hpp),
+  // the normal and friction impulses, the pair restitution. Their sum is the contact's work.
+  struct WorkParts {
+    double projection = 0.0, impulses = 0.0, restitution = 0.0;
+  };
+  const WorkParts& work_parts() const { return parts_; }
+  long unconverged_velocity_solves() const { return unconverged_velocity_; }
+  long unconverged_projections() const { return unconverged_projection_; }
   const PairRestitution& restitution() const { return restitution_; }
   double residual_penetration() const { return residual_; }  // max -g/|grad_p g| [m], >= 0
   const SurfaceFeatures& features() const { return features_; }
@@ -108,8 +127,8 @@ class DcrContact : public ContactModel, public HistorySource {
   void add_node_face(const State& s, int p, const Triangle& t);
   void add_edge_edge(const State& s, const std::array<int, 2>& ea, const std::array<int, 2>& eb);
   bool bodies_may_touch(const State& s) const;
-  double bodies_reach_time(const State& state) const;
-  void project_positions(State& s);
+  double approach_limit(const State& state) const;
+  bool project_positions(State& s);
   void exchange_momentum(State& s, double dt);
   ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const;
   void collect_pair_impulses(const std::vector<Vec3>& x);
@@ -148,7 +167,9 @@ class DcrContact : public ContactModel, public HistorySource {
   std::vector<char> touched_;             // scratch: per node, moved by the projection
   std::vector<Vec3> v_end_;               // scratch: end-of-step velocities of constrained nodes
   double work_ = 0.0;
-  double projection_work_ = 0.0;  // dQ of this step's projection (included in work_)
+  double projection_stored_ = 0.0;  // dQ of this step's projection (included in work_)
+  WorkParts parts_;
+  long unconverged_velocity_ = 0, unconverged_projection_ = 0;
   double residual_ = 0.0;
   double last_impulse_ = 0.0;  // total normal impulse of the last step [N s]
   int active_ = 0;

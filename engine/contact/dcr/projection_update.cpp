@@ -76,13 +76,13 @@ double ProjectionUpdate::evaluate(const Element& e, const Vec3 (&x)[4], double s
   return e.reference.V0 * energy_density(e.model, F, e.lame);
 }
 
-double ProjectionUpdate::apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
+ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
                                std::span<const double> inv_m, double dt) {
   const std::vector<Vec3>& x = s.x;
   ++epoch_;
   for (size_t k = 0; k < moved.size(); ++k)
     before_index_[static_cast<size_t>(moved[k])] = static_cast<int>(k);
-  double dE = 0.0;
+  EnergyChange dE;
   for (int n : moved)
     for (int j = first_[static_cast<size_t>(n)]; j < first_[static_cast<size_t>(n) + 1]; ++j) {
       const auto k = static_cast<size_t>(adjacent_[static_cast<size_t>(j)]);
@@ -97,12 +97,12 @@ double ProjectionUpdate::apply(std::span<const int> moved, std::span<const Vec3>
         x_old[c] = b >= 0 ? before[static_cast<size_t>(b)] : x[i];
         df[c].setZero();
       }
-      dE += evaluate(e, x_new, 1.0, df) - evaluate(e, x_old, -1.0, df);
+      dE.stored += evaluate(e, x_new, 1.0, df) - evaluate(e, x_old, -1.0, df);
       for (int c = 0; c < 4; ++c) {
         const auto i = static_cast<size_t>(e.nodes[c]);
         if (inv_m[i] == 0.0) continue;  // fixed: the boundary condition keeps it at rest
         s.a[i] += inv_m[i] * df[c];
-        dE += 0.5 * dt * s.v[i].dot(df[c]);
+        dE.kinetic += 0.5 * dt * s.v[i].dot(df[c]);
       }
     }
   for (int n : moved) before_index_[static_cast<size_t>(n)] = -1;

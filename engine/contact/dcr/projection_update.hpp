@@ -33,10 +33,15 @@ class ProjectionUpdate {
   // Only the elements around `movable` nodes (the contact surfaces) are prepared.
   ProjectionUpdate(const ModelMesh& mesh, std::span<const int> movable);
 
+  struct EnergyChange {
+    double stored = 0.0;   // dQ [J]
+    double kinetic = 0.0;  // dK [J]
+    double total() const { return stored + kinetic; }
+  };
   // The nodes `moved` (unique) went from `before` (same order) to their positions in s.x: adds
   // the force change divided by the node's mass into s.a (inv_m: 1/m, 0 for fixed nodes) and
-  // returns dE [J] for the step dt.
-  double apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
+  // returns dQ and dK for the step dt.
+  EnergyChange apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
                std::span<const double> inv_m, double dt);
 
  private:

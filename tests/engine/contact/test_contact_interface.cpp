@@ -1,5 +1,5 @@
 // The contact interface cannot be half-implemented: ContactModel is abstract (its five pure
-// virtual methods), and every concrete model of the engine and the rig implements all of them
+// virtual methods), and every concrete model and wrapper implements all of them
 // (an abstract class cannot be named here as constructible). A model that leaves one out fails
 // these static assertions at compile time.
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include "engine/contact/contact_model.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
-#include "rig_models/sim/contact_probe.hpp"
+#include "io/fields/contact_impulse_probe.hpp"
 
 namespace {
 
@@ -17,7 +17,7 @@ using namespace ccm;
 static_assert(std::is_abstract_v<ContactModel>);
 static_assert(!std::is_abstract_v<dcr::DcrContact>);
 static_assert(!std::is_abstract_v<RigidSpherePenalty>);
-static_assert(!std::is_abstract_v<rig::ContactProbe>);
+static_assert(!std::is_abstract_v<fields::ContactImpulseProbe>);
 // The name and the ledger are base-class data: not virtual, nothing to forward.
 static_assert(std::is_same_v<decltype(&ContactModel::ledger),
                              const ContactLedger& (ContactModel::*)() const>);

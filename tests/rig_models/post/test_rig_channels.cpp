@@ -40,17 +40,6 @@ TEST_CASE("rig channels: theta_a = (180/pi) atan(u_y / x_z) (eq. 3.7)", "[rig]")
                     "at 0.1 s)");
 }
 
-TEST_CASE("rig channels: P_raw = |F_c| / A_p in kPa (eq. 3.8)", "[rig]") {
-  // 16 N on 1.6e-3 m^2 is 1e4 Pa = 10 kPa, either sign of the projected force
-  const TimeSeries p = raw_pressure_kpa(std::vector<double>{0.0, 1.0, 2.0},
-                                        std::vector<double>{16.0, -16.0, 0.0}, 1.6e-3);
-  CHECK(relative_error(p.value[0], 10.0) < 1e-15);
-  CHECK(relative_error(p.value[1], 10.0) < 1e-15);
-  CHECK(p.value[2] == 0.0);
-  CHECK_THROWS_WITH(raw_pressure_kpa(std::vector<double>{0.0}, std::vector<double>{1.0}, 0.0),
-                    "raw pressure: sensor area must be > 0 (got 0 m^2)");
-}
-
 TEST_CASE("rig channels: the sensed pressure is deadband, low-pass, then sampled", "[rig]") {
   // Simulation output at 12.8 kHz: a 10 kPa step at t0 = 10 ms, and a 0.5 kPa bump (below a
   // 1 kPa deadband) before it. Measurement times every 1/128 s = 100 output steps.

@@ -83,6 +83,12 @@ TEST_CASE("Two elastic bars end-on exchange velocities in 2L/c", "[dcr][bars]") 
   // Contact is seen at output samples 1/400 of 2L/c apart; 5 % is the issue's bound.
   CHECK(test::relative_error(r.contact_end - r.contact_start, T) < 0.05);
   CHECK(r.summary.energy_balance_error < 0.01);
+  // No step collapse (issue 15 item 3): no contact-limited step below 0.1 x the structural one.
+  INFO("steps " << r.summary.steps << ", contact-limited " << r.summary.limiters.contact
+                << ", smallest " << r.summary.dt_contact_min << " s, structural "
+                << r.summary.dt_initial << " s");
+  CHECK((r.summary.limiters.contact == 0 ||
+         r.summary.dt_contact_min >= 0.1 * r.summary.dt_initial));
 }
 
 // e = 0: a perfectly plastic impact of the two bodies. When they separate, the restitution

@@ -26,8 +26,25 @@ TEST_CASE("DCR Hertz: two elastic spheres, coarse mesh", "[dcr][hertz]") {
                    << test::relative_error(r.duration, r.hertz.duration) << "), peak force "
                    << r.force_max << " N vs " << r.hertz.force_max << " (rel "
                    << test::relative_error(r.force_max, r.hertz.force_max) << ")");
+  INFO("work: projection " << r.work_parts.projection << " J, impulses " << r.work_parts.impulses
+                           << " J, restitution " << r.work_parts.restitution << " J, injected "
+                           << r.injected << " J, initial KE " << r.initial_kinetic << " J; steps "
+                           << r.summary.steps << ", contact-limited " << r.summary.limiters.contact
+                           << ", dt_contact_min " << r.summary.dt_contact_min << ", dt_initial "
+                           << r.summary.dt_initial << ", energy balance "
+                           << r.summary.energy_balance_error);
   REQUIRE(r.summary.verdict == Verdict::completed);
   CHECK(r.momentum_error < 1e-10);
   CHECK(test::relative_error(r.duration, r.hertz.duration) < 0.10);
   CHECK(test::relative_error(r.force_max, r.hertz.force_max) < 0.15);
+  // Energy (issue 15 item 4): measured 2.6e-5 at -O3 and -O2 (FMA contraction) and at -O1
+  // (none); it read 0.8 % and 5.0 % while the step alternated between a full and a 0.33 step
+  // at every output time. 0.1 % is the issue's bound on the spread between builds. The
+  // contact's net work is dissipation (the constraints hand 8x the impact energy back and
+  // forth between projection and impulses; their net must not be positive beyond round-off).
+  CHECK(r.summary.energy_balance_error < 1e-3);
+  CHECK(r.injected < 1e-3 * r.initial_kinetic);
+  // No step collapse (issue 15 item 3): no contact-limited step below 0.1 x the structural one.
+  CHECK((r.summary.limiters.contact == 0 ||
+         r.summary.dt_contact_min >= 0.1 * r.summary.dt_initial));
 }

@@ -56,7 +56,7 @@ void check_against_kernel(MaterialModel material) {
 
   const double dt = 1e-5;
   dcr::ProjectionUpdate update(mesh, surface);
-  const double dE = update.apply(moved, before, s, inv_m, dt);
+  const double dE = update.apply(moved, before, s, inv_m, dt).total();
 
   double expected_dE = new_eval.energy - old_eval.energy;
   double force_scale = 0.0;

@@ -1,0 +1,77 @@
+#include "engine/contact/dcr/step_limit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ccm::dcr {
+namespace {
+
+// The largest approach speed along the unit normal n (pointing from side A to side B) of a node
+// of B towards a node of A: max over pairs of -(v_b - v_a) . n, >= 0.
+template <size_t NA, size_t NB>
+double approach_speed(const std::array<int, NA>& a, const std::array<int, NB>& b, const Vec3& n,
+                      const std::vector<Vec3>& v) {
+  double u = 0.0;
+  for (int i : a)
+    for (int j : b) u = std::max(u, -(v[static_cast<size_t>(j)] - v[static_cast<size_t>(i)]).dot(n));
+  return u;
+}
+
+double edge_length(const std::vector<Vec3>& X, int a, int b) {
+  return (X[static_cast<size_t>(b)] - X[static_cast<size_t>(a)]).norm();
+}
+
+// dt allowed by one pair: (gap + step_fraction L) / u, infinity when u = 0.
+double allowed(double gap, double L, double u, double step_fraction) {
+  return u > 0.0 ? (gap + step_fraction * L) / u : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
+                              const std::vector<Vec3>& X, const std::vector<Vec3>& x,
+                              const std::vector<Vec3>& v, double step_fraction) {
+  PairStepLimit out{std::numeric_limits<double>::infinity(), -1};
+  auto keep = [&](double dt, size_t k) {
+    if (dt < out.dt) out = {dt, static_cast<int>(k)};
+  };
+  for (size_t k = 0; k < c.node_face.size(); ++k) {
+    const int p = f.nodes[static_cast<size_t>(c.node_face[k].node)];
+    const Triangle& t = f.faces[static_cast<size_t>(c.node_face[k].face)];
+    const Vec3& a = x[t[0]];
+    Vec3 n = (x[t[1]] - a).cross(x[t[2]] - a);
+    if (!(n.norm() > 0.0)) continue;
+    n.normalize();
+    double d = (x[static_cast<size_t>(p)] - a).dot(n);
+    if (d < 0.0) {
+      n = -n;
+      d = -d;
+    }
+    const double L = std::min({edge_length(X, t[0], t[1]), edge_length(X, t[1], t[2]),
+                               edge_length(X, t[2], t[0])});
+    keep(allowed(d, L, approach_speed(t, std::array<int, 1>{p}, n, v), step_fraction), k);
+  }
+  const size_t n_nf = c.node_face.size();
+  for (size_t k = 0; k < c.edge_edge.size(); ++k) {
+    const auto& ea = f.edges[static_cast<size_t>(c.edge_edge[k].edge_a)];
+    const auto& eb = f.edges[static_cast<size_t>(c.edge_edge[k].edge_b)];
+    const Vec3 da = x[ea[1]] - x[ea[0]], db = x[eb[1]] - x[eb[0]];
+    const Vec3 between = 0.5 * (x[eb[0]] + x[eb[1]] - x[ea[0]] - x[ea[1]]);
+    Vec3 n = da.cross(db);
+    // Parallel edges: the normal is the direction between their midpoints.
+    if (!(n.norm() > 1e-6 * da.norm() * db.norm())) n = between;
+    if (!(n.norm() > 0.0)) continue;
+    n.normalize();
+    double d = (x[eb[0]] - x[ea[0]]).dot(n);
+    if (d < 0.0) {
+      n = -n;
+      d = -d;
+    }
+    const double L = std::min(edge_length(X, ea[0], ea[1]), edge_length(X, eb[0], eb[1]));
+    keep(allowed(d, L, approach_speed(ea, eb, n, v), step_fraction), n_nf + k);
+  }
+  return out;
+}
+
+}  // namespace ccm::dcr

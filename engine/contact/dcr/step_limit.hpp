@@ -1,0 +1,31 @@
+// The DCR step limit, local and relative (docs/contact-time-step.md, "DCR"): over every candidate
+// pair of the broad phase (a node and a face, two edges), the step may not let the two features
+// approach by more than their gap plus step_fraction times their own shortest edge:
+//   dt <= (gap + step_fraction * L_pair) / u_pair,
+// u_pair the largest approach speed along the pair's normal of a node of one feature towards a
+// node of the other (0 for features that separate or slide: no limit), gap their distance along
+// that normal, L_pair the shortest reference edge of the two features. A rigid translation of both
+// bodies (u = 0), a fast body far from anything (a large gap) and a small edge elsewhere on the
+// surface no longer shorten the step; the projection of a pair that comes into contact stays
+// within step_fraction of its own edges.
+#pragma once
+
+#include <vector>
+
+#include "engine/contact/dcr/contact_surface.hpp"
+#include "engine/contact/dcr/swept_box_hash.hpp"
+#include "engine/core/types.hpp"
+
+namespace ccm::dcr {
+
+struct PairStepLimit {
+  double dt = 0.0;  // the smallest allowed step over the pairs (infinity: none approaches)
+  int pair = -1;    // candidate index that set it (node-face first, then edge-edge), -1: none
+};
+
+// X: reference positions; x, v: current positions and velocities (all indexed by global node id).
+PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
+                              const std::vector<Vec3>& X, const std::vector<Vec3>& x,
+                              const std::vector<Vec3>& v, double step_fraction);
+
+}  // namespace ccm::dcr
