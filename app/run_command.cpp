@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -11,11 +12,14 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "engine/distributed/distributed_run.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
 #include "app/output_file.hpp"
 #include "app/progress_line.hpp"
+#include "study/parallel/rank_context.hpp"
 #include "study/provenance/timestamp.hpp"
 #include "study/provenance/version.hpp"
 #include "study/runner/content_hash.hpp"
@@ -71,6 +75,7 @@ struct RunRecord {
   const RunArgs& args;
   const Prepared& prepared;
   const RunSummary& summary;
+  const distributed::PartitionReport& partition;  // ranks == 1: a serial run
   std::string started;
   std::string finished;
   int exit_code = 0;
@@ -81,6 +86,36 @@ std::string instability_text(const Instability& i) {
   if (i.element >= 0) s += fmt::format(" (element {})", i.element);
   if (i.node >= 0) s += fmt::format(" (node {})", i.node);
   return s;
+}
+
+double largest(const std::vector<double>& v) {
+  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+}
+
+void print_partition(const distributed::PartitionReport& p) {
+  if (p.ranks <= 1) return;
+  fmt::print("  {:<15}{} ranks (METIS), imbalance {:.2f} %, {} cut faces, {} contact region nodes\n",
+             "partition", p.ranks, 100.0 * p.imbalance, p.cut_faces, p.contact_region_nodes);
+  fmt::print("  {:<15}communication {:.3f} s, contact {:.3f} s (slowest rank)\n", "",
+             largest(p.communication_seconds), largest(p.contact_seconds));
+}
+
+std::string partition_toml(const distributed::PartitionReport& p) {
+  if (p.ranks <= 1) return {};
+  std::string t = "\n[partition]  # mpirun -np N ccm run: METIS subdomains, one per rank\n";
+  t += fmt::format("ranks = {}\nimbalance = {}  # max part cost / mean - 1\ncut_faces = {}\n",
+                   p.ranks, toml_float(p.imbalance), p.cut_faces);
+  t += fmt::format("contact_region_nodes = {}\n", p.contact_region_nodes);
+  t += fmt::format("owned_nodes = [{}]\nhalo_nodes = [{}]\nneighbours = [{}]\nelements = [{}]\n",
+                   fmt::join(p.owned_nodes, ", "), fmt::join(p.halo_nodes, ", "),
+                   fmt::join(p.neighbours, ", "), fmt::join(p.elements, ", "));
+  t += fmt::format("step_seconds = [{}]\ncommunication_seconds = [{}]\ncontact_seconds = [{}]\n",
+                   fmt::join(p.step_seconds, ", "), fmt::join(p.communication_seconds, ", "),
+                   fmt::join(p.contact_seconds, ", "));
+  t += fmt::format("messages = [{}]\nmessage_doubles = [{}]\ncollectives = [{}]\n",
+                   fmt::join(p.messages, ", "), fmt::join(p.message_doubles, ", "),
+                   fmt::join(p.collectives, ", "));
+  return t;
 }
 
 void print_summary_table(const RunRecord& r) {
@@ -109,6 +144,7 @@ void print_summary_table(const RunRecord& r) {
   fmt::print("  {:<15}{:.3f} s (stepping: {:.3f} s wall, {:.3f} s thread CPU)\n", "wall time",
              s.wall_seconds, s.step_wall_seconds, s.step_cpu_seconds);
   fmt::print("  {:<15}{:.1f} ns\n", "per elem-step", s.ns_per_element_step);
+  print_partition(r.partition);
   fmt::print("  {:<15}{:.3g} % (largest energy-balance error)\n", "energy error",
              100.0 * s.energy_balance_error);
   fmt::print("  {:<15}{}\n", "verdict", to_string(s.verdict));
@@ -162,6 +198,7 @@ std::string summary_toml(const RunRecord& r) {
   if (contact.model)
     t += fmt::format("description = {}\nwork = {}  # J, of the contact on the bodies\n",
                      toml_string(contact.description), toml_float(contact.model->work()));
+  t += partition_toml(r.partition);
   for (const Body& b : mesh.bodies)
     t += fmt::format("\n[[bodies]]\nname = {}\nnodes = {}\nelements = {}\n", toml_string(b.name),
                      b.n_nodes, b.n_elements);
@@ -171,7 +208,21 @@ std::string summary_toml(const RunRecord& r) {
 // ---------------------------------------------------------------------------------------------
 // The command
 
-RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history) {
+// What the contact model of the scene reads and writes, for its replication on every rank.
+distributed::PartitionedContact partitioned_contact(const Prepared& p) {
+  distributed::PartitionedContact c;
+  const ContactSpec& spec = p.scene.contact;
+  c.phases.adds_forces = spec.kind == ContactKind::rigid_penalty;
+  c.phases.corrects = spec.kind == ContactKind::dcr;
+  // A body-pair restitution e < 1 changes the rigid motion of whole bodies.
+  const bool whole_bodies = spec.kind == ContactKind::dcr && spec.restitution < 1.0;
+  if (spec.kind != ContactKind::none)
+    c.region = distributed::contact_region(p.model.mesh, whole_bodies);
+  return c;
+}
+
+RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history,
+                     distributed::PartitionReport& partition) {
   RunOptions options;
   options.time = time_control(p.scene.time);
   options.monitor = p.scene.monitor;
@@ -180,29 +231,46 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   if (p.contact.history) history.add_source(*p.contact.history);
   ProgressLine progress;
   options.progress = progress.on_terminal(args.quiet);
-  const RunSummary summary = run_explicit(p.model, options);
+  const RunSummary summary =
+      partition.ranks > 1
+          ? distributed::run_partitioned(p.model, options, partitioned_contact(p), &partition)
+          : run_explicit(p.model, options);
   progress.finish();
   return summary;
 }
 
-int run(const RunArgs& args) {
+// Under mpirun with more than one rank, the scene's mesh is partitioned over the ranks (every
+// rank prepares the whole scene, steps its subdomain); rank 0 alone writes and prints.
+int run(const RunArgs& args, const study::RankContext& ranks) {
   const std::string started = utc_timestamp(SystemClock::now());
   Prepared p;
   prepare(args, p);
-  fs::create_directories(args.out);
-  write_atomic(args.out / "scene.toml", p.text);
+  if (ranks.is_root()) {
+    fs::create_directories(args.out);
+    write_atomic(args.out / "scene.toml", p.text);
+  }
+  RunArgs rank_args = args;
+  rank_args.quiet = args.quiet || !ranks.is_root();
   HistoryRecorder history(p.model.mesh, p.output);
-  const RunSummary summary = run_scene(args, p, history);
+  distributed::PartitionReport partition;
+  partition.ranks = ranks.size();
+  const RunSummary summary = run_scene(rank_args, p, history, partition);
   const int code =
       summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
+  if (!ranks.is_root()) return code;
   write_history_csv(args.out / "history.csv", history);
-  const RunRecord record{args, p, summary, started, utc_timestamp(SystemClock::now()), code};
+  const RunRecord record{args,    p, summary, partition, started, utc_timestamp(SystemClock::now()),
+                         code};
   write_atomic(args.out / "summary.toml", summary_toml(record));
   if (!args.quiet) print_summary_table(record);
   return code;
 }
 
+// Every rank meets the same error; rank 0 tells it.
+bool g_quiet_rank = false;
+
 void report(std::string_view kind, std::string_view message) {
+  if (g_quiet_rank) return;
   std::fflush(stdout);
   fmt::print(stderr, "ccm: {}: {}\n", kind, message);
 }
@@ -210,8 +278,10 @@ void report(std::string_view kind, std::string_view message) {
 }  // namespace
 
 int run_command(const RunArgs& args) {
+  const study::RankContext ranks;  // MPI only when started by mpirun
+  g_quiet_rank = !ranks.is_root();
   try {
-    return run(args);
+    return run(args, ranks);
   } catch (const SceneError& e) {
     report("error", e.what());
     return exit_code::bad_input;

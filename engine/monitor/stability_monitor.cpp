@@ -21,10 +21,11 @@ double EnergyBalance::update(double kinetic, double internal, double external_wo
   return last_error_;
 }
 
-double leapfrog_kinetic_energy(const State& s, double dt) {
+double leapfrog_kinetic_energy(const State& s, double dt, int n_nodes) {
   const double q = 0.25 * dt * dt;
+  const size_t n = n_nodes < 0 ? s.v.size() : static_cast<size_t>(n_nodes);
   double ke = 0.0;
-  for (size_t i = 0; i < s.v.size(); ++i)
+  for (size_t i = 0; i < n; ++i)
     ke += s.m_lumped[i] * (s.v[i].squaredNorm() - q * s.a[i].squaredNorm());
   return 0.5 * ke;
 }

@@ -19,6 +19,7 @@
 #include "engine/bc/state_load.hpp"
 #include "engine/contact/contact_model.hpp"
 #include "engine/monitor/stability_monitor.hpp"
+#include "engine/solver/domain_coupling.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/model.hpp"
 
@@ -94,6 +95,9 @@ struct RunOptions {
   SampleFn on_sample;                             // optional: sees the state at every output sample
   ProgressFn progress;  // called about every progress_seconds of wall time
   double progress_seconds = 0.5;
+  // A subdomain of a partitioned mesh (engine/distributed/): the model is the local one, and
+  // history and on_sample are left to the coupling. None: a serial run.
+  DomainCoupling* coupling = nullptr;
 };
 
 RunSummary run_explicit(const Model& model, const RunOptions& options);
