@@ -18,6 +18,7 @@
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
 #include "app/output_file.hpp"
+#include "app/partitioned_contact.hpp"
 #include "app/progress_line.hpp"
 #include "study/parallel/rank_context.hpp"
 #include "study/provenance/timestamp.hpp"
@@ -94,8 +95,9 @@ double largest(const std::vector<double>& v) {
 
 void print_partition(const distributed::PartitionReport& p) {
   if (p.ranks <= 1) return;
-  fmt::print("  {:<15}{} ranks (METIS), imbalance {:.2f} %, {} cut faces, {} contact region nodes\n",
-             "partition", p.ranks, 100.0 * p.imbalance, p.cut_faces, p.contact_region_nodes);
+  fmt::print(
+      "  {:<15}{} ranks (METIS), imbalance {:.2f} %, {} cut faces, {} contact region nodes\n",
+      "partition", p.ranks, 100.0 * p.imbalance, p.cut_faces, p.contact_region_nodes);
   fmt::print("  {:<15}communication {:.3f} s, contact {:.3f} s (slowest rank)\n", "",
              largest(p.communication_seconds), largest(p.contact_seconds));
 }
@@ -208,19 +210,6 @@ std::string summary_toml(const RunRecord& r) {
 // ---------------------------------------------------------------------------------------------
 // The command
 
-// What the contact model of the scene reads and writes, for its replication on every rank.
-distributed::PartitionedContact partitioned_contact(const Prepared& p) {
-  distributed::PartitionedContact c;
-  const ContactSpec& spec = p.scene.contact;
-  c.phases.adds_forces = spec.kind == ContactKind::rigid_penalty;
-  c.phases.corrects = spec.kind == ContactKind::dcr;
-  // A body-pair restitution e < 1 changes the rigid motion of whole bodies.
-  const bool whole_bodies = spec.kind == ContactKind::dcr && spec.restitution < 1.0;
-  if (spec.kind != ContactKind::none)
-    c.region = distributed::contact_region(p.model.mesh, whole_bodies);
-  return c;
-}
-
 RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history,
                      distributed::PartitionReport& partition) {
   RunOptions options;
@@ -232,9 +221,9 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   ProgressLine progress;
   options.progress = progress.on_terminal(args.quiet);
   const RunSummary summary =
-      partition.ranks > 1
-          ? distributed::run_partitioned(p.model, options, partitioned_contact(p), &partition)
-          : run_explicit(p.model, options);
+      partition.ranks > 1 ? distributed::run_partitioned(
+                                p.model, options, partitioned_contact(p.scene, p.model), &partition)
+                          : run_explicit(p.model, options);
   progress.finish();
   return summary;
 }
@@ -259,7 +248,7 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
       summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
   if (!ranks.is_root()) return code;
   write_history_csv(args.out / "history.csv", history);
-  const RunRecord record{args,    p, summary, partition, started, utc_timestamp(SystemClock::now()),
+  const RunRecord record{args, p, summary, partition, started, utc_timestamp(SystemClock::now()),
                          code};
   write_atomic(args.out / "summary.toml", summary_toml(record));
   if (!args.quiet) print_summary_table(record);

@@ -85,6 +85,28 @@ std::vector<int> node_owners(const ModelMesh& mesh, const std::vector<int>& elem
   return owner;
 }
 
+std::vector<HaloSize> halo_sizes(const ModelMesh& mesh, const std::vector<int>& element_part,
+                                 int n_ranks) {
+  const NodeRanks r = node_ranks(mesh, element_part);
+  std::vector<HaloSize> h(static_cast<size_t>(n_ranks));
+  std::vector<std::vector<char>> linked(static_cast<size_t>(n_ranks),
+                                        std::vector<char>(static_cast<size_t>(n_ranks), 0));
+  for (size_t n = 0; n < mesh.X.size(); ++n) {
+    const int first = r.first[n], last = r.first[n + 1];
+    if (last - first < 2) continue;
+    for (int i = first; i < last; ++i) {
+      const auto a = static_cast<size_t>(r.ranks[static_cast<size_t>(i)]);
+      ++h[a].shared_nodes;
+      h[a].neighbour_node_pairs += last - first - 1;
+      for (int j = first; j < last; ++j)
+        if (j != i) linked[a][static_cast<size_t>(r.ranks[static_cast<size_t>(j)])] = 1;
+    }
+  }
+  for (size_t a = 0; a < h.size(); ++a)
+    for (char l : linked[a]) h[a].neighbours += l;
+  return h;
+}
+
 Subdomain make_subdomain(const Model& global, const std::vector<int>& element_part, int n_ranks,
                          int rank) {
   const ModelMesh& mesh = global.mesh;

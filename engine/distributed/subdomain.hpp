@@ -31,6 +31,16 @@ struct Subdomain {
 std::vector<int> node_owners(const ModelMesh& mesh, const std::vector<int>& element_part,
                              int n_ranks);
 
+// Per rank: the nodes it shares with others and its neighbours (what make_subdomain would give,
+// without building the local models).
+struct HaloSize {
+  int shared_nodes = 0;
+  int neighbours = 0;
+  long neighbour_node_pairs = 0;  // sum over neighbours of the nodes shared with each
+};
+std::vector<HaloSize> halo_sizes(const ModelMesh& mesh, const std::vector<int>& element_part,
+                                 int n_ranks);
+
 // The subdomain of `rank`. Surface loads are kept on the nodes the rank owns only (their sum over
 // ranks is the global load); fixed nodes and initial velocities on every local copy.
 Subdomain make_subdomain(const Model& global, const std::vector<int>& element_part, int n_ranks,

@@ -19,8 +19,8 @@
 #include "engine/bc/state_load.hpp"
 #include "engine/contact/contact_model.hpp"
 #include "engine/monitor/stability_monitor.hpp"
-#include "engine/solver/domain_coupling.hpp"
 #include "engine/observe/history.hpp"
+#include "engine/solver/domain_coupling.hpp"
 #include "engine/solver/model.hpp"
 
 namespace ccm {
