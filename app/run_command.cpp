@@ -114,6 +114,10 @@ std::string partition_toml(const distributed::PartitionReport& p) {
   t += fmt::format("step_seconds = [{}]\ncommunication_seconds = [{}]\ncontact_seconds = [{}]\n",
                    fmt::join(p.step_seconds, ", "), fmt::join(p.communication_seconds, ", "),
                    fmt::join(p.contact_seconds, ", "));
+  t += fmt::format(
+      "step_cpu_seconds = [{}]\ncommunication_cpu_seconds = [{}]\ncontact_cpu_seconds = [{}]\n",
+      fmt::join(p.step_cpu_seconds, ", "), fmt::join(p.communication_cpu_seconds, ", "),
+      fmt::join(p.contact_cpu_seconds, ", "));
   t += fmt::format("messages = [{}]\nmessage_doubles = [{}]\ncollectives = [{}]\n",
                    fmt::join(p.messages, ", "), fmt::join(p.message_doubles, ", "),
                    fmt::join(p.collectives, ", "));

@@ -47,8 +47,11 @@ void fill_report(const Subdomain& d, const std::vector<int>& part, const ModelMe
   r.elements = gather_all(d.model.mesh.n_elements(), MPI_INT);
   r.contact_region_nodes = region_nodes;
   r.step_seconds = gather_all(local.step_wall_seconds, MPI_DOUBLE);
-  r.communication_seconds = gather_all(times.communication, MPI_DOUBLE);
-  r.contact_seconds = gather_all(times.contact, MPI_DOUBLE);
+  r.communication_seconds = gather_all(times.communication.wall, MPI_DOUBLE);
+  r.contact_seconds = gather_all(times.contact.wall, MPI_DOUBLE);
+  r.step_cpu_seconds = gather_all(local.step_cpu_seconds, MPI_DOUBLE);
+  r.communication_cpu_seconds = gather_all(times.communication.cpu, MPI_DOUBLE);
+  r.contact_cpu_seconds = gather_all(times.contact.cpu, MPI_DOUBLE);
   r.messages = gather_all(times.messages, MPI_LONG);
   r.message_doubles = gather_all(times.message_doubles, MPI_LONG);
   r.collectives = gather_all(times.collectives, MPI_LONG);

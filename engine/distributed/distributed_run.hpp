@@ -30,8 +30,10 @@ struct PartitionReport {
   long cut_faces = 0;
   std::vector<int> owned_nodes, halo_nodes, neighbours, elements;  // per rank
   int contact_region_nodes = 0;
-  // Per rank: the step loop's wall time and its communication and contact parts [s].
+  // Per rank: the step loop's wall time and its communication and contact parts [s], and the
+  // same in thread CPU time.
   std::vector<double> step_seconds, communication_seconds, contact_seconds;
+  std::vector<double> step_cpu_seconds, communication_cpu_seconds, contact_cpu_seconds;
   std::vector<long> messages, message_doubles, collectives;  // per rank, whole run
 };
 

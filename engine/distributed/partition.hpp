@@ -9,8 +9,8 @@
 
 namespace ccm::distributed {
 
-// Relative cost of one element-step of a material model, measured with bench_element_step
-// (docs/parallel.md): the partition balances the sum of these, not the element count.
+// Relative cost of one element-step of a material model (measured, docs/parallel.md): the
+// partition balances the sum of these, not the element count.
 int element_cost(MaterialModel model);
 
 // The part (0 .. n_parts-1) of every element. n_parts == 1: all zero, no METIS call.
