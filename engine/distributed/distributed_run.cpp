@@ -81,6 +81,7 @@ RunSummary run_partitioned(const Model& global, const RunOptions& options,
   local.history = nullptr;
   local.on_sample = {};
   if (rank != 0) local.progress = {};
+  MPI_Barrier(MPI_COMM_WORLD);  // every rank has built its subdomain: the run starts together
   RunSummary summary = run_explicit(d.model, local);
   if (report)
     fill_report(d, part, global.mesh, times, summary, replicated ? replicated->region_nodes() : 0,

@@ -141,6 +141,12 @@ void HaloCoupling::sum_over_domains(std::span<double> values) {
 }
 
 void HaloCoupling::sample(const State& local, std::span<const double> body_internal_energy) {
+  // The integrator samples first when its step loop starts: the phase times count from there
+  // (set-up and the first evaluation are not part of a step).
+  if (first_sample_) {
+    times_ = PhaseTimes{};
+    first_sample_ = false;
+  }
   std::vector<double> mine(kSampleWidth * static_cast<size_t>(d_.owned_nodes));
   for (size_t l = 0; l < static_cast<size_t>(d_.owned_nodes); ++l) {
     double* p = mine.data() + kSampleWidth * l;

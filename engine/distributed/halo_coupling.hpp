@@ -38,6 +38,7 @@ class HaloCoupling final : public DomainCoupling {
   std::vector<int> gather_counts_, gather_displs_;  // owned nodes per rank (rank 0's gather)
   std::vector<int> gathered_global_;  // rank order of the gathered owned nodes: global ids
   State global_;                      // rank 0: the gathered state
+  bool first_sample_ = true;
 };
 
 }  // namespace ccm::distributed

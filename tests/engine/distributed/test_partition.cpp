@@ -80,13 +80,15 @@ TEST_CASE("Subdomains: every node owned once, shared nodes listed symmetrically"
     }
   }
   CHECK(elements == global.mesh.n_elements());
-  const std::vector<distributed::HaloSize> sizes = distributed::halo_sizes(global.mesh, part, ranks);
+  const std::vector<distributed::HaloSize> sizes =
+      distributed::halo_sizes(global.mesh, part, ranks);
   for (const distributed::Subdomain& s : d) {
     const distributed::HaloSize& h = sizes[static_cast<size_t>(s.rank)];
     CHECK(h.shared_nodes == static_cast<int>(s.shared.size()));
     CHECK(h.neighbours == static_cast<int>(s.neighbours.size()));
     long pairs = 0;
-    for (const distributed::Neighbour& nb : s.neighbours) pairs += static_cast<long>(nb.nodes.size());
+    for (const distributed::Neighbour& nb : s.neighbours)
+      pairs += static_cast<long>(nb.nodes.size());
     CHECK(h.neighbour_node_pairs == pairs);
   }
   for (int c : owned_count) REQUIRE(c == 1);

@@ -2,8 +2,8 @@
 // scenes/examples, shortened to just past the first contact (docs/parallel.md "Distributed
 // memory"). The partitioned run differs from the serial one only in the order of the floating-
 // point additions at the nodes its two subdomains share; over ~150 steps that round-off stays
-// near 1e-14 of the energies and 1e-13 of the displacements (measured), so 1e-12 and 1e-10 of
-// each column's largest magnitude leave a margin of 10 to 100.
+// near 1e-14 of the energies and below 1e-13 of the displacements (measured), so 1e-12 and 1e-10
+// of each column's largest magnitude leave margins of about 50 and 1000.
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -108,8 +108,12 @@ void require_same_run(const std::string& example, double end, double interval) {
   int compared = 0;
   for (size_t c = 0; c < a.columns.size(); ++c) {
     const std::string& name = a.columns[c];
-    const bool energy = ends_with(name, "_energy") || name == "contact.work";
-    const bool tracked = ends_with(name, ".ux") || ends_with(name, ".uy") || ends_with(name, ".uz");
+    const bool energy = ends_with(name, "_energy");
+    // The contact work sums impulse terms of both signs: its round-off is that of its gross
+    // terms, up to 1e-12 of its net value (7.5e-13 measured on the DCR scene), so it is held to
+    // the displacements' 1e-10.
+    const bool tracked = ends_with(name, ".ux") || ends_with(name, ".uy") ||
+                         ends_with(name, ".uz") || name == "contact.work";
     if (!energy && !tracked) continue;
     double scale = 0.0, diff = 0.0;
     for (size_t i = 0; i < a.rows.size(); ++i) {
