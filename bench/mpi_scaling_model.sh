@@ -11,20 +11,24 @@
 #        + g (alpha ceil(log2 P) + 72 R (P-1)/P / beta)    contact region gathers (x, v, a)
 #   E(P) = (t_s + t_c) / (P T(P)).
 # t_s = NS_PER_ELEMENT_STEP x elements (unloaded one-core step; default the issue's 20 ns),
-# t_c from the measured 1-rank contact share; c and g are the measured reductions and gathers
+# t_c from the measured 1-rank contact share (thread CPU time, robust to machine load); c and g are the measured reductions and gathers
 # per step; alpha, beta: a cluster interconnect's latency and bandwidth (defaults below).
+# REGION=n replaces the contact region's node count (e.g. the surface layer of the same scene with
+# restitution 1, which bench_partitioned_run SCENE --partitions 2 prints).
 set -euo pipefail
 log="${1:?usage: bench/mpi_scaling_model.sh SCALING_LOG}"
-awk -v ns="${NS_PER_ELEMENT_STEP:-20e-9}" -v alpha="${ALPHA:-2e-6}" -v beta="${BETA:-5e9}" '
+awk -v ns="${NS_PER_ELEMENT_STEP:-20e-9}" -v alpha="${ALPHA:-2e-6}" -v beta="${BETA:-5e9}" \
+  -v region_override="${REGION:-}" '
 function log2ceil(p,  k) { k = 0; while (2 ^ k < p) ++k; return k }
 function field(name,  i, kv) {
   for (i = 1; i <= NF; ++i) { split($i, kv, "="); if (kv[1] == name) return kv[2] }
   return ""
 }
 /^== / { scene = $2; n1 = 0; s1 = 0; c1 = 0; coll = 0; gath = 0; found = 0 }
-/^mode=partitioned ranks=1 / { s1 += field("structure_s"); c1 += field("contact_s"); ++n1 }
+/^mode=partitioned ranks=1 / { s1 += field("structure_cpu_s"); c1 += field("contact_cpu_s"); ++n1 }
 /^mode=partitioned ranks=2 / {
   coll = field("collectives_per_step"); region = field("contact_region")
+  if (region > 0 && region_override != "") region = region_override
   gath = region > 0 ? 2 : 0   # ReplicatedContact: one gather in correct/add_forces, one in end_step
   coll -= gath
 }

@@ -73,8 +73,9 @@ RunSummary run_partitioned(const Model& global, const RunOptions& options,
                         rank == 0 ? options.on_sample : SampleFn{}, times);
   std::unique_ptr<ReplicatedContact> replicated;
   if (options.contact)
-    replicated = std::make_unique<ReplicatedContact>(*options.contact, contact.phases,
-                                                     contact.region, d, owners, global.mesh, times);
+    replicated =
+        std::make_unique<ReplicatedContact>(*options.contact, contact.phases, contact.region, d,
+                                            owners, global.mesh, global.bcs.fixed_nodes, times);
   RunOptions local = options;
   local.coupling = &coupling;
   local.contact = replicated.get();

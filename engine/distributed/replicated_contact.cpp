@@ -36,8 +36,9 @@ std::vector<int> contact_region(const ModelMesh& mesh, bool whole_bodies) {
 ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
                                      const std::vector<int>& region, const Subdomain& subdomain,
                                      const std::vector<int>& owners, const ModelMesh& global_mesh,
-                                     PhaseTimes& times)
-    : inner_(inner), phases_(phases), times_(times) {
+                                     const std::vector<int>& fixed_nodes, PhaseTimes& times)
+    : inner_(inner), phases_(phases), times_(times), fixed_(global_mesh.X.size(), 0) {
+  for (int n : fixed_nodes) fixed_[static_cast<size_t>(n)] = 1;
   std::vector<int> local_of(global_mesh.X.size(), -1);
   for (size_t l = 0; l < subdomain.global_node.size(); ++l)
     local_of[static_cast<size_t>(subdomain.global_node[l])] = static_cast<int>(l);
@@ -160,9 +161,32 @@ void ReplicatedContact::correct(State& state, double dt) {
   view_current_ = false;  // boundary conditions and the velocity correction follow
 }
 
-// The state at t_{n+1}: gathered once, for end_step and the next step's limit and begin_step.
+// What the integrator does after the contact correction (engine/solver/explicit_integrator.cpp:
+// the fixed nodes, then v_{n+1} = v* + dt/2 a_{n+1}; a partitioned run has no kinematic
+// constraints), done on the view with the same arithmetic: the view then holds the state at
+// t_{n+1} bit for bit, without a second gather.
+void ReplicatedContact::finish_step(double dt) {
+  const double half_dt = 0.5 * dt;
+  for (int n : gathered_global_) {
+    const auto g = static_cast<size_t>(n);
+    if (fixed_[g]) {
+      view_.x[g] = view_.X[g];
+      view_.v[g].setZero();
+      view_.a[g].setZero();
+    }
+    view_.v[g] += half_dt * view_.a[g];
+  }
+}
+
+// The state at t_{n+1}, for end_step and the next step's limit and begin_step: a constraint-type
+// model's view is advanced in place after its correction; a penalty model's is gathered (its
+// accelerations a_{n+1} include the internal forces, known only to the owners).
 void ReplicatedContact::end_step(const State& state, double dt) {
   view_current_ = false;
+  if (phases_.corrects && !phases_.adds_forces) {
+    finish_step(dt);
+    view_current_ = true;
+  }
   gather(state);
   ScopedTimer timer(times_.contact);
   inner_.end_step(view_, dt);

@@ -30,9 +30,11 @@ std::vector<int> contact_region(const ModelMesh& mesh, bool whole_bodies);
 class ReplicatedContact final : public ContactModel {
  public:
   // inner: the model built on the global mesh (every rank has its own, identical one).
+  // fixed_nodes: the global model's, sorted.
   ReplicatedContact(ContactModel& inner, ContactPhases phases, const std::vector<int>& region,
                     const Subdomain& subdomain, const std::vector<int>& owners,
-                    const ModelMesh& global_mesh, PhaseTimes& times);
+                    const ModelMesh& global_mesh, const std::vector<int>& fixed_nodes,
+                    PhaseTimes& times);
 
   std::string_view name() const override { return inner_.name(); }
   void begin_step(const State& state, double dt) override;
@@ -49,6 +51,7 @@ class ReplicatedContact final : public ContactModel {
  private:
   void gather(const State& local) const;  // the region's x, v, a (and m once) from their owners
   void scatter(State& local) const;       // the region's x, v, a into the local copies
+  void finish_step(double dt);            // the integrator's rest of the step, on the view
 
   ContactModel& inner_;
   ContactPhases phases_;
@@ -57,6 +60,7 @@ class ReplicatedContact final : public ContactModel {
   std::vector<int> gathered_global_;               // gathered order: global ids
   std::vector<int> counts_, displs_;               // per rank, in doubles
   std::vector<std::pair<int, int>> local_copies_;  // (local, global) of region nodes held here
+  std::vector<char> fixed_;                        // per global node
   mutable State view_;                             // global numbering; the region is current
   mutable bool view_current_ = false;              // the view holds the local state's values
   mutable bool masses_known_ = false;
