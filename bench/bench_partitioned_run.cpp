@@ -106,13 +106,14 @@ int main(int argc, char** argv) {
       "structure_s={:.4f} contact_s={:.4f} communication_s={:.4f} structure_cpu_s={:.4f} "
       "contact_cpu_s={:.4f} imbalance={:.4f} cut_faces={} halo_nodes_max={} neighbours_max={} "
       "contact_region={} messages_per_step={:.2f} doubles_per_step={:.1f} "
-      "collectives_per_step={:.2f}\n",
+      "collectives_per_step={:.2f} region_gathers_per_step={:.2f}\n",
       r.ranks, s.n_elements, s.steps, to_string(s.verdict), s.step_wall_seconds, largest(structure),
       largest(r.contact_seconds), largest(r.communication_seconds), largest(structure_cpu),
       largest(r.contact_cpu_seconds), r.imbalance, r.cut_faces, largest(r.halo_nodes),
       largest(r.neighbours), r.contact_region_nodes,
       static_cast<double>(largest(r.messages)) / steps,
       static_cast<double>(largest(r.message_doubles)) / steps,
-      static_cast<double>(largest(r.collectives)) / steps);
+      static_cast<double>(largest(r.collectives)) / steps,
+      static_cast<double>(r.region_gathers) / steps);
   return 0;
 }

@@ -14,7 +14,8 @@ cmake --build build -j 2 --target bench_partitioned_run >/dev/null
 mpi=(mpirun --oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
 value() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
-for scene in bench/scenes/plate_200k.toml bench/scenes/ball_on_plate_dcr_200k.toml; do
+# SCENES="a.toml b.toml" replaces the two scenes.
+for scene in ${SCENES:-bench/scenes/plate_200k.toml bench/scenes/ball_on_plate_dcr_200k.toml}; do
   echo "== $scene"
   for r in $(seq "$repeats"); do
     echo "# repeat $r, $(date -u +%H:%M:%S) UTC, load average $(uptime | sed 's/.*load average: //')"

@@ -29,7 +29,8 @@ function field(name,  i, kv) {
 /^mode=partitioned ranks=2 / {
   coll = field("collectives_per_step"); region = field("contact_region")
   if (region > 0 && region_override != "") region = region_override
-  gath = region > 0 ? 2 : 0   # ReplicatedContact: one gather in correct/add_forces, one in end_step
+  gath = field("region_gathers_per_step")
+  if (gath == "") gath = region > 0 ? 2 : 0  # logs from before the count: two per step
   coll -= gath
 }
 /^partitions=/ {

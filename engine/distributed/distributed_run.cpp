@@ -55,6 +55,7 @@ void fill_report(const Subdomain& d, const std::vector<int>& part, const ModelMe
   r.messages = gather_all(times.messages, MPI_LONG);
   r.message_doubles = gather_all(times.message_doubles, MPI_LONG);
   r.collectives = gather_all(times.collectives, MPI_LONG);
+  r.region_gathers = times.region_gathers;
 }
 
 }  // namespace

@@ -35,6 +35,7 @@ struct PartitionReport {
   std::vector<double> step_seconds, communication_seconds, contact_seconds;
   std::vector<double> step_cpu_seconds, communication_cpu_seconds, contact_cpu_seconds;
   std::vector<long> messages, message_doubles, collectives;  // per rank, whole run
+  long region_gathers = 0;                                   // contact region gathers, whole run
 };
 
 // Every rank calls it with the same global model and options (contact: the rank's own copy of the

@@ -22,6 +22,7 @@ struct PhaseTimes {
   long messages = 0;         // point-to-point messages sent by this rank
   long message_doubles = 0;  // doubles in them
   long collectives = 0;      // reductions and gathers joined
+  long region_gathers = 0;   // of them, gathers of the contact region
 };
 
 inline double thread_cpu_now() {

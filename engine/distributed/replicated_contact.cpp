@@ -98,6 +98,7 @@ void ReplicatedContact::gather(const State& local) const {
     }
   }
   ++times_.collectives;
+  ++times_.region_gathers;
   MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts_.data(),
                  displs_.data(), MPI_DOUBLE, MPI_COMM_WORLD);
   for (size_t k = 0; k < gathered_global_.size(); ++k) {
