@@ -2,8 +2,8 @@
 // scenes/examples, shortened to just past the first contact (docs/parallel.md "Distributed
 // memory"). The partitioned run differs from the serial one only in the order of the floating-
 // point additions at the nodes its two subdomains share; over ~150 steps that round-off stays
-// near 1e-14 of the energies and below 1e-13 of the displacements (measured), so 1e-12 and 1e-10
-// of each column's largest magnitude leave margins of about 50 and 1000.
+// within 1.1e-13 of the energies and the displacements (measured), so 1e-12 and 1e-10 of each
+// column's largest magnitude leave margins of about 10 and 1000.
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
