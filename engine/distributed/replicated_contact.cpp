@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <numeric>
 
 namespace ccm::distributed {
 namespace {
@@ -12,12 +13,12 @@ constexpr int kWidth = 9;  // x, v, a per node; masses travel once, apart
 }  // namespace
 
 std::vector<int> contact_region(const ModelMesh& mesh, bool whole_bodies) {
-  std::vector<int> region;
   if (whole_bodies) {
-    region.resize(mesh.X.size());
-    for (size_t n = 0; n < region.size(); ++n) region[n] = static_cast<int>(n);
-    return region;
+    std::vector<int> every(mesh.X.size());
+    std::iota(every.begin(), every.end(), 0);
+    return every;
   }
+  std::vector<int> region;
   std::vector<char> on_boundary(mesh.X.size(), 0), in_region(mesh.X.size(), 0);
   for (const Body& b : mesh.bodies)
     for (const Triangle& t : b.boundary)
