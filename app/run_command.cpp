@@ -15,8 +15,11 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "engine/distributed/distributed_run.hpp"
 #include "app/output_file.hpp"
+#include "app/partitioned_contact.hpp"
 #include "app/progress_line.hpp"
 #include "config/text_file.hpp"
 #include "engine/observe/history.hpp"
@@ -26,6 +29,7 @@
 #include "records/content_hash.hpp"
 #include "records/provenance/timestamp.hpp"
 #include "records/provenance/version.hpp"
+#include "run/parallel/rank_context.hpp"
 #include "run/scene/scene_builder.hpp"
 #include "run/scene/scene_file.hpp"
 
@@ -96,6 +100,7 @@ struct RunRecord {
   const RunArgs& args;
   const Prepared& prepared;
   const RunSummary& summary;
+  const distributed::PartitionReport& partition;  // ranks == 1: a serial run
   std::string started;
   std::string finished;
   int exit_code = 0;
@@ -107,6 +112,41 @@ std::string instability_text(const Instability& i) {
   if (i.element >= 0) s += fmt::format(" (element {})", i.element);
   if (i.node >= 0) s += fmt::format(" (node {})", i.node);
   return s;
+}
+
+double largest(const std::vector<double>& v) {
+  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+}
+
+void print_partition(const distributed::PartitionReport& p) {
+  if (p.ranks <= 1) return;
+  fmt::print(
+      "  {:<15}{} ranks (METIS), imbalance {:.2f} %, {} cut faces, {} contact region nodes\n",
+      "partition", p.ranks, 100.0 * p.imbalance, p.cut_faces, p.contact_region_nodes);
+  fmt::print("  {:<15}communication {:.3f} s, contact {:.3f} s (slowest rank)\n", "",
+             largest(p.communication_seconds), largest(p.contact_seconds));
+}
+
+std::string partition_toml(const distributed::PartitionReport& p) {
+  if (p.ranks <= 1) return {};
+  std::string t = "\n[partition]  # mpirun -np N ccm run: METIS subdomains, one per rank\n";
+  t += fmt::format("ranks = {}\nimbalance = {}  # max part cost / mean - 1\ncut_faces = {}\n",
+                   p.ranks, toml_float(p.imbalance), p.cut_faces);
+  t += fmt::format("contact_region_nodes = {}\n", p.contact_region_nodes);
+  t += fmt::format("owned_nodes = [{}]\nhalo_nodes = [{}]\nneighbours = [{}]\nelements = [{}]\n",
+                   fmt::join(p.owned_nodes, ", "), fmt::join(p.halo_nodes, ", "),
+                   fmt::join(p.neighbours, ", "), fmt::join(p.elements, ", "));
+  t += fmt::format("step_seconds = [{}]\ncommunication_seconds = [{}]\ncontact_seconds = [{}]\n",
+                   fmt::join(p.step_seconds, ", "), fmt::join(p.communication_seconds, ", "),
+                   fmt::join(p.contact_seconds, ", "));
+  t += fmt::format(
+      "step_cpu_seconds = [{}]\ncommunication_cpu_seconds = [{}]\ncontact_cpu_seconds = [{}]\n",
+      fmt::join(p.step_cpu_seconds, ", "), fmt::join(p.communication_cpu_seconds, ", "),
+      fmt::join(p.contact_cpu_seconds, ", "));
+  t += fmt::format("messages = [{}]\nmessage_doubles = [{}]\ncollectives = [{}]\n",
+                   fmt::join(p.messages, ", "), fmt::join(p.message_doubles, ", "),
+                   fmt::join(p.collectives, ", "));
+  return t;
 }
 
 void print_summary_table(const RunRecord& r) {
@@ -136,6 +176,7 @@ void print_summary_table(const RunRecord& r) {
   fmt::print("  {:<15}{:.3f} s (stepping: {:.3f} s wall, {:.3f} s thread CPU)\n", "wall time",
              s.wall_seconds, s.step_wall_seconds, s.step_cpu_seconds);
   fmt::print("  {:<15}{:.1f} ns\n", "per elem-step", s.ns_per_element_step);
+  print_partition(r.partition);
   fmt::print("  {:<15}{:.3g} % (largest energy-balance error)\n", "energy error",
              100.0 * s.energy_balance_error);
   fmt::print("  {:<15}{}\n", "verdict", to_string(s.verdict));
@@ -204,6 +245,7 @@ std::string summary_toml(const RunRecord& r) {
   if (r.field_frames > 0)
     t += fmt::format("\n[fields]\nfile = {}\nframes = {}\n", toml_string(fields::kXdmfFile),
                      r.field_frames);
+  t += partition_toml(r.partition);
   for (const Body& b : mesh.bodies)
     t += fmt::format("\n[[bodies]]\nname = {}\nnodes = {}\nelements = {}\n", toml_string(b.name),
                      b.n_nodes, b.n_elements);
@@ -214,7 +256,7 @@ std::string summary_toml(const RunRecord& r) {
 // The command
 
 RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history,
-                     fields::FieldRecorder& fields) {
+                     fields::FieldRecorder& fields, distributed::PartitionReport& partition) {
   RunOptions options;
   options.time = time_control(p.scene.time);
   options.monitor = p.scene.monitor;
@@ -224,33 +266,52 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   fields.attach(options);
   ProgressLine progress;
   options.progress = progress.on_terminal(args.quiet);
-  const RunSummary summary = run_explicit(p.model, options);
+  const RunSummary summary =
+      partition.ranks > 1 ? distributed::run_partitioned(
+                                p.model, options, partitioned_contact(p.scene, p.model), &partition)
+                          : run_explicit(p.model, options);
   progress.finish();
   return summary;
 }
 
-int run(const RunArgs& args) {
+// Under mpirun with more than one rank, the scene's mesh is partitioned over the ranks (every
+// rank prepares the whole scene, steps its subdomain); rank 0 alone writes and prints.
+int run(const RunArgs& args, const study::RankContext& ranks) {
   const std::string started = utc_timestamp(SystemClock::now());
   Prepared p;
   prepare(args, p);
-  fs::create_directories(args.out);
-  write_atomic(args.out / "scene.toml", p.text);
+  if (ranks.size() > 1 && !p.scene.output.fields.empty())
+    throw UsageError("field output (--fields, [output] fields) is not available in a run "
+                     "partitioned over MPI ranks: run it on one rank");
+  if (ranks.is_root()) {
+    fs::create_directories(args.out);
+    write_atomic(args.out / "scene.toml", p.text);
+  }
+  RunArgs rank_args = args;
+  rank_args.quiet = args.quiet || !ranks.is_root();
   HistoryRecorder history(p.model.mesh, p.output);
   const OutputSpec& out = p.scene.output;
   fields::FieldRecorder fields(p.model, {out.fields, out.field_interval, p.scene.title}, args.out);
-  const RunSummary summary = run_scene(args, p, history, fields);
+  distributed::PartitionReport partition;
+  partition.ranks = ranks.size();
+  const RunSummary summary = run_scene(rank_args, p, history, fields, partition);
   fields.finish();
   const int code =
       summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
+  if (!ranks.is_root()) return code;
   write_history_csv(args.out / "history.csv", history);
-  const RunRecord record{
-      args, p, summary, started, utc_timestamp(SystemClock::now()), code, fields.frames_written()};
+  const RunRecord record{args,    p,    summary, partition, started, utc_timestamp(SystemClock::now()),
+                         code, fields.frames_written()};
   write_atomic(args.out / "summary.toml", summary_toml(record));
   if (!args.quiet) print_summary_table(record);
   return code;
 }
 
+// Every rank meets the same error; rank 0 tells it.
+bool g_quiet_rank = false;
+
 void report(std::string_view kind, std::string_view message) {
+  if (g_quiet_rank) return;
   std::fflush(stdout);
   fmt::print(stderr, "ccm: {}: {}\n", kind, message);
 }
@@ -267,8 +328,10 @@ int resolve_threads(int requested, int automatic) {
 }
 
 int run_command(const RunArgs& args) {
+  const study::RankContext ranks;  // MPI only when started by mpirun
+  g_quiet_rank = !ranks.is_root();
   try {
-    return run(args);
+    return run(args, ranks);
   } catch (const ConfigError& e) {
     report("error", e.what());
     return exit_code::bad_input;

@@ -9,6 +9,12 @@ find_package(NLopt CONFIG REQUIRED)  # libnlopt-dev: target NLopt::nlopt (C API,
 set(MPI_CXX_SKIP_MPICXX ON)
 find_package(MPI REQUIRED COMPONENTS C CXX)
 find_package(OpenMP REQUIRED COMPONENTS CXX)  # the compiler's own (libgomp): engine threads
+# libmetis-dev ships no CMake package: the header and the library, as target METIS::METIS.
+find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
+find_library(METIS_LIBRARY metis REQUIRED)
+add_library(METIS::METIS UNKNOWN IMPORTED)
+set_target_properties(METIS::METIS PROPERTIES IMPORTED_LOCATION ${METIS_LIBRARY}
+  INTERFACE_INCLUDE_DIRECTORIES ${METIS_INCLUDE_DIR})
 find_package(SQLite3 REQUIRED)
 find_package(HDF5 REQUIRED COMPONENTS C)
 if(CCM_BUILD_TESTS)

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config git
-  libeigen3-dev libopenmpi-dev openmpi-bin
+  libeigen3-dev libopenmpi-dev openmpi-bin libmetis-dev
   libsqlite3-dev sqlite3 libhdf5-dev hdf5-tools
   libfmt-dev catch2 libgmsh-dev
   libcli11-dev libtomlplusplus-dev libnlopt-dev gnuplot-nox nlohmann-json3-dev

@@ -23,10 +23,11 @@ double EnergyBalance::update(double kinetic, double internal, double external_wo
   return last_error_;
 }
 
-double leapfrog_kinetic_energy(const State& s, double dt, int threads) {
+double leapfrog_kinetic_energy(const State& s, double dt, int threads, int n_nodes) {
   const double q = 0.25 * dt * dt;
-  const double ke = fixed_order_sum(s.n_nodes(), threads, [&](int n) {
-    const auto i = static_cast<size_t>(n);
+  const int n = n_nodes < 0 ? s.n_nodes() : n_nodes;
+  const double ke = fixed_order_sum(n, threads, [&](int node) {
+    const auto i = static_cast<size_t>(node);
     return s.m_lumped[i] * (s.v[i].squaredNorm() - q * s.a[i].squaredNorm());
   });
   return 0.5 * ke;

@@ -48,8 +48,9 @@ class EnergyBalance {
 // = 1/2 sum m (|v_n|^2 - (dt/2)^2 |a_n|^2): with it, KE + IE is exactly conserved by central
 // difference for a linear system, so the energy balance measures drift and instability rather
 // than the O((omega dt)^2) oscillation of the synchronous kinetic energy of high modes.
-// Summed in a fixed order (fixed_order_sum.hpp): the same bits for any thread count.
-double leapfrog_kinetic_energy(const State& s, double dt, int threads = 1);
+// Over nodes [0, n_nodes) (default: all; a subdomain counts the nodes it owns), summed in a
+// fixed order (fixed_order_sum.hpp): the same bits for any thread count.
+double leapfrog_kinetic_energy(const State& s, double dt, int threads = 1, int n_nodes = -1);
 
 std::optional<Instability> check_elements(const InternalForceResult& r, double t);
 std::optional<Instability> check_finite(const State& s);

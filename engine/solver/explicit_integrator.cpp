@@ -128,6 +128,9 @@ class CentralDifference {
   void sample();
   std::optional<Instability> check(bool energy_check);
   void report_progress(double dt, Clock::time_point start, double& last_report);
+  void couple_evaluation(bool with_energy);
+
+  int owned_nodes() const { return opt_.coupling ? opt_.coupling->owned_nodes() : s_.n_nodes(); }
 
   bool parallel_nodes() const { return threads_ > 1 && s_.n_nodes() >= kMinParallelNodes; }
 
@@ -142,6 +145,7 @@ class CentralDifference {
   long next_output_index_ = 1;
   double last_dt_ = 0.0;
   long steps_since_energy_check_ = 0;
+  bool elements_valid_everywhere_ = true;  // partitioned runs: no subdomain has a bad element
   RunSummary summary_;
 };
 
@@ -154,6 +158,7 @@ void CentralDifference::initialise() {
   s_.f.assign(mesh.X.size(), Vec3::Zero());
   s_.m_lumped = lumped_mass(mesh, model_.elements);
   s_.inv_m.resize(s_.m_lumped.size());
+  if (opt_.coupling) opt_.coupling->assemble(s_.m_lumped, 1);
   for (size_t i = 0; i < s_.m_lumped.size(); ++i) s_.inv_m[i] = 1.0 / s_.m_lumped[i];
   for (int n : model_.bcs.fixed_nodes) s_.v[static_cast<size_t>(n)].setZero();
   s_.t = 0.0;
@@ -162,8 +167,9 @@ void CentralDifference::initialise() {
   for (KinematicConstraint* c : opt_.constraints) c->initialise(s_);
   summary_.dt_initial = opt_.time.dt_safety * last_eval_.stable_dt;
   last_dt_ = summary_.dt_initial;
-  energy_.start(leapfrog_kinetic_energy(s_, last_dt_, threads_), total_internal_energy(),
-                energy_floor());
+  double kinetic = leapfrog_kinetic_energy(s_, last_dt_, threads_, owned_nodes());
+  if (opt_.coupling) opt_.coupling->sum_over_domains(std::span<double>(&kinetic, 1));
+  energy_.start(kinetic, total_internal_energy(), energy_floor());
   summary_.n_nodes = mesh.n_nodes();
   summary_.threads = threads_;
   summary_.n_elements = mesh.n_elements();
@@ -236,13 +242,27 @@ void CentralDifference::evaluate(bool with_energy) {
   for (size_t i = 0; i < n; ++i) s_.f[i].setZero();
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
   for (StateLoad* load : opt_.loads) load->add_forces(s_, s_.f);
+  // A block without elements (a subdomain may hold none of a body's) is not written.
+  if (with_energy) std::fill(body_energy_.begin(), body_energy_.end(), 0.0);
   last_eval_ = add_internal_forces(
       model_.elements, s_.x, s_.f,
       with_energy ? std::span<double>(body_energy_) : std::span<double>(), threads_);
+  if (opt_.coupling) couple_evaluation(with_energy);
   if (opt_.contact) opt_.contact->add_forces(s_);
   const Vec3 g = model_.bcs.gravity;
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
   for (size_t i = 0; i < n; ++i) s_.a[i] = s_.inv_m[i] * s_.f[i] + g;
+}
+
+// A partitioned run: the shared nodes' forces completed (neighbour halos), and the stable step,
+// the element check and the stored energy made global, so every subdomain decides alike.
+void CentralDifference::couple_evaluation(bool with_energy) {
+  opt_.coupling->assemble(std::span<double>(s_.f.data()->data(), 3 * s_.f.size()), 3);
+  double local[2] = {last_eval_.stable_dt, last_eval_.first_bad_element < 0 ? 1.0 : 0.0};
+  opt_.coupling->min_over_domains(local);
+  last_eval_.stable_dt = local[0];
+  elements_valid_everywhere_ = local[1] > 0.0;
+  if (with_energy) opt_.coupling->sum_over_domains(body_energy_);
 }
 
 void CentralDifference::apply_fixed_nodes() {
@@ -265,7 +285,7 @@ void CentralDifference::correct(double dt) {
 // Work of gravity = sum m g . u (exact: gravity is a constant field).
 double CentralDifference::gravity_work() const {
   if (!model_.bcs.has_gravity()) return 0.0;
-  return fixed_order_sum(s_.n_nodes(), threads_, [&](int n) {
+  return fixed_order_sum(owned_nodes(), threads_, [&](int n) {
     const auto i = static_cast<size_t>(n);
     return s_.m_lumped[i] * model_.bcs.gravity.dot(s_.x[i] - s_.X[i]);
   });
@@ -276,7 +296,13 @@ double CentralDifference::gravity_work() const {
 double CentralDifference::energy_floor() const {
   double c_max = 0.0, mass = 0.0;
   for (const ElementBlock& b : model_.elements.blocks) c_max = std::max(c_max, b.wave_speed);
-  for (double m : s_.m_lumped) mass += m;
+  for (int i = 0; i < owned_nodes(); ++i) mass += s_.m_lumped[static_cast<size_t>(i)];
+  if (opt_.coupling) {
+    double bounds[2] = {-c_max, 0.0};
+    opt_.coupling->min_over_domains(bounds);
+    opt_.coupling->sum_over_domains(std::span<double>(&mass, 1));
+    c_max = -bounds[0];
+  }
   return 1e-12 * mass * c_max * c_max;
 }
 
@@ -293,12 +319,15 @@ bool CentralDifference::output_due() const {
 }
 
 void CentralDifference::sample() {
+  if (opt_.coupling) return opt_.coupling->sample(s_, body_energy_);
   if (opt_.history) opt_.history->sample(s_, body_energy_);
   if (opt_.on_sample) opt_.on_sample(s_);
 }
 
 std::optional<Instability> CentralDifference::check(bool energy_check) {
   if (auto bad = check_elements(last_eval_, s_.t)) return bad;
+  if (!elements_valid_everywhere_)
+    return Instability{s_.t, "an element failed in another subdomain", -1, -1};
   if (opt_.contact) {
     const std::string& reason = opt_.contact->ledger().failure;
     if (!reason.empty())
@@ -306,13 +335,25 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
                          -1};
   }
   if (!energy_check) return std::nullopt;
-  if (auto bad = check_finite(s_)) return bad;
-  double w_ext =
-      load_work_.work() + gravity_work() + (opt_.contact ? opt_.contact->ledger().work : 0.0);
+  std::optional<Instability> not_finite = check_finite(s_);
+  // The contact model of a partitioned run is replicated: its work is global already.
+  const bool replicated_contact = opt_.contact && opt_.coupling;
+  double w_ext = load_work_.work() + gravity_work() +
+                 (opt_.contact && !replicated_contact ? opt_.contact->ledger().work : 0.0);
   for (const KinematicConstraint* c : opt_.constraints) w_ext += c->work();
   for (const StateLoad* load : opt_.loads) w_ext += load->work();
-  const double err = energy_.update(leapfrog_kinetic_energy(s_, last_dt_, threads_),
-                                    total_internal_energy(), w_ext);
+  double kinetic = leapfrog_kinetic_energy(s_, last_dt_, threads_, owned_nodes());
+  if (opt_.coupling) {
+    double sums[3] = {kinetic, w_ext, not_finite ? 1.0 : 0.0};
+    opt_.coupling->sum_over_domains(sums);
+    kinetic = sums[0];
+    w_ext = sums[1];
+    if (!not_finite && sums[2] > 0.0)
+      not_finite = Instability{s_.t, "non-finite state in another subdomain", -1, -1};
+  }
+  if (not_finite) return not_finite;
+  if (replicated_contact) w_ext += opt_.contact->ledger().work;
+  const double err = energy_.update(kinetic, total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
   if (auto bad = check_energy(err, opt_.monitor.energy_tolerance, s_.t)) return bad;
   if (!opt_.contact) return std::nullopt;

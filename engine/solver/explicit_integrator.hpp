@@ -21,6 +21,7 @@
 #include "engine/core/step_safety.hpp"
 #include "engine/monitor/stability_monitor.hpp"
 #include "engine/observe/history.hpp"
+#include "engine/solver/domain_coupling.hpp"
 #include "engine/solver/model.hpp"
 
 namespace ccm {
@@ -103,6 +104,9 @@ struct RunOptions {
   // contact model's phases and the boundary conditions run on one thread, and so does a model
   // of fewer than 8,192 elements (RunSummary::threads says what was used).
   int threads = 0;
+  // A subdomain of a partitioned mesh (engine/distributed/): the model is the local one, and
+  // history and on_sample are left to the coupling. None: a serial run.
+  DomainCoupling* coupling = nullptr;
 };
 
 RunSummary run_explicit(const Model& model, const RunOptions& options);

@@ -22,13 +22,14 @@ const std::map<std::string, std::set<std::string>> kMayUse = {
     {"engine_core", {}},
     {"engine", {"engine_core"}},
     {"fields", {"engine", "engine_core"}},
+    {"distributed", {"engine", "engine_core"}},
     {"study", {"records", "config", "engine_core"}},
     {"run", {"study", "records", "config", "engine", "engine_core"}},
     {"rig_data", {"config"}},
     {"rig", {"rig_data", "config", "engine", "engine_core"}},
     {"db", {"records", "study", "config", "engine_core", "rig_data"}},
     {"reports", {"records", "study", "config", "engine_core", "db", "rig_data"}},
-    {"cli", {"records", "config", "engine_core", "engine", "fields", "study", "run", "rig_data",
+    {"cli", {"records", "config", "engine_core", "engine", "fields", "distributed", "study", "run", "rig_data",
              "rig", "db", "reports"}},
 };
 
@@ -39,6 +40,7 @@ std::string target_of(const std::string& path) {
       {"records/", "records"},
       {"config/", "config"},
       {"engine/core/", "engine_core"},
+      {"engine/distributed/", "distributed"},
       {"engine/", "engine"},
       {"io/fields/", "fields"},
       {"study/", "study"},
@@ -126,7 +128,7 @@ TEST_CASE("layers: every CMake link line names only the targets its layer may us
       }
     }
   }
-  CHECK(checked >= 12);  // every library target's link line was read
+  CHECK(checked >= 13);  // every library target's link line was read
   for (const std::string& v : violations) UNSCOPED_INFO(v);
   CHECK(violations.empty());
 }

@@ -8,6 +8,7 @@
 #include "engine/contact/contact_model.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
+#include "engine/distributed/replicated_contact.hpp"
 #include "io/fields/contact_impulse_probe.hpp"
 
 namespace {
@@ -18,6 +19,7 @@ static_assert(std::is_abstract_v<ContactModel>);
 static_assert(!std::is_abstract_v<dcr::DcrContact>);
 static_assert(!std::is_abstract_v<RigidSpherePenalty>);
 static_assert(!std::is_abstract_v<fields::ContactImpulseProbe>);
+static_assert(!std::is_abstract_v<distributed::ReplicatedContact>);
 // The name and the ledger are base-class data: not virtual, nothing to forward.
 static_assert(std::is_same_v<decltype(&ContactModel::ledger),
                              const ContactLedger& (ContactModel::*)() const>);

@@ -1,0 +1,119 @@
+// Strong scaling of a partitioned run (docs/parallel.md "Distributed memory (METIS + MPI)").
+//   bench_partitioned_run SCENE --serial          the serial integrator (the reference time)
+//   mpirun -np N bench_partitioned_run SCENE      the partitioned run on N ranks (N = 1 too),
+//                                                 with its per-phase wall times
+//   bench_partitioned_run SCENE --partitions 2,4,..,64   no run: METIS cut, halo sizes and
+//                                                 neighbour counts per rank count (the model's
+//                                                 inputs)
+// Rank 0 prints one line of key=value pairs per run or partition.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/partitioned_contact.hpp"
+#include "engine/distributed/distributed_run.hpp"
+#include "engine/distributed/partition.hpp"
+#include "engine/distributed/subdomain.hpp"
+#include "run/parallel/rank_context.hpp"
+#include "run/scene/scene_builder.hpp"
+#include "run/scene/scene_file.hpp"
+
+namespace {
+
+using namespace ccm;
+
+template <typename T>
+T largest(const std::vector<T>& v) {
+  return v.empty() ? T{} : *std::max_element(v.begin(), v.end());
+}
+
+void print_partitions(const Model& model, const std::vector<int>& contact_region,
+                      const std::string& list) {
+  std::istringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const int parts = std::stoi(item);
+    const std::vector<int> part = distributed::partition_elements(model.mesh, parts);
+    const distributed::PartitionQuality q = distributed::measure_partition(model.mesh, part, parts);
+    const auto halo = distributed::halo_sizes(model.mesh, part, parts);
+    int shared = 0, neighbours = 0;
+    long pairs = 0;
+    for (const auto& h : halo) {
+      shared = std::max(shared, h.shared_nodes);
+      neighbours = std::max(neighbours, h.neighbours);
+      pairs = std::max(pairs, h.neighbour_node_pairs);
+    }
+    fmt::print(
+        "partitions={} elements={} nodes={} imbalance={:.4f} cut_faces={} halo_nodes_max={} "
+        "neighbours_max={} halo_pairs_max={} contact_region={}\n",
+        parts, model.mesh.n_elements(), model.mesh.n_nodes(), q.imbalance, q.cut_faces, shared,
+        neighbours, pairs, contact_region.size());
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: [mpirun -np N] %s SCENE [--serial | --partitions P,P,...]\n",
+                 argv[0]);
+    return 2;
+  }
+  const study::RankContext ranks;
+  const bool serial = argc > 2 && !std::strcmp(argv[2], "--serial");
+  const bool partitions = argc > 3 && !std::strcmp(argv[2], "--partitions");
+  const Scene scene = parse_scene_file(argv[1]);
+  const Model model = build_model(scene);
+  ContactSetup contact = build_contact(scene, model);
+  const distributed::PartitionedContact replicated = partitioned_contact(scene, model);
+  if (partitions) {
+    if (ranks.is_root()) print_partitions(model, replicated.region, argv[3]);
+    return 0;
+  }
+  RunOptions options;
+  options.time = time_control(scene.time);
+  options.monitor = scene.monitor;
+  options.contact = contact.model.get();
+  if (serial) {
+    const RunSummary s = run_explicit(model, options);
+    fmt::print(
+        "mode=serial elements={} steps={} verdict={} step_s={:.4f} step_cpu_s={:.4f} "
+        "ns_per_element_step={:.2f}\n",
+        s.n_elements, s.steps, to_string(s.verdict), s.step_wall_seconds, s.step_cpu_seconds,
+        s.ns_per_element_step);
+    return 0;
+  }
+  distributed::PartitionReport r;
+  const RunSummary s = distributed::run_partitioned(model, options, replicated, &r);
+  if (!ranks.is_root()) return 0;
+  // The slowest rank's phases: structure = step loop - communication - contact, in wall time and
+  // in thread CPU time (the CPU time of the communication includes Open MPI's busy waiting).
+  std::vector<double> structure(r.step_seconds.size()), structure_cpu(r.step_seconds.size());
+  for (size_t q = 0; q < structure.size(); ++q) {
+    structure[q] = r.step_seconds[q] - r.communication_seconds[q] - r.contact_seconds[q];
+    structure_cpu[q] =
+        r.step_cpu_seconds[q] - r.communication_cpu_seconds[q] - r.contact_cpu_seconds[q];
+  }
+  const double steps = std::max(1.0, static_cast<double>(s.steps));
+  fmt::print(
+      "mode=partitioned ranks={} elements={} steps={} verdict={} step_s={:.4f} "
+      "structure_s={:.4f} contact_s={:.4f} communication_s={:.4f} structure_cpu_s={:.4f} "
+      "contact_cpu_s={:.4f} imbalance={:.4f} cut_faces={} halo_nodes_max={} neighbours_max={} "
+      "contact_region={} messages_per_step={:.2f} doubles_per_step={:.1f} "
+      "collectives_per_step={:.2f} region_gathers_per_step={:.2f}\n",
+      r.ranks, s.n_elements, s.steps, to_string(s.verdict), s.step_wall_seconds, largest(structure),
+      largest(r.contact_seconds), largest(r.communication_seconds), largest(structure_cpu),
+      largest(r.contact_cpu_seconds), r.imbalance, r.cut_faces, largest(r.halo_nodes),
+      largest(r.neighbours), r.contact_region_nodes,
+      static_cast<double>(largest(r.messages)) / steps,
+      static_cast<double>(largest(r.message_doubles)) / steps,
+      static_cast<double>(largest(r.collectives)) / steps,
+      static_cast<double>(r.region_gathers) / steps);
+  return 0;
+}

@@ -1,0 +1,48 @@
+// A run of one scene on all the ranks of `mpirun -np N ccm run SCENE` (docs/parallel.md
+// "Distributed memory (METIS + MPI)"): the mesh is cut by METIS into one subdomain per rank, each
+// rank steps its own with the serial integrator, coupled to its neighbours by halo exchanges of
+// shared-node forces, to all by reductions of the step and the energies, and the contact region
+// is replicated. Outputs (history, on_sample) are fed on rank 0 only.
+//
+// This header is MPI-free: MPI stays private to ccm_distributed.
+#pragma once
+
+#include <vector>
+
+#include "engine/distributed/replicated_contact.hpp"
+#include "engine/solver/explicit_integrator.hpp"
+
+namespace ccm::distributed {
+
+// This process's rank and the number of ranks (MPI must be initialised; 0 and 1 otherwise).
+int world_rank();
+int world_size();
+
+struct PartitionedContact {
+  ContactPhases phases;
+  std::vector<int> region;  // contact_region(): the nodes the contact model reads or writes
+};
+
+// What the partition and its communication cost; per rank where a vector, else rank 0's.
+struct PartitionReport {
+  int ranks = 1;
+  double imbalance = 0.0;  // max part cost / mean - 1
+  long cut_faces = 0;
+  std::vector<int> owned_nodes, halo_nodes, neighbours, elements;  // per rank
+  int contact_region_nodes = 0;
+  // Per rank: the step loop's wall time and its communication and contact parts [s], and the
+  // same in thread CPU time.
+  std::vector<double> step_seconds, communication_seconds, contact_seconds;
+  std::vector<double> step_cpu_seconds, communication_cpu_seconds, contact_cpu_seconds;
+  std::vector<long> messages, message_doubles, collectives;  // per rank, whole run
+  long region_gathers = 0;                                   // contact region gathers, whole run
+};
+
+// Every rank calls it with the same global model and options (contact: the rank's own copy of the
+// global contact model). The summary is the global one, the same on every rank. Throws
+// std::invalid_argument for what a partitioned run does not support (kinematic constraints,
+// state loads).
+RunSummary run_partitioned(const Model& global, const RunOptions& options,
+                           const PartitionedContact& contact, PartitionReport* report = nullptr);
+
+}  // namespace ccm::distributed
