@@ -20,8 +20,8 @@ TEST_CASE("cmake --install puts ccm and its data under a prefix that can be move
   test::TempDir dir;
   const fs::path build = fs::path(CCM_BINARY).parent_path();
   const fs::path first = dir.path / "first-prefix";
-  const auto install =
-      test::run_command("cmake --install " + shell_quoted(build) + " --prefix " + shell_quoted(first), dir);
+  const auto install = test::run_command(
+      "cmake --install " + shell_quoted(build) + " --prefix " + shell_quoted(first), dir);
   INFO(install.out << install.err);
   REQUIRE(install.status == 0);
   for (const char* file :
@@ -40,8 +40,8 @@ TEST_CASE("cmake --install puts ccm and its data under a prefix that can be move
   fs::rename(first, moved);
   const fs::path elsewhere = dir.path / "elsewhere";
   fs::create_directories(elsewhere);
-  const std::string ccm =
-      "cd " + shell_quoted(elsewhere) + " && env -u CCM_DATA_DIR " + shell_quoted(moved / "bin" / "ccm");
+  const std::string ccm = "cd " + shell_quoted(elsewhere) + " && env -u CCM_DATA_DIR " +
+                          shell_quoted(moved / "bin" / "ccm");
   const auto list = test::run_command(ccm + " rig list --json", dir);
   INFO(list.err);
   REQUIRE(list.status == 0);
@@ -52,7 +52,8 @@ TEST_CASE("cmake --install puts ccm and its data under a prefix that can be move
   CHECK_THAT(help.out, Catch::Contains((moved / "share/ccm/rig/geometry.toml").string()));
   // The installed example scene reads (`ccm study scene` prints a point of a grid).
   const auto scene = test::run_command(
-      ccm + " study scene " + shell_quoted(moved / "share/ccm/scenes/grids/default.toml") + " -p 0", dir);
+      ccm + " study scene " + shell_quoted(moved / "share/ccm/scenes/grids/default.toml") + " -p 0",
+      dir);
   INFO(scene.err);
   CHECK(scene.status == 0);
 
@@ -67,9 +68,9 @@ TEST_CASE("cmake --install puts ccm and its data under a prefix that can be move
   CHECK_THAT(alone.err, Catch::Contains((lonely / "share" / "ccm").string()));
   CHECK_THAT(alone.err, Catch::Contains("CCM_DATA_DIR"));
   // ... and with CCM_DATA_DIR naming the data folder, it runs.
-  const auto pointed = test::run_command(
-      "CCM_DATA_DIR=" + shell_quoted(moved / "share/ccm") + " " + shell_quoted(lonely / "ccm") + " rig list",
-      dir);
+  const auto pointed = test::run_command("CCM_DATA_DIR=" + shell_quoted(moved / "share/ccm") + " " +
+                                             shell_quoted(lonely / "ccm") + " rig list",
+                                         dir);
   CHECK(pointed.status == 0);
   CHECK_THAT(pointed.out, Catch::Contains("RX025"));
 }
