@@ -50,8 +50,10 @@ TEST_CASE("ccm rig list --json holds the case file's parameters and its 12 cases
   }
 }
 
+// [heavy]: under the sanitizers the run takes about 14 CPU-s, and the run itself is covered there
+// by tests/rig_models/test_rig_cli.cpp's short runs.
 TEST_CASE("ccm rig run --json prints the run and its comparison as the store holds them",
-          "[cli][rig]") {
+          "[cli][rig][heavy]") {
   // The SHORT variant of tests/rig_models/test_rig_cli.cpp, in its calibration window (11 ms up
   // to the measured contact, about 1 s of CPU in Release): RX025 on the dev trials, the coarse
   // test geometry.
