@@ -124,7 +124,7 @@ TEST_CASE("ccm study status --json gives every point's state and runs, and the t
 
 TEST_CASE(
     "a store renamed or moved together with its histories folder still reads and "
-    "reports; a lost folder is named",
+    "reports, and a lost folder is named",
     "[cli][store]") {
   test::TempDir dir;
   const fs::path original = synthetic_store(dir, "default-study.sqlite");
