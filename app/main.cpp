@@ -1,15 +1,18 @@
 // The ccm command line: `ccm --version`, `ccm run SCENE --out DIR [--quiet]`,
-// `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE`,
+// `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE [--json]`,
 // `ccm study scene GRID --point N [--model ccm|rigid]`,
 // `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--axis N=V]... [--json]`,
-// `ccm report --db FILE --out DIR [--max-error E]`, `ccm rig list`,
-// `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]`,
+// `ccm report --db FILE --out DIR [--max-error E]`, `ccm rig list [--json]`,
+// `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]
+// [--json]`,
 // `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`,
 // `ccm mesh info FILE [--json]`.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 
+#include "app/command_words.hpp"
+#include "app/data_paths.hpp"
 #include "app/mesh_commands.hpp"
 #include "app/rig_commands.hpp"
 #include "app/run_command.hpp"
@@ -18,8 +21,15 @@
 
 namespace {
 
+// The exit codes of every subcommand, for the top level's and the groups' --help.
+constexpr const char* kExitCodes =
+    "Exit codes: 0 success, 1 internal error, 2 bad input (nothing written), 3 unstable run "
+    "(results up to the instability written). Each subcommand's --help lists its own.";
+
 // The options `ccm rig run` and `ccm rig calibrate` share.
 void add_rig_options(CLI::App* app, ccm::RigCommonArgs& a) {
+  a.cases = ccm::default_data_file("rig/cases.toml");
+  a.geometry = ccm::default_data_file("rig/geometry.toml");
   app->add_option("CASE", a.case_code, "Case code of thesis Table 3.2 (RX025 ... FF100)")
       ->required();
   app->add_option("--data", a.data,
@@ -59,6 +69,7 @@ int main(int argc, char** argv) {
   CLI::App app{"ccm: explicit finite-element simulations of soft bodies", "ccm"};
   app.set_version_flag("--version", "ccm " + ccm::version_string());
   app.require_subcommand(1);
+  app.footer(kExitCodes);
 
   ccm::RunArgs args;
   CLI::App* run = app.add_subcommand("run", "Run a scene file and write its results into a folder");
@@ -84,6 +95,7 @@ int main(int argc, char** argv) {
   ccm::StudyStatusArgs study_status_args;
   CLI::App* study = app.add_subcommand("study", "Trade studies: run a grid, show its status");
   study->require_subcommand(1);
+  study->footer(kExitCodes);
   CLI::App* study_run = study->add_subcommand(
       "run",
       "Run every point of a grid file (both models) not yet in the store, then its "
@@ -105,7 +117,12 @@ int main(int argc, char** argv) {
       "error, 2 bad input.");
   CLI::App* study_status =
       study->add_subcommand("status", "Done / running / failed / unstable per grid point");
-  study_status->add_option("--db", study_status_args.db, "Study store (SQLite)")->required();
+  study_status->add_option("--db", study_status_args.db, "Study store (SQLite; only read)")
+      ->required();
+  study_status->add_flag("--json", study_status_args.json, "Print the status as JSON");
+  study_status->footer(
+      "Exit codes: 0 printed, 1 internal error, 2 bad input (no such file, not a ccm store, no "
+      "study in it). Never writes a file.");
 
   ccm::StudySceneArgs study_scene_args;
   CLI::App* study_scene = study->add_subcommand(
@@ -116,6 +133,7 @@ int main(int argc, char** argv) {
   study_scene->add_option("--model,-m", study_scene_args.model, "ccm or rigid")
       ->check(CLI::IsMember({"ccm", "rigid"}))
       ->default_val("ccm");
+  study_scene->footer("Exit codes: 0 printed, 1 internal error, 2 bad input.");
 
   ccm::RecommendArgs rec;
   CLI::App* recommend = app.add_subcommand(
@@ -132,6 +150,9 @@ int main(int argc, char** argv) {
                         "Level of another grid axis, name=value (repeatable; required for an "
                         "axis with several levels)");
   recommend->add_flag("--json", rec.json, "Print the recommendation as JSON");
+  recommend->footer(
+      "Exit codes: 0 answered, 1 internal error, 2 bad input (no such store, no fits, a bad "
+      "axis). Never writes a file.");
 
   ccm::ReportArgs report_args;
   CLI::App* report = app.add_subcommand(
@@ -142,13 +163,19 @@ int main(int argc, char** argv) {
       ->add_option("--max-error", report_args.max_error,
                    "Error threshold of the decision rule (as `ccm recommend --max-error`)")
       ->capture_default_str();
-  report->footer("Exit codes: 0 written, 1 internal error (e.g. gnuplot missing), 2 bad input.");
+  report->footer(
+      "Exit codes: 0 written, 1 internal error (e.g. gnuplot missing), 2 bad input. Writes the "
+      "report folder only, never the store.");
 
   ccm::RigListArgs rig_list_args;
   CLI::App* rig = app.add_subcommand("rig", "Benchtop rig models (thesis chapter 3)");
   rig->require_subcommand(1);
+  rig->footer(kExitCodes);
   CLI::App* rig_list = rig->add_subcommand("list", "The 12 cases of thesis Table 3.2");
+  rig_list_args.cases = ccm::default_data_file("rig/cases.toml");
   rig_list->add_option("--cases", rig_list_args.cases, "Case file (TOML)")->capture_default_str();
+  rig_list->add_flag("--json", rig_list_args.json, "Print the parameters and cases as JSON");
+  rig_list->footer("Exit codes: 0 printed, 2 bad input (the case file missing or defective).");
   ccm::RigCommonArgs rig_run_args;
   CLI::App* rig_run = rig->add_subcommand(
       "run", "Simulate a case, compare it with its measured trials, store and print the result");
@@ -159,6 +186,9 @@ int main(int argc, char** argv) {
   rig_run->add_option("--field-interval", rig_run_args.field_interval,
                       "Time between field frames [s]; a whole multiple of the case's output "
                       "interval; default 10 output intervals");
+  rig_run->add_flag("--json", rig_run_args.json,
+                    "Print the run, its comparison and where it is stored as JSON (instead of "
+                    "the tables)");
   rig_run->footer(
       "Exit codes: 0 completed, 1 internal error, 2 bad input (nothing written), 3 unstable "
       "(results up to the instability stored and written).");
@@ -185,6 +215,7 @@ int main(int argc, char** argv) {
   ccm::MeshInfoArgs mesh_info_args;
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh files (.msh, .unv, .inp, .geo)");
   mesh->require_subcommand(1);
+  mesh->footer(kExitCodes);
   CLI::App* mesh_info = mesh->add_subcommand(
       "info", "Node and tet counts, extent, named groups and element quality of a mesh file");
   mesh_info->add_option("FILE", mesh_info_args.file, "Mesh file (see docs/meshes.md)")->required();
@@ -193,6 +224,10 @@ int main(int argc, char** argv) {
       "Exit codes: 0 read, 1 internal error, 2 bad input (the message names the "
       "file, the line and the dataset or keyword).");
 
+  if (const auto unknown = ccm::unknown_command(app, argc, argv)) {
+    fmt::print(stderr, "ccm: error: {}\nRun 'ccm --help' for usage.\n", *unknown);
+    return ccm::exit_code::bad_input;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

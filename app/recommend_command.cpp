@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/command_errors.hpp"
+#include "app/json_output.hpp"
 #include "app/run_command.hpp"
 #include "app/stored_grid.hpp"
 #include "app/study_commands.hpp"
@@ -38,21 +39,6 @@ study::AxisLevels parse_axes(const std::vector<std::string>& items) {
 
 nlohmann::json errors_json(const study::ArtifactErrors& e) {
   return {{"u_mean", e.u_mean}, {"u_max", e.u_max}, {"kinetic_energy", e.kinetic_energy}};
-}
-
-nlohmann::json choices_json(const std::optional<study::GridSpec>& grid,
-                            const study::AxisLevels& axes) {
-  if (!grid) return {{"recorded", false}, {"note", kNoStoredGrid}};
-  nlohmann::json out = {{"recorded", true}, {"grid_file", grid->source.string()}};
-  for (const study::ModellingChoice& c : study::modelling_choices(*grid, axes)) {
-    nlohmann::json item = {{"label", c.label}, {"unit", c.unit}, {"axis", c.axis}};
-    if (c.value)
-      item["value"] = *c.value;
-    else
-      item["levels"] = c.levels;
-    out[c.key] = item;
-  }
-  return out;
 }
 
 nlohmann::json nearest_json(const std::vector<study::NearbyPoint>& points) {
@@ -94,7 +80,7 @@ nlohmann::json recommendation_json(const RecommendArgs& q, const study::Recommen
       {"clamped", r.clamped},
       {"nearest_measured_points", nearest_json(r.nearest)},
       {"kinetic_energy_levels_used", r.kinetic_energy_levels_used},
-      {"modelling_choices", choices_json(grid, r.axes)},
+      {"modelling_choices", modelling_choices_json(grid, r.axes)},
       {"warnings", r.warnings}};
 }
 
@@ -174,7 +160,7 @@ int recommend_command(const RecommendArgs& args) {
     const auto grid = stored_grid_spec(*store);
     const study::Recommendation r = study::recommend(fits, measured, query);
     if (args.json)
-      fmt::print("{}\n", recommendation_json(args, r, grid).dump(2));
+      print_json(recommendation_json(args, r, grid));
     else
       print_recommendation(args, r, grid);
     return exit_code::completed;

@@ -104,6 +104,7 @@ std::string values_text(const std::vector<rig::SearchParameter>& s, const std::v
 int calibrate(const RigCalibrateArgs& args) {
   const RigCommonArgs& common = args.common;
   const RigInputs in = read_rig_inputs(common);
+  print_warnings(in);
   if (in.trials.empty())
     throw std::invalid_argument("calibration fits the measured trials: give --data DIR");
   if (in.scored.empty())

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/data_paths.hpp"
 #include "records/content_hash.hpp"
 #include "rig_models/cases/case_code.hpp"
 #include "rig_models/cases/case_file.hpp"
@@ -59,6 +60,9 @@ void read_trials(const RigCommonArgs& args, RigInputs& in) {
     return;
   }
   auto by_case = rig::read_trial_folder(*args.data);
+  for (const auto& [code, trials] : by_case)
+    for (const rig::MeasuredTrial& m : trials)
+      in.warnings.insert(in.warnings.end(), m.warnings.begin(), m.warnings.end());
   const auto it = by_case.find(in.rig_case->code);
   if (it == by_case.end())
     throw std::invalid_argument(fmt::format("--data {}: no trial of {} in the folder",
@@ -102,7 +106,13 @@ void check_out(const std::optional<fs::path>& out) {
 
 }  // namespace
 
+void print_warnings(const RigInputs& in) {
+  for (const std::string& w : in.warnings) fmt::print(stderr, "ccm: warning: {}\n", w);
+}
+
 RigInputs read_rig_inputs(const RigCommonArgs& args) {
+  if (args.cases.empty()) throw std::invalid_argument(missing_data_message("--cases"));
+  if (args.geometry.empty()) throw std::invalid_argument(missing_data_message("--geometry"));
   RigInputs in;
   in.cases_text = file_text(args.cases);
   in.cases = rig::parse_case_table(in.cases_text, args.cases);

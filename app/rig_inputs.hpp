@@ -25,8 +25,8 @@ struct RigCommonArgs {
   double mesh_scale = 1.0;
   std::vector<std::string> set;    // name=value run parameters
   bool score_drive_trial = false;  // open loop: score the run on its driving trial too
-  std::filesystem::path cases = CCM_RIG_CASES;
-  std::filesystem::path geometry = CCM_RIG_GEOMETRY;
+  // Default: rig/cases.toml and rig/geometry.toml of the data folder (app/data_paths.hpp).
+  std::filesystem::path cases, geometry;
   std::optional<std::filesystem::path> out;
   std::optional<std::filesystem::path> db;
   bool quiet = false;
@@ -34,6 +34,7 @@ struct RigCommonArgs {
   // frame every field_interval (default kRigFieldEvery output samples).
   bool fields = false;
   std::optional<double> field_interval;  // s
+  bool json = false;  // `rig run`: the result as one JSON document instead of the tables
 };
 
 inline constexpr int kRigFieldEvery = 10;
@@ -54,8 +55,12 @@ struct RigInputs {
   std::optional<int> left_out;
   rig::RunParameters parameters;
   std::string cases_hash, geometry_hash, data_hash;
-  std::filesystem::path db;  // --db, else <out>/rig.sqlite, else ./rig.sqlite
+  std::filesystem::path db;           // --db, else <out>/rig.sqlite, else ./rig.sqlite
+  std::vector<std::string> warnings;  // of the measured files read (e.g. an unknown column)
 };
+
+// Prints each warning to stderr as "ccm: warning: ...".
+void print_warnings(const RigInputs& in);
 
 // Throws rig::RigInputError (a file's defect, with file, line and column or key) or
 // std::invalid_argument (a wrong argument, saying what to do).

@@ -4,13 +4,17 @@
 
 #include <filesystem>
 
+#include "app/json_output.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
 #include "engine/observe/field_catalog.hpp"
 #include "rig_models/core/rig_error.hpp"
 #include "app/rig_command_errors.hpp"
 #include "app/rig_commands.hpp"
+#include "app/rig_run_json.hpp"
 #include "app/rig_runner.hpp"
 #include "app/run_command.hpp"
+#include "engine/mesh/gmsh_mesher.hpp"
+#include "rig_models/core/rig_error.hpp"
 
 namespace ccm {
 namespace {
@@ -31,6 +35,7 @@ void check_field_args(const RigCommonArgs& args, const RigInputs& in) {
 int run(const RigCommonArgs& args) {
   const RigInputs in = read_rig_inputs(args);
   check_field_args(args, in);
+  print_warnings(in);
   if (in.db.has_parent_path()) std::filesystem::create_directories(in.db.parent_path());
   db::RigStore store(in.db);
   const RigRunOutcome o = run_rig_once(in, args, in.parameters, in.rig_case->code);
@@ -38,7 +43,9 @@ int run(const RigCommonArgs& args) {
       o.result.summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
   const long long id = store.record_run(store_record(in, o, args, "run"));
   if (args.out) write_run_files(*args.out, in, o, args, code);
-  if (!args.quiet) {
+  if (args.json) {
+    print_json(rig_run_json(in, o, args, id, code));
+  } else if (!args.quiet) {
     fmt::print("{}", run_table(in, o));
     fmt::print("  {:<15}{} (rig_runs.id {})\n", "stored", in.db.string(), id);
     if (args.out) fmt::print("  {:<15}{}\n", "files", args.out->string());

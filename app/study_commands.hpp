@@ -1,4 +1,5 @@
-// `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE` and
+// `ccm study run GRID --db FILE [--jobs N]`, `ccm study status --db FILE [--json]`,
+// `ccm rig list [--cases FILE] [--json]`,
 // `ccm recommend --db FILE --er X --rls Y --ke Z [--max-error E] [--axis NAME=VALUE]... [--json]`
 // and
 // `ccm report --db FILE --out DIR [--max-error E]`.
@@ -29,6 +30,7 @@ struct StudySceneArgs {
 
 struct StudyStatusArgs {
   std::filesystem::path db;
+  bool json = false;
 };
 
 struct RecommendArgs {
@@ -46,7 +48,8 @@ struct ReportArgs {
 };
 
 struct RigListArgs {
-  std::filesystem::path cases = CCM_RIG_CASES;  // rig_models/cases.toml of the source tree
+  std::filesystem::path cases;  // default: rig/cases.toml of the data folder (app/data_paths.hpp)
+  bool json = false;
 };
 
 // Each returns the process exit code (app/run_command.hpp exit_code).

@@ -1,15 +1,16 @@
-// `ccm study status --db FILE`: done / running / failed / unstable per grid point, and the
+// `ccm study status --db FILE [--json]`: done / running / failed / unstable per grid point, and the
 // study's modelling choices (from the grid file the store keeps).
 #include <fmt/format.h>
 
 #include <map>
 
-#include "db/store/study_store.hpp"
 #include "app/command_errors.hpp"
+#include "app/json_output.hpp"
 #include "app/run_command.hpp"
 #include "app/stored_grid.hpp"
 #include "app/study_commands.hpp"
 #include "app/study_store_open.hpp"
+#include "db/store/study_store.hpp"
 #include "study/recommend/modelling_choices.hpp"
 
 namespace ccm {
@@ -53,6 +54,10 @@ void print_choices(const std::optional<study::GridSpec>& grid) {
 int study_status_command(const StudyStatusArgs& args) {
   return run_reporting_errors([&] {
     auto store = open_study_store(args.db);
+    if (args.json) {
+      print_json(study_status_json(*store, store->status(), stored_grid_spec(*store)));
+      return exit_code::completed;
+    }
     print_status(store->status());
     print_choices(stored_grid_spec(*store));
     return exit_code::completed;

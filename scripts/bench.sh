@@ -13,7 +13,7 @@ case "$which" in
   *) echo "usage: scripts/bench.sh [element|contact|all] [args]" >&2; exit 2 ;;
 esac
 scripts/install-deps.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_BUILD_BENCH=ON >/dev/null
 targets=()
 [ "$which" != contact ] && targets+=(bench_element_step)
 [ "$which" != element ] && targets+=(bench_contact)

@@ -1,18 +1,30 @@
 #!/usr/bin/env bash
-# Installs every Debian package ccm needs to build, test and run. Idempotent: it
-# installs only what is missing, and does nothing (not even apt-get update) when all is present.
+# Installs the Debian packages ccm needs. Idempotent: it installs only what is missing, and does
+# nothing (not even apt-get update) when all is present.
+#   scripts/install-deps.sh         to build, run and test (scripts/test.sh, validate.sh, bench.sh)
+#   scripts/install-deps.sh --run   to build and run only (scripts/run.sh): no test tools
 set -euo pipefail
 
+# Building ccm and running it (gnuplot-nox: `ccm report` draws its figures with it).
 packages=(
   g++ cmake ninja-build pkg-config git
   libeigen3-dev libopenmpi-dev openmpi-bin libmetis-dev
   libsqlite3-dev sqlite3 libhdf5-dev hdf5-tools
-  libfmt-dev catch2 libgmsh-dev
+  libfmt-dev libgmsh-dev
   libcli11-dev libtomlplusplus-dev libnlopt-dev gnuplot-nox nlohmann-json3-dev
-  chromium
-  libxml2-dev                  # tests: the field output's XDMF is parsed with libxml2
-  python3-paraview xvfb        # tests: ParaView opens the field output, renders it headless
 )
+# The tests alone: Catch2; Chromium renders the report page (tests/reports/test_report_page.cpp);
+# pandas and h5py run docs/store.md's Python recipes (tests/app/test_store_recipes.cpp); libxml2
+# parses the field output's XDMF, ParaView (with Xvfb) opens and renders it headless
+# (tests/io/fields/); mpiexec (openmpi-bin, above) runs the partitioned-run tests.
+test_packages=(catch2 chromium python3 python3-pandas python3-h5py libxml2-dev python3-paraview
+  xvfb)
+
+case "${1:-}" in
+  --run) ;;
+  "") packages+=("${test_packages[@]}") ;;
+  *) echo "usage: $0 [--run]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,9 +7,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-scripts/install-deps.sh
-# The same configuration as scripts/test.sh's optimised build; only the executable is built.
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_UNITY_BUILD=ON >/dev/null
+scripts/install-deps.sh --run   # what building and running needs; no test tools (Chromium, Catch2)
+# The same build folder and flags as scripts/test.sh's optimised build, without the tests and the
+# benchmarks: only the executable is built (and the libraries it links).
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_UNITY_BUILD=ON \
+  -DCCM_BUILD_TESTS=OFF -DCCM_BUILD_BENCH=OFF >/dev/null
 cmake --build build -j "$(nproc)" --target ccm
 mkdir -p results
 ./build/ccm study run scenes/grids/default.toml --db results/default-study.sqlite --jobs "$(nproc)"

@@ -11,7 +11,9 @@ jobs=$(nproc)
 
 # Both builds are unity builds (CCM_UNITY_BUILD, cmake/BuildSpeed.cmake, docs/build.md).
 echo "== optimised build (build/)"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_UNITY_BUILD=ON >/dev/null
+# CCM_BUILD_TESTS=ON explicitly: scripts/run.sh configures the same folder without the tests.
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_UNITY_BUILD=ON -DCCM_BUILD_TESTS=ON \
+  -DCCM_BUILD_BENCH=ON >/dev/null
 cmake --build build -j "$jobs"
 ctest --test-dir build -L unit --output-on-failure -j "$jobs"
 

@@ -357,16 +357,36 @@ int latest_schema_version() { return static_cast<int>(kSteps.size()); }
 
 int schema_version(Connection& connection) { return pragma_int(connection, "user_version"); }
 
-void migrate(Connection& connection, int target_version) {
-  // Reading the header also makes SQLite reject a file that is not a database at all.
+namespace {
+
+struct StoreHeader {
   int version = 0;
   int application_id = 0;
+};
+
+// Reading the header also makes SQLite reject a file that is not a database at all.
+StoreHeader read_header(Connection& connection) {
   try {
-    version = schema_version(connection);
-    application_id = pragma_int(connection, "application_id");
+    return {schema_version(connection), pragma_int(connection, "application_id")};
   } catch (const StoreError& e) {
     throw StoreError(std::string(e.what()) + " (not a ccm study store)");
   }
+}
+
+}  // namespace
+
+int check_existing_store(Connection& connection) {
+  const StoreHeader header = read_header(connection);
+  refuse_foreign_or_newer(connection, header.version, header.application_id);
+  if (header.application_id != kApplicationId)
+    throw StoreError(connection.file().string() +
+                     ": not a ccm study store (an empty file or an SQLite file without the ccm "
+                     "application_id); refusing to touch it");
+  return header.version;
+}
+
+void migrate(Connection& connection, int target_version) {
+  const auto [version, application_id] = read_header(connection);
   refuse_foreign_or_newer(connection, version, application_id);
   for (int step = version; step < target_version; ++step) {
     Transaction transaction(connection);

@@ -21,4 +21,9 @@ int schema_version(Connection& connection);
 // written by a newer ccm (user_version above what this build knows).
 void migrate(Connection& connection, int target_version = latest_schema_version());
 
+// For reading an existing store without writing to it: throws StoreError, naming the file, when
+// it is not a ccm study store (not SQLite, empty, another application's, without the ccm
+// application_id) or was written by a newer ccm. Returns its schema version.
+int check_existing_store(Connection& connection);
+
 }  // namespace ccm::db

@@ -5,10 +5,45 @@
 #include <string>
 
 namespace ccm::db {
+namespace {
 
-Connection::Connection(const std::filesystem::path& file, int busy_timeout_ms) : file_(file) {
-  const int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_FULLMUTEX;
-  if (sqlite3_open_v2(file.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
+// "file:<path>?mode=ro[&immutable=1]" with the path percent-encoded (RFC 3986 unreserved
+// characters and '/' are kept), for sqlite3_open_v2 with SQLITE_OPEN_URI.
+std::string read_only_uri(const std::filesystem::path& file, bool immutable) {
+  std::string uri = "file:";
+  for (const unsigned char c : file.string()) {
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                       c == '/' || c == '-' || c == '.' || c == '_' || c == '~';
+    if (plain) {
+      uri += static_cast<char>(c);
+    } else {
+      constexpr const char* kHex = "0123456789ABCDEF";
+      uri += '%';
+      uri += kHex[c >> 4];
+      uri += kHex[c & 0xF];
+    }
+  }
+  return uri + (immutable ? "?mode=ro&immutable=1" : "?mode=ro");
+}
+
+// A WAL database's "-wal" file exists while a connection has it open (and after a writer was
+// killed); without one, the main file holds every committed transaction.
+bool has_wal_file(const std::filesystem::path& file) {
+  std::error_code ignored;
+  return std::filesystem::exists(file.string() + "-wal", ignored);
+}
+
+}  // namespace
+
+Connection::Connection(const std::filesystem::path& file, Access access, int busy_timeout_ms)
+    : file_(file) {
+  std::string name = file.string();
+  int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_FULLMUTEX;
+  if (access == Access::read_only) {
+    name = read_only_uri(file, !has_wal_file(file));
+    flags = SQLITE_OPEN_READONLY | SQLITE_OPEN_URI | SQLITE_OPEN_FULLMUTEX;
+  }
+  if (sqlite3_open_v2(name.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);
     db_ = nullptr;
@@ -19,6 +54,26 @@ Connection::Connection(const std::filesystem::path& file, int busy_timeout_ms) :
 }
 
 Connection::~Connection() { sqlite3_close(db_); }
+
+void Connection::copy_into_memory() {
+  sqlite3* memory = nullptr;
+  if (sqlite3_open_v2(":memory:", &memory, SQLITE_OPEN_READWRITE | SQLITE_OPEN_FULLMUTEX,
+                      nullptr) != SQLITE_OK) {
+    sqlite3_close(memory);
+    throw StoreError(file_.string() + ": cannot open an in-memory copy of the store");
+  }
+  sqlite3_backup* backup = sqlite3_backup_init(memory, "main", db_, "main");
+  const bool copied = backup && sqlite3_backup_step(backup, -1) == SQLITE_DONE;
+  sqlite3_backup_finish(backup);
+  if (!copied) {
+    const std::string message = sqlite3_errmsg(memory);
+    sqlite3_close(memory);
+    throw StoreError(file_.string() + ": cannot copy the store into memory: " + message);
+  }
+  sqlite3_extended_result_codes(memory, 1);
+  sqlite3_close(db_);
+  db_ = memory;
+}
 
 void Connection::exec(std::string_view sql, std::string_view what) {
   const std::string text(sql);

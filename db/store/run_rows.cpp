@@ -232,7 +232,7 @@ std::optional<study::RunRecord> StudyStore::load_run(const study::GridPoint& poi
   run.cost = cost_from_row(q, 23);
   if (!q.is_null(32)) run.reuses_point = static_cast<int>(q.column_int(32));
   const std::string dataset = q.column_text(22);
-  run.artifact = read_history_file(file_.parent_path() / q.column_text(21), dataset.c_str());
+  run.artifact = read_history_file(history_path(q.column_text(21)), dataset.c_str());
   return run;
 }
 

@@ -40,10 +40,17 @@ std::string_view to_string(PointState state) {
   return "unknown";
 }
 
-StudyStore::StudyStore(const std::filesystem::path& file)
-    : file_(file), connection_(std::make_unique<Connection>(file)) {
-  migrate(*connection_);
-  connection_->exec("PRAGMA journal_mode = WAL", "cannot switch to WAL");
+StudyStore::StudyStore(const std::filesystem::path& file, Access access)
+    : file_(file), connection_(std::make_unique<Connection>(file, access)) {
+  if (access == Access::read_only) {
+    if (check_existing_store(*connection_) < latest_schema_version()) {
+      connection_->copy_into_memory();
+      migrate(*connection_);
+    }
+  } else {
+    migrate(*connection_);
+    connection_->exec("PRAGMA journal_mode = WAL", "cannot switch to WAL");
+  }
   connection_->exec("PRAGMA foreign_keys = ON", "cannot enable foreign keys");
   Statement study(*connection_, "SELECT id FROM studies ORDER BY id LIMIT 1");
   if (study.step()) study_id_ = study.column_int(0);
@@ -94,6 +101,19 @@ long long StudyStore::study_id() const {
 
 std::filesystem::path StudyStore::history_dir() const {
   return file_.parent_path() / (file_.stem().string() + ".histories");
+}
+
+std::filesystem::path StudyStore::history_path(const std::string& stored) const {
+  const std::filesystem::path stored_path(stored);
+  const std::filesystem::path in_own_folder = history_dir() / stored_path.filename();
+  const std::filesystem::path as_stored = file_.parent_path() / stored_path;
+  std::error_code ignored;
+  if (std::filesystem::exists(in_own_folder, ignored)) return in_own_folder;
+  if (std::filesystem::exists(as_stored, ignored)) return as_stored;
+  throw StoreError(file_.string() + ": the history file " + stored_path.filename().string() +
+                   " is in neither " + in_own_folder.parent_path().string() + " nor " +
+                   as_stored.parent_path().string() +
+                   " (a store is moved or renamed together with its <name>.histories folder)");
 }
 
 long long StudyStore::add_grid_point(const study::GridPoint& point) {

@@ -1,7 +1,8 @@
 // The trade study's system of record: one SQLite file per study (WAL, versioned schema, see
 // docs/store.md) and one HDF5 file of artifact histories per run in "<stem>.histories/" beside
-// it. Every write is one short transaction; two processes may write the same file at once
-// (each waits on the other's lock up to the busy timeout).
+// it (found again after the store and its folder are renamed or moved). Every write is one short
+// transaction; two processes may write the same file at once (each waits on the other's lock up to
+// the busy timeout).
 //
 // Typical use by a study runner:
 //   StudyStore store("study.sqlite");
@@ -55,9 +56,11 @@ struct PointStatus {
 
 class StudyStore {
  public:
-  // Opens or creates the store, migrating an older schema. Throws StoreError naming the file
-  // when it is not a ccm study store or was written by a newer ccm.
-  explicit StudyStore(const std::filesystem::path& file);
+  // read_write: opens or creates the store, migrating an older schema. read_only (the reading
+  // commands): opens an existing store and writes nothing, not even beside it; a store of an
+  // older schema is migrated in an in-memory copy. Throws StoreError naming the file when it is
+  // not a ccm study store (read_only: an empty file too) or was written by a newer ccm.
+  explicit StudyStore(const std::filesystem::path& file, Access access = Access::read_write);
 
   // Binds the store to its study, creating it on first use. Throws StoreError when the file
   // already holds a study of another name or grid hash (the grid file changed).
@@ -111,7 +114,12 @@ class StudyStore {
   Transaction begin() { return Transaction(*connection_); }
 
   const std::filesystem::path& file() const { return file_; }
+  // "<stem>.histories" beside the store file, where new histories are written.
   std::filesystem::path history_dir() const;
+  // Where a run's stored history_file is: in history_dir() under its own name (a store renamed
+  // or moved together with its histories folder), else at the stored path relative to the store
+  // file (a store renamed without it). Throws StoreError naming both when neither exists.
+  std::filesystem::path history_path(const std::string& stored) const;
   Connection& connection() const { return *connection_; }
 
  private:

@@ -179,7 +179,7 @@ TEST_CASE("rig store: a run reads back as written, the trials cut to the run win
   CHECK_THROWS_AS(db::load_rig_run(c, 999), db::StoreError);
 }
 
-TEST_CASE("rig store: a calibration refers to its runs; a dangling one writes nothing",
+TEST_CASE("rig store: a calibration refers to its runs, a dangling one writes nothing",
           "[db][rig-store]") {
   test::ScratchDir dir("rig-calibration");
   db::RigStore store(dir / "rig.sqlite");
@@ -225,7 +225,7 @@ TEST_CASE("rig store: a calibration refers to its runs; a dangling one writes no
   CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibrations") == 1);
 }
 
-TEST_CASE("rig store: a version-2 store is migrated; a foreign file refused", "[db][rig-store]") {
+TEST_CASE("rig store: a version-2 store is migrated, a foreign file refused", "[db][rig-store]") {
   test::ScratchDir dir("rig-migrate");
   {
     db::Connection c(dir / "old.sqlite");

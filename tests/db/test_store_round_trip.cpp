@@ -168,7 +168,7 @@ TEST_CASE("status: done, unstable, failed and pending points", "[db]") {
   CHECK_FALSE(store.is_done(status[2].content_hash, ImpactModel::ccm));
 }
 
-TEST_CASE("metrics and fits round-trip; unusable points stay visible", "[db]") {
+TEST_CASE("metrics and fits round-trip, unusable points stay visible", "[db]") {
   test::ScratchDir dir("db-results");
   db::StudyStore store(dir / "s.sqlite");
   store.open_study("s", "g");

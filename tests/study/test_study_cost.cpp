@@ -105,7 +105,7 @@ const RunRow& row_of(const std::vector<RunRow>& rows, int point_index, const std
 
 TEST_CASE(
     "ccm study run: RTR is the measured CPU-time ratio at every point, the thesis "
-    "estimate beside it; each distinct scene runs once",
+    "estimate beside it, each distinct scene runs once",
     "[study][cli][cost]") {
   test::TempDir tmp;
   const fs::path grid = tmp.write("cost.toml", kReuseGrid), db = tmp.path / "s.sqlite";

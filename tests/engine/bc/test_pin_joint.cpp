@@ -139,7 +139,7 @@ TEST_CASE("Pin joint, mu_s large: the struck bar does not turn", "[pin_joint]") 
   CHECK(std::abs(free_swing.ring_angle.back()) > 0.01);  // the free bar did turn
 }
 
-TEST_CASE("Pin joint: friction comes from the reaction; an unloaded spin is not slowed",
+TEST_CASE("Pin joint: friction comes from the reaction, an unloaded spin is not slowed",
           "[pin_joint]") {
   Model model = struck_bar(false);
   const double omega0 = 2.0;  // rad/s about the pin axis, whole bar, nothing else loading it

@@ -48,7 +48,7 @@ Outcome run_at_safety(double safety, int steps_per_output) {
 
 }  // namespace
 
-TEST_CASE("A run at 1.1x the stable step ends unstable with a reason; 0.9x completes",
+TEST_CASE("A run at 1.1x the stable step ends unstable with a reason, 0.9x completes",
           "[stability]") {
   const Outcome over = run_at_safety(1.1, 20);
   INFO("1.1x: t = " << over.summary.instability.time << ": " << over.summary.instability.reason);

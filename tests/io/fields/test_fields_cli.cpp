@@ -66,7 +66,7 @@ output_interval = 1e-3
 
 using namespace fields_cli_test;
 
-TEST_CASE("ccm run: [output] fields writes fields.xdmf + fields.h5; u = v0 t read back",
+TEST_CASE("ccm run: [output] fields writes fields.xdmf + fields.h5, u = v0 t read back",
           "[fields][cli]") {
   test::TempDir tmp;
   const fs::path scene = tmp.write(

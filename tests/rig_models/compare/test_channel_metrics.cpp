@@ -27,7 +27,7 @@ TEST_CASE("channel metrics: RMSE, nRMSE, peak and peak time on the measured time
   CHECK(c.peak_time_error == -1.0);
 }
 
-TEST_CASE("channel metrics: only the overlap is compared; a negative peak keeps its sign",
+TEST_CASE("channel metrics: only the overlap is compared, a negative peak keeps its sign",
           "[rig]") {
   const TimeSeries measured{{0.0, 1.0, 2.0, 3.0}, {0.0, -4.0, 1.0, 2.0}};
   const TimeSeries simulated{{0.5, 3.0}, {-1.0, 1.5}};  // at t = 1, 2, 3: -0.5, 0.5, 1.5

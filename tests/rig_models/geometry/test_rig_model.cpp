@@ -133,7 +133,7 @@ TEST_CASE("rig model: tuned masses and inertia, parts joined, named sets in plac
   }
 }
 
-TEST_CASE("rig model: a free artifact is not fixed; bad gap refused", "[rig][rig-model]") {
+TEST_CASE("rig model: a free artifact is not fixed, bad gap refused", "[rig][rig-model]") {
   const RigModel r = model_of(ImpactorKind::rigid, ArtifactKind::free);
   CHECK(r.model.bcs.fixed_nodes.empty());
   CHECK(!r.pin_nodes.empty());

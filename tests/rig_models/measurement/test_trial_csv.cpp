@@ -74,7 +74,7 @@ TEST_CASE("trial CSV: CRLF line endings, a UTF-8 BOM and blank lines are accepte
   check_good_channels(parse_trial_csv(crlf, kName));
 }
 
-TEST_CASE("trial CSV: columns in any order; an unknown column is ignored with a warning", "[rig]") {
+TEST_CASE("trial CSV: columns in any order, an unknown column is ignored with a warning", "[rig]") {
   const std::string text =
       "# case: RX025\n"
       "# trial: 2\n"
@@ -193,7 +193,7 @@ TEST_CASE("trial CSV: a wrong delimiter", "[rig]") {
         "RX025_t2.csv:6: column 2 (impactor_velocity_mps): wrong delimiter ';' (expected ',')");
 }
 
-TEST_CASE("trial CSV: a missing, repeated or empty column; a row of the wrong width", "[rig]") {
+TEST_CASE("trial CSV: a missing, repeated or empty column, a row of the wrong width", "[rig]") {
   CHECK(error_of(with(kGood, ",pressure_kpa\n", ",pressure\n")) ==
         "RX025_t2.csv:3: header: missing required column 'pressure_kpa' (found: time_s, "
         "impactor_velocity_mps, artifact_angle_deg, pressure)");
@@ -224,7 +224,7 @@ TEST_CASE("trial CSV: metadata that disagrees with the file name is refused", "[
         "trial.csv: no case code: add '# case: <CODE>' or name the file <CASE>_t<N>.csv");
 }
 
-TEST_CASE("trial CSV: a file that cannot be read; a file read from disk", "[rig]") {
+TEST_CASE("trial CSV: a file that cannot be read, a file read from disk", "[rig]") {
   const fs::path dir = fs::temp_directory_path() / fmt::format("ccm-test-rig-csv-{}", getpid());
   fs::create_directories(dir);
   const fs::path missing = dir / "RX025_t9.csv";

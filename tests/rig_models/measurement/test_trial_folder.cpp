@@ -32,7 +32,7 @@ std::string error_of(const fs::path& folder) {
 
 }  // namespace
 
-TEST_CASE("trial folder: grouped by case, in trial order; repeats and empty folders refused",
+TEST_CASE("trial folder: grouped by case, in trial order, repeats and empty folders refused",
           "[rig]") {
   const fs::path dir = fs::temp_directory_path() / fmt::format("ccm-test-rig-folder-{}", getpid());
   fs::remove_all(dir);

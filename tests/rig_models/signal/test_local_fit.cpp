@@ -23,7 +23,7 @@ TEST_CASE("local fit: a quadratic and its slope are reproduced exactly, ends inc
   }
 }
 
-TEST_CASE("local fit: noise on a ramp is averaged; too few samples refused", "[rig][signal]") {
+TEST_CASE("local fit: noise on a ramp is averaged, too few samples refused", "[rig][signal]") {
   std::mt19937 rng(7);
   std::normal_distribution<double> noise(0.0, 0.002);  // 2 mm/s, motion-capture-like
   TimeSeries s;

@@ -76,7 +76,7 @@ TEST_CASE("low-pass: the gain curve is 1/sqrt(1 + (tan(w/2)/K)^2)", "[rig]") {
   }
 }
 
-TEST_CASE("low-pass: a constant passes unchanged; the step response is the closed form", "[rig]") {
+TEST_CASE("low-pass: a constant passes unchanged, the step response is the closed form", "[rig]") {
   TimeSeries s{{0.0, 1e-3, 2e-3, 3e-3}, {5.0, 5.0, 5.0, 5.0}};
   CHECK(apply_low_pass(s, kCutoff).value == std::vector<double>(4, 5.0));
   // step 0 -> 1 at sample 1: y_n = 1 - (-a1)^(n-1) / (1 + K)  (e_n = -a1 e_(n-1))

@@ -26,7 +26,7 @@ PointMetrics synthetic_point(int index, double er, double rls, double ke) {
 
 }  // namespace
 
-TEST_CASE("every metric is fitted per KE level; unusable points are excluded visibly", "[fit]") {
+TEST_CASE("every metric is fitted per KE level, unusable points are excluded visibly", "[fit]") {
   std::vector<PointMetrics> points;
   int index = 0;
   for (const double ke : {10.0, 100.0})
@@ -80,7 +80,7 @@ TEST_CASE("every metric is fitted per KE level; unusable points are excluded vis
   CHECK(nt_rigid->fit.surface(2.5, 0.7) == Approx(0.7 * std::log10(2.0)).margin(1e-10));
 }
 
-TEST_CASE("fits are grouped by KE and the other axes' levels; convergence points are left out",
+TEST_CASE("fits are grouped by KE and the other axes' levels, convergence points are left out",
           "[fit]") {
   std::vector<PointMetrics> points;
   int index = 0;

@@ -117,7 +117,7 @@ TEST_CASE("final-state error is |c(t_f) - r(t_f)| over the largest magnitude", "
   CHECK(relative_error(final_state_error(cs, rs), 0.6) < kRounding);
 }
 
-TEST_CASE("errors of identical or all-zero histories are zero; bad input is refused", "[metrics]") {
+TEST_CASE("errors of identical or all-zero histories are zero, bad input is refused", "[metrics]") {
   const std::vector<double> zero(5, 0.0), a = {1.0, 3.0, 2.0};
   CHECK(cumulative_error(zero, zero) == 0.0);
   CHECK(final_state_error(zero, zero) == 0.0);

@@ -157,7 +157,7 @@ TEST_CASE("at a grid point whose measured answer the fits do not reproduce, the 
   CHECK_FALSE(r.reliability.reliable);
 }
 
-TEST_CASE("other grid axes select their own fits; a swept axis must be named", "[recommend]") {
+TEST_CASE("other grid axes select their own fits, a swept axis must be named", "[recommend]") {
   std::vector<PointMetrics> points = closed_form_points({{"damping", 0.0}});
   for (PointMetrics m : closed_form_points({{"damping", 1.0}})) {
     m.point.index += 24;

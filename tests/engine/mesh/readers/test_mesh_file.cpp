@@ -11,7 +11,7 @@
 
 using namespace ccm;
 
-TEST_CASE("mesh files: chosen by extension, any case; unknown ones named", "[mesh]") {
+TEST_CASE("mesh files: chosen by extension, any case, unknown ones named", "[mesh]") {
   test::TempDir dir;
   const auto upper = dir.write("BOX.UNV", test::file_text(test::mesh_data("elmer_box.unv")));
   const MeshFile m = read_mesh_file_with_report(upper);

@@ -1,0 +1,99 @@
+// `ccm rig list --json` and `ccm rig run --json`: the same figures as the case file and the
+// store, as one JSON document on stdout.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "db/sqlite/connection.hpp"
+#include "db/sqlite/statement.hpp"
+#include "rig_models/cases/case_file.hpp"
+#include "tests/app/cli_shell.hpp"
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSourceCases = fs::path(CCM_SOURCE_DIR) / "rig_models" / "cases.toml";
+
+double stored_number(db::Connection& c, const std::string& sql) {
+  db::Statement q(c, sql);
+  REQUIRE(q.step());
+  return q.column_double(0);
+}
+
+}  // namespace
+
+TEST_CASE("ccm rig list --json holds the case file's parameters and its 12 cases", "[cli][rig]") {
+  test::TempDir dir;
+  const auto r = test::run_ccm("rig list --json", dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const rig::RigCaseTable table = rig::read_case_table(kSourceCases);
+  // The default case file is the source tree's, through the build tree's data folder.
+  CHECK(fs::equivalent(j["case_file"].get<std::string>(), kSourceCases));
+  CHECK(j["rig"]["hanging_mass"]["value"] == table.rig.hanging_mass.value);
+  CHECK(j["rig"]["hanging_mass"]["unit"] == table.rig.hanging_mass.unit);
+  CHECK(j["rig"]["sensor_area"]["source"] == table.rig.sensor_area.source);
+  CHECK(j["drive"]["string_stiffness"]["value"] == table.drive.string_stiffness.value);
+  CHECK(j["simulation"]["output_interval"]["value"] == table.simulation.output_interval.value);
+  REQUIRE(j["cases"].size() == table.cases.size());
+  REQUIRE(table.cases.size() == 12);
+  for (std::size_t k = 0; k < table.cases.size(); ++k) {
+    const rig::RigCase& c = table.cases[k];
+    const nlohmann::json& jc = j["cases"][k];
+    CHECK(jc["code"] == c.code);
+    CHECK(jc["number"] == c.number);
+    CHECK(jc["target_speed"]["value"] == c.target_speed.value);
+    CHECK(jc["impactor"] == std::string(rig::name_of(c.impactor)));
+    CHECK(jc["pivot_friction"].is_null() == !c.pivot_friction.has_value());
+  }
+}
+
+// [heavy]: under the sanitizers the run takes about 14 CPU-s, and the run itself is covered there
+// by tests/rig_models/test_rig_cli.cpp's short runs.
+TEST_CASE("ccm rig run --json prints the run and its comparison as the store holds them",
+          "[cli][rig][heavy]") {
+  // The SHORT variant of tests/rig_models/test_rig_cli.cpp, in its calibration window (11 ms up
+  // to the measured contact, about 1 s of CPU in Release): RX025 on the dev trials, the coarse
+  // test geometry.
+  test::TempDir dir;
+  const fs::path db = dir.path / "rig.sqlite";
+  const auto r = test::run_ccm(
+      "rig run RX025 --data '" + (fs::path(CCM_SOURCE_DIR) / "tests/data/rig-dev").string() +
+          "' --geometry '" +
+          (fs::path(CCM_SOURCE_DIR) / "tests/rig_models/data/short_geometry.toml").string() +
+          "' --start 0.0595 --end 0.0705 --db '" + db.string() + "' --json",
+      dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);  // nothing but the document on stdout
+  db::Connection c(db);
+  CHECK(j["rig_runs_id"] == stored_number(c, "SELECT id FROM rig_runs"));
+  CHECK(j["db"] == db.string());
+  CHECK(j["exit_code"] == 0);
+  CHECK(j["case_code"] == "RX025");
+  CHECK(j["drive"] == "open-loop");
+  CHECK(j["drive_trial"]["trial"] == 2);
+  CHECK(j["run"]["status"] == "completed");
+  CHECK(j["run"]["steps"] == stored_number(c, "SELECT steps FROM rig_runs"));
+  CHECK(j["run"]["max_energy_error"].get<double>() ==
+        stored_number(c, "SELECT max_energy_error FROM rig_runs"));
+  CHECK(j["window"]["start"].get<double>() == Approx(0.0595));
+  CHECK(j["model"]["n_elements"] == stored_number(c, "SELECT n_elements FROM rig_runs"));
+  const nlohmann::json& cmp = j["comparison"];
+  CHECK(cmp["scored_trials"] == nlohmann::json({1, 3}));
+  CHECK(cmp["left_out_trial"] == 2);
+  for (const char* channel : {"velocity", "angle", "pressure"}) {
+    INFO(channel);
+    const nlohmann::json& per_trial = cmp["channels"][channel]["per_trial"];
+    REQUIRE(per_trial.size() == 2);
+    for (const nlohmann::json& t : per_trial)
+      CHECK(t["rmse"].get<double>() ==
+            stored_number(c, "SELECT rmse FROM rig_channel_metrics WHERE channel = '" +
+                                 std::string(channel) +
+                                 "' AND trial = " + std::to_string(t["trial"].get<int>())));
+  }
+}
+
+}  // namespace ccm
