@@ -47,6 +47,15 @@ std::string unknown_key_problem(std::string_view key, std::span<const std::strin
   return fmt::format("unknown key '{}' (allowed: {})", key, fmt::join(allowed, ", "));
 }
 
+toml::table parse_toml(std::string_view text, const std::filesystem::path& source) {
+  try {
+    return toml::parse(text, source.string());
+  } catch (const toml::parse_error& e) {
+    throw config_error(source, static_cast<int>(e.source().begin.line), "",
+                       fmt::format("TOML syntax error: {}", e.description()));
+  }
+}
+
 int StrictTable::line() const { return line_of(*t_); }
 
 std::string StrictTable::key_path(std::string_view key) const {

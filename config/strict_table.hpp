@@ -19,6 +19,10 @@
 
 namespace ccm {
 
+// The document of a configuration file's text; a syntax error is a ConfigError naming the file
+// and the line: "<file>:<line>: TOML syntax error: <what>".
+toml::table parse_toml(std::string_view text, const std::filesystem::path& source);
+
 // "unknown key 'x' (did you mean 'y'?)", or with the allowed keys listed when none is close.
 std::string unknown_key_problem(std::string_view key, std::span<const std::string_view> allowed);
 

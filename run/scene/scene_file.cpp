@@ -624,13 +624,7 @@ void check_top_level_keys(const toml::table& root, const Table& t) {
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::filesystem::path& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source.string());
-  } catch (const toml::parse_error& e) {
-    throw config_error(source, static_cast<int>(e.source().begin.line), "",
-                       fmt::format("TOML syntax error: {}", e.description()));
-  }
+  const toml::table root = parse_toml(text, source);
   Scene scene;
   scene.source = source;
   const Table t(root, "", source);

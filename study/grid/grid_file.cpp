@@ -196,13 +196,7 @@ void parse_convergence(const StrictTable& root, GridSpec& g) {
 }  // namespace
 
 GridSpec parse_grid(std::string_view text, const std::filesystem::path& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source.string());
-  } catch (const toml::parse_error& e) {
-    throw config_error(source, static_cast<int>(e.source().begin.line), "",
-                       fmt::format("TOML syntax error: {}", e.description()));
-  }
+  const toml::table root = parse_toml(text, source);
   GridSpec g;
   g.source = source;
   const StrictTable t(root, "", source);
