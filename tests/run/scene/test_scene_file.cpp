@@ -399,7 +399,10 @@ TEST_CASE("body mass and a refined mesh zone", "[scene]") {
     CHECK(parse_error(
               tmp.write("s.toml", with(sphere, "radius = 0.004,", "radius = 0.004, r = 1,"))) ==
           f + ":14: bodies[0].geometry.refine.r: unknown key 'r' (allowed: center, radius, "
-              "mesh_size)");
+              "mesh_size, transition)");
+    CHECK(parse_error(tmp.write("s.toml", with(sphere, "mesh_size = 0.001 }",
+                                               "mesh_size = 0.001, transition = 0 }"))) ==
+          f + ":14: bodies[0].geometry.refine.transition: must be > 0 (got 0)");
   }
 }
 
