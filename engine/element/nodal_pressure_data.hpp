@@ -1,0 +1,21 @@
+// The nodal quantities of the averaged-nodal-pressure tet (nodal_pressure.hpp;
+// docs/elements.md): one entry per node of the whole mesh, meaningful at the nodes of the blocks
+// that use that element and empty when none does.
+#pragma once
+
+#include <vector>
+
+namespace ccm {
+
+struct NodalPressureData {
+  // V0_n = sum_{e containing n} V0_e / 4, the reference volume a node represents (eq. NP.1).
+  std::vector<double> V0;
+  // Scratch of the current evaluation, rewritten by every call of add_internal_forces (so a Model
+  // is run by one run at a time, as every caller does): the current nodal volume V_n, and per node
+  // the pair (p_n, |ln J_n|) the element pass gathers (eq. NP.2).
+  mutable std::vector<double> V;
+  mutable std::vector<double> pressure;
+  bool empty() const { return V0.empty(); }
+};
+
+}  // namespace ccm
