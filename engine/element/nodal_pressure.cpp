@@ -70,10 +70,10 @@ void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const double*
 }
 
 // Pass 2 for nodes [first, first + count) of a block, kLanes at a time: J_n = V_n / V0_n,
-// p_n = U'(J_n) = lambda ln(J_n) / J_n (eq. NP.3), stored with |ln J_n| (the step, eq. NP.6).
-// A node with J_n <= 0 (only next to an inverted element, which the element pass reports) gets
+// p_n = U'(J_n) = lambda ln(J_n) / J_n (eq. NP.3); returns the largest |ln J_n| (eq. NP.6). A
+// node with J_n <= 0 (only next to an inverted element, which the element pass reports) gets
 // p_n = 0.
-void nodal_pressures(const NodalPressureData& d, double lambda, int first, int count) {
+double nodal_pressures(const NodalPressureData& d, double lambda, int first, int count) {
   Lanes J{};
   for (int l = 0; l < kLanes; ++l) {
     const auto n = static_cast<size_t>(first + std::min(l, count - 1));
@@ -81,11 +81,12 @@ void nodal_pressures(const NodalPressureData& d, double lambda, int first, int c
   }
   const Lanes log_J = vector_log(J > 0.0 ? J : np_broadcast(1.0));
   const Lanes p = lambda * log_J / J;
+  double max_abs_log_J = 0.0;
   for (int l = 0; l < std::min(count, kLanes); ++l) {
-    const auto n = static_cast<size_t>(first + l);
-    d.pressure[2 * n] = p[l];
-    d.pressure[2 * n + 1] = std::abs(log_J[l]);
+    d.pressure[static_cast<size_t>(first + l)] = p[l];
+    max_abs_log_J = std::max(max_abs_log_J, std::abs(log_J[l]));
   }
+  return max_abs_log_J;
 }
 
 // Pass 3 on one pack. The element keeps W_e = mu/2 (tr C - 3) - mu ln J_e, whose nodal forces
@@ -100,21 +101,18 @@ struct NodalPressureForces {
   Lanes W;  // V0_e W_e
 };
 
-CCM_NP_INLINE void gather_nodal_means(const NeoHookeanPack& p, const double* pressure,
-                                      Lanes& p_mean, Lanes& abs_log_J_mean) {
-  Lanes ps{}, ms{};
+CCM_NP_INLINE Lanes mean_nodal_pressure(const NeoHookeanPack& p, const double* pressure) {
+  Lanes sum{};
   for (int l = 0; l < kLanes; ++l)
-    for (int a = 0; a < 4; ++a) {
-      ps[l] += pressure[2 * p.node[a][l]];
-      ms[l] += pressure[2 * p.node[a][l] + 1];
-    }
-  p_mean = 0.25 * ps;
-  abs_log_J_mean = 0.25 * ms;
+    sum[l] = (pressure[p.node[0][l]] + pressure[p.node[1][l]]) +
+             (pressure[p.node[2][l]] + pressure[p.node[3][l]]);
+  return 0.25 * sum;
 }
 
 template <bool Energy>
 CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const double* x,
-                                                 const double* pressure, const Lame& lame) {
+                                                 const double* pressure, const Lame& lame,
+                                                 double max_abs_log_J) {
   Lanes e[3][3], n[3][3];
   np_gather_edges(p, x, e);
   face_normals(e, n);
@@ -125,9 +123,7 @@ CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const 
   const Lanes inv_det = q * six_V0;
   NodalPressureForces out;
   out.J = det * det * q;
-  const Lanes log_J = vector_log(out.J > 0.0 ? out.J : np_broadcast(1.0));
-  Lanes p_mean, abs_log_J_mean;
-  gather_nodal_means(p, pressure, p_mean, abs_log_J_mean);
+  const Lanes p_mean = mean_nodal_pressure(p, pressure);
   const Lanes g00 = np_load(p.geometry[0]), g11 = np_load(p.geometry[1]);
   const Lanes g22 = np_load(p.geometry[2]), g01 = np_load(p.geometry[3]);
   const Lanes g02 = np_load(p.geometry[4]), g12 = np_load(p.geometry[5]);
@@ -145,16 +141,19 @@ CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const 
     out.h[1][r] = A * dg1 + B * n[1][r];
     out.h[2][r] = A * dg2 + B * n[2][r];
   }
-  if constexpr (Energy) out.W = V0 * (0.5 * mu * (trC - 3.0) - mu * log_J);
+  if constexpr (Energy) {  // the forces need no ln J_e: only the energy does
+    const Lanes log_J = vector_log(out.J > 0.0 ? out.J : np_broadcast(1.0));
+    out.W = V0 * (0.5 * mu * (trC - 3.0) - mu * log_J);
+  }
   Lanes sum_n2 = np_broadcast(0.0);  // sum_f |n_f|^2 = det^2 / h_e^2 (tet4.hpp)
   for (int k = 0; k < 3; ++k) {
     const Lanes t = n[0][k] + n[1][k] + n[2][k];
     sum_n2 += n[0][k] * n[0][k] + n[1][k] * n[1][k] + n[2][k] * n[2][k] + t * t;
   }
   // eq. NP.6: the plain kernel's current-state modulus with the element's |ln J| replaced by the
-  // mean over its nodes.
+  // largest nodal |ln J_n| of the block (a bound on the mean over the element's nodes).
   const Lanes stretch = trC > 3.0 ? trC - 3.0 : np_broadcast(0.0);
-  const Lanes M = lame.lambda * (1.0 + 2.0 * abs_log_J_mean) + mu * (2.0 + stretch);
+  const Lanes M = lame.lambda * (1.0 + 2.0 * max_abs_log_J) + mu * (2.0 + stretch);
   out.y = sum_n2 * M * (inv_det * inv_det);
   return out;
 }
@@ -208,14 +207,14 @@ void account_pack(const ElementBlock& b, int pack, const NodalPressureForces& r,
 
 template <bool Energy>
 SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const double* x,
-                    const double* pressure, double* f) {
+                    const double* pressure, double max_abs_log_J, double* f) {
   SlabTotals out;
   LaneRunning t;
   const int end = slab.first_pack + slab.n_packs;
   for (int i = slab.first_pack; i < end; ++i) {
     const NeoHookeanPack& p = b.neo_hookean_packs[static_cast<size_t>(i)];
     const int lanes = i + 1 == end ? slab.last_lanes : kLanes;
-    const NodalPressureForces r = element_forces<Energy>(p, x, pressure, b.lame);
+    const NodalPressureForces r = element_forces<Energy>(p, x, pressure, b.lame, max_abs_log_J);
     scatter_forces(p, r, lanes, f);
     account_pack<Energy>(b, i, r, lanes, t, out);
   }
@@ -234,7 +233,8 @@ void prepare_nodal_pressure(ElementSet& es, const ModelMesh& mesh) {
   const auto n_nodes = static_cast<size_t>(mesh.n_nodes());
   es.nodal.V0.assign(n_nodes, 0.0);
   es.nodal.V.assign(n_nodes, 0.0);
-  es.nodal.pressure.assign(2 * n_nodes, 0.0);
+  es.nodal.pressure.assign(n_nodes, 0.0);
+  es.nodal.max_abs_log_J.assign(es.blocks.size(), 0.0);
   for (size_t k = 0; k < es.blocks.size(); ++k) {
     const ElementBlock& b = es.blocks[k];
     if (!is_nodal_pressure(b)) continue;
@@ -253,6 +253,7 @@ void update_nodal_pressures(const ElementSet& es, const double* x, int threads) 
   const NodalPressureData& d = es.nodal;
   double* V = d.V.data();
   const ElementSchedule& schedule = es.schedule;
+  double block_max = 0.0;  // shared: the reduction target of pass 2
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     for (const ElementBlock& b : es.blocks) {
@@ -269,12 +270,19 @@ void update_nodal_pressures(const ElementSet& es, const double* x, int threads) 
         if (is_nodal_pressure(b)) scatter_slab_volumes(b, slab, x, V);
       }
     }
-    for (const ElementBlock& b : es.blocks) {
+    // Pass 2; a maximum is exact, so its reduction order does not matter.
+    for (size_t k = 0; k < es.blocks.size(); ++k) {
+      const ElementBlock& b = es.blocks[k];
       if (!is_nodal_pressure(b)) continue;
       const int chunks = (b.n_nodes + kLanes - 1) / kLanes;
-#pragma omp for schedule(static)
+#pragma omp single
+      block_max = 0.0;
+#pragma omp for schedule(static) reduction(max : block_max)
       for (int c = 0; c < chunks; ++c)
-        nodal_pressures(d, b.lame.lambda, b.first_node + c * kLanes, b.n_nodes - c * kLanes);
+        block_max = std::max(block_max, nodal_pressures(d, b.lame.lambda, b.first_node + c * kLanes,
+                                                        b.n_nodes - c * kLanes));
+#pragma omp single
+      d.max_abs_log_J[k] = block_max;
     }
   }
 }
@@ -282,8 +290,10 @@ void update_nodal_pressures(const ElementSet& es, const double* x, int threads) 
 SlabTotals run_nodal_pressure_slab(const ElementSet& es, const ElementBlock& block,
                                    const Slab& slab, const double* x, double* f, bool with_energy) {
   const double* pressure = es.nodal.pressure.data();
-  return with_energy ? run_slab<true>(block, slab, x, pressure, f)
-                     : run_slab<false>(block, slab, x, pressure, f);
+  const double max_abs_log_J =
+      es.nodal.max_abs_log_J[static_cast<size_t>(&block - es.blocks.data())];
+  return with_energy ? run_slab<true>(block, slab, x, pressure, max_abs_log_J, f)
+                     : run_slab<false>(block, slab, x, pressure, max_abs_log_J, f);
 }
 
 void add_nodal_volumetric_energy(const ElementSet& es, std::span<double> block_energy) {

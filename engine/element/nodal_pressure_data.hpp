@@ -11,10 +11,12 @@ struct NodalPressureData {
   // V0_n = sum_{e containing n} V0_e / 4, the reference volume a node represents (eq. NP.1).
   std::vector<double> V0;
   // Scratch of the current evaluation, rewritten by every call of add_internal_forces (so a Model
-  // is run by one run at a time, as every caller does): the current nodal volume V_n, and per node
-  // the pair (p_n, |ln J_n|) the element pass gathers (eq. NP.2).
+  // is run by one run at a time, as every caller does): the current nodal volume V_n and the
+  // nodal pressure p_n (eq. NP.2-NP.3), and per block the largest |ln J_n| of its nodes, which
+  // sets the stable step (eq. NP.6).
   mutable std::vector<double> V;
   mutable std::vector<double> pressure;
+  mutable std::vector<double> max_abs_log_J;
   bool empty() const { return V0.empty(); }
 };
 
