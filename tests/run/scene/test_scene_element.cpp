@@ -60,3 +60,16 @@ TEST_CASE("scene: dcr contact refuses a nodal_pressure body before the run",
              Contains("s.toml:15: contact.model: dcr does not support element = "
                       "\"nodal_pressure\" (body 'cube', line 5)"));
 }
+
+TEST_CASE("scene: the nearly incompressible example parses and builds with nodal_pressure",
+          "[nodal_pressure][scene]") {
+  const Scene scene = parse_scene_file(std::string(CCM_SOURCE_DIR) +
+                                       "/scenes/examples/rubber_pad_nearly_incompressible.toml");
+  REQUIRE(scene.bodies.size() == 1);
+  CHECK(scene.bodies[0].element == ElementKind::nodal_pressure);
+  CHECK(scene.bodies[0].material.nu == 0.499);
+  CHECK(scene.warnings.empty());
+  const Model model = build_model(scene);
+  CHECK(model.elements.blocks[0].element == ElementKind::nodal_pressure);
+  CHECK(model.mesh.n_elements() > 100);
+}
