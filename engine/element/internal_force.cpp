@@ -326,8 +326,8 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
     for (size_t k = 0; k < phase.size(); ++k) {
       const auto s = static_cast<size_t>(phase[k]);
       const Slab& slab = schedule.slabs[s];
-      totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp,
-                           fp, with_energy);
+      totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp, fp,
+                           with_energy);
     }
   }
   // Fixed-order combination: slab order, whatever thread ran which slab.
