@@ -1,10 +1,11 @@
 // The nodal-pressure element keeps results bitwise the same for any thread count (docs/parallel.md
 // "Threads"): its nodal volumes are summed in the force loop's slab/phase order, its pressures
-// in a node loop, its volumetric energy in node order.
+// in a node loop, its volumetric energy in node order. A partitioned (MPI) run refuses it.
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <vector>
 
+#include "engine/distributed/distributed_run.hpp"
 #include "engine/element/internal_force.hpp"
 #include "engine/mesh/structured_box.hpp"
 #include "engine/observe/history.hpp"
@@ -115,4 +116,17 @@ TEST_CASE("A nodal-pressure run is bitwise the same on 1, 2 and 3 threads",
     CHECK(o.summary.steps == one.summary.steps);
     CHECK(bits_equal(&o.summary.energy_balance_error, &one.summary.energy_balance_error, 8));
   }
+}
+
+TEST_CASE("A partitioned run refuses a nodal-pressure body before it starts",
+          "[nodal_pressure][threads]") {
+  ModelMesh mesh;
+  add_body(mesh, "pad", test::neo_hookean(1e6, 0.499, 1000.0),
+           structured_box(Vec3(0.02, 0.02, 0.01), 2, 2, 1));
+  mesh.bodies.back().element = ElementKind::nodal_pressure;
+  const Model model = make_model(std::move(mesh));
+  RunOptions opt;
+  opt.time.end_time = 1e-4;
+  CHECK_THROWS_WITH(distributed::run_partitioned(model, opt, {}),
+                    "a partitioned run does not support element nodal_pressure yet (body 'pad')");
 }
