@@ -253,14 +253,15 @@ void update_nodal_pressures(const ElementSet& es, const double* x, int threads) 
   const NodalPressureData& d = es.nodal;
   double* V = d.V.data();
   const ElementSchedule& schedule = es.schedule;
-  double block_max = 0.0;  // shared: the reduction target of pass 2
+  std::fill(d.max_abs_log_J.begin(), d.max_abs_log_J.end(), 0.0);
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     for (const ElementBlock& b : es.blocks) {
       if (!is_nodal_pressure(b)) continue;
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
       for (int n = b.first_node; n < b.first_node + b.n_nodes; ++n) V[n] = 0.0;
     }
+#pragma omp barrier
     // Pass 1 in the phases of the force loop: the slabs of one phase share no node.
     for (const std::vector<int>& phase : schedule.phases) {
 #pragma omp for schedule(dynamic, 1)
@@ -270,19 +271,20 @@ void update_nodal_pressures(const ElementSet& es, const double* x, int threads) 
         if (is_nodal_pressure(b)) scatter_slab_volumes(b, slab, x, V);
       }
     }
-    // Pass 2; a maximum is exact, so its reduction order does not matter.
+    // Pass 2: the blocks' node ranges are disjoint, so no barrier between them; a maximum is
+    // exact, so the order in which the threads' maxima combine does not matter.
     for (size_t k = 0; k < es.blocks.size(); ++k) {
       const ElementBlock& b = es.blocks[k];
       if (!is_nodal_pressure(b)) continue;
       const int chunks = (b.n_nodes + kLanes - 1) / kLanes;
-#pragma omp single
-      block_max = 0.0;
-#pragma omp for schedule(static) reduction(max : block_max)
+      double thread_max = 0.0;
+#pragma omp for schedule(static) nowait
       for (int c = 0; c < chunks; ++c)
-        block_max = std::max(block_max, nodal_pressures(d, b.lame.lambda, b.first_node + c * kLanes,
-                                                        b.n_nodes - c * kLanes));
-#pragma omp single
-      d.max_abs_log_J[k] = block_max;
+        thread_max = std::max(
+            thread_max,
+            nodal_pressures(d, b.lame.lambda, b.first_node + c * kLanes, b.n_nodes - c * kLanes));
+#pragma omp critical(ccm_nodal_pressure_max)
+      d.max_abs_log_J[k] = std::max(d.max_abs_log_J[k], thread_max);
     }
   }
 }
