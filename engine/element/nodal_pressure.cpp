@@ -306,7 +306,8 @@ void add_nodal_volumetric_energy(const ElementSet& es, std::span<double> block_e
     for (int i = b.first_node; i < b.first_node + b.n_nodes; ++i) {
       const auto n = static_cast<size_t>(i);
       if (es.nodal.V0[n] <= 0.0) continue;  // a node of no element
-      const double log_J = std::log(es.nodal.V[n] / es.nodal.V0[n]);
+      const double J = es.nodal.V[n] / es.nodal.V0[n];
+      const double log_J = J > 0.0 ? std::log(J) : 0.0;  // J_n <= 0: as in pass 2
       sum += es.nodal.V0[n] * 0.5 * b.lame.lambda * log_J * log_J;  // V0_n U(J_n), eq. NP.2
     }
     block_energy[k] += sum;
