@@ -29,7 +29,7 @@ bool any_nodal_pressure(const ElementSet& es) {
 }
 
 // Edges e[c][r] = x_{c+1,r} - x_{0,r} (the columns of Ds) of a pack's elements.
-CCM_NP_INLINE void np_gather_edges(const NeoHookeanPack& p, const double* x, Lanes (&e)[3][3]) {
+CCM_NP_INLINE void np_gather_edges(const NeoHookeanPack& p, const PaddedVec3* x, Lanes (&e)[3][3]) {
   Lanes x0[3];
   gather_xyz(x, p.node[0], x0[0], x0[1], x0[2]);
   for (int c = 0; c < 3; ++c) {
@@ -55,7 +55,7 @@ CCM_NP_INLINE Lanes det_of(const Lanes (&e)[3][3], const Lanes (&n)[3][3]) {
 
 // Pass 1 for one slab: V_n += V_e / 4 at the four nodes of each element (eq. NP.2), lane by
 // lane, nodes 0..3: the fixed order every thread count shares.
-void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const double* x, double* V) {
+void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedVec3* x, double* V) {
   const int end = slab.first_pack + slab.n_packs;
   for (int i = slab.first_pack; i < end; ++i) {
     const NeoHookeanPack& p = b.neo_hookean_packs[static_cast<size_t>(i)];
@@ -110,7 +110,7 @@ CCM_NP_INLINE Lanes mean_nodal_pressure(const NeoHookeanPack& p, const double* p
 }
 
 template <bool Energy>
-CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const double* x,
+CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const PaddedVec3* x,
                                                  const double* pressure, const Lame& lame,
                                                  double max_abs_log_J) {
   Lanes e[3][3], n[3][3];
@@ -158,22 +158,18 @@ CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const 
   return out;
 }
 
-// Adds the first `lanes` lanes' forces into f: lane by lane, nodes 1, 2, 3 then 0 (fixed order).
+// Adds the first `lanes` lanes' forces into f: lane by lane, nodes 1, 2, 3 then 0 (the fixed
+// order of the plain kernel; one padded row per node, lanes.hpp).
 CCM_NP_INLINE void scatter_forces(const NeoHookeanPack& p, const NodalPressureForces& r, int lanes,
-                                  double* f) {
-  Lanes h0[3];
-  for (int i = 0; i < 3; ++i) h0[i] = -(r.h[0][i] + r.h[1][i] + r.h[2][i]);
+                                  PaddedVec3* f) {
+  const LaneRows rows[4] = {
+      lane_rows(-(r.h[0][0] + r.h[1][0] + r.h[2][0]), -(r.h[0][1] + r.h[1][1] + r.h[2][1]),
+                -(r.h[0][2] + r.h[1][2] + r.h[2][2])),
+      lane_rows(r.h[0][0], r.h[0][1], r.h[0][2]), lane_rows(r.h[1][0], r.h[1][1], r.h[1][2]),
+      lane_rows(r.h[2][0], r.h[2][1], r.h[2][2])};
   for (int l = 0; l < lanes; ++l) {
-    for (int a = 0; a < 3; ++a) {
-      double* fa = f + 3 * p.node[a + 1][l];
-      fa[0] += r.h[a][0][l];
-      fa[1] += r.h[a][1][l];
-      fa[2] += r.h[a][2][l];
-    }
-    double* f0 = f + 3 * p.node[0][l];
-    f0[0] += h0[0][l];
-    f0[1] += h0[1][l];
-    f0[2] += h0[2][l];
+    for (int a = 1; a < 4; ++a) add_row(rows[a], l, f[p.node[a][l]]);
+    add_row(rows[0], l, f[p.node[0][l]]);
   }
 }
 
@@ -206,8 +202,8 @@ void account_pack(const ElementBlock& b, int pack, const NodalPressureForces& r,
 }
 
 template <bool Energy>
-SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const double* x,
-                    const double* pressure, double max_abs_log_J, double* f) {
+SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const PaddedVec3* x,
+                    const double* pressure, double max_abs_log_J, PaddedVec3* f) {
   SlabTotals out;
   LaneRunning t;
   const int end = slab.first_pack + slab.n_packs;
@@ -248,7 +244,7 @@ void prepare_nodal_pressure(ElementSet& es, const ModelMesh& mesh) {
   }
 }
 
-void update_nodal_pressures(const ElementSet& es, const double* x, int threads) {
+void update_nodal_pressures(const ElementSet& es, const PaddedVec3* x, int threads) {
   if (es.nodal.empty()) return;
   const NodalPressureData& d = es.nodal;
   double* V = d.V.data();
@@ -290,7 +286,8 @@ void update_nodal_pressures(const ElementSet& es, const double* x, int threads) 
 }
 
 SlabTotals run_nodal_pressure_slab(const ElementSet& es, const ElementBlock& block,
-                                   const Slab& slab, const double* x, double* f, bool with_energy) {
+                                   const Slab& slab, const PaddedVec3* x, PaddedVec3* f,
+                                   bool with_energy) {
   const double* pressure = es.nodal.pressure.data();
   const double max_abs_log_J =
       es.nodal.max_abs_log_J[static_cast<size_t>(&block - es.blocks.data())];
@@ -307,7 +304,7 @@ void add_nodal_volumetric_energy(const ElementSet& es, std::span<double> block_e
       const auto n = static_cast<size_t>(i);
       if (es.nodal.V0[n] <= 0.0) continue;  // a node of no element
       const double J = es.nodal.V[n] / es.nodal.V0[n];
-      const double log_J = J > 0.0 ? std::log(J) : 0.0;  // J_n <= 0: as in pass 2
+      const double log_J = J > 0.0 ? std::log(J) : 0.0;             // J_n <= 0: as in pass 2
       sum += es.nodal.V0[n] * 0.5 * b.lame.lambda * log_J * log_J;  // V0_n U(J_n), eq. NP.2
     }
     block_energy[k] += sum;
