@@ -227,7 +227,7 @@ SlabTotals run_slab(const ElementBlock& b, const std::vector<Pack>& packs, const
 SlabTotals run_slab(const ElementSet& es, const ElementBlock& b, const Slab& slab,
                     const PaddedVec3* x, PaddedVec3* f, bool with_energy) {
   if (b.element == ElementKind::nodal_pressure)
-    return run_nodal_pressure_slab(es, b, slab, x, f, with_energy);
+    return run_nodal_pressure_slab(es, b, slab, f, with_energy);
   if (b.model == MaterialModel::neo_hookean)
     return with_energy
                ? run_slab<NeoHookeanPack, WithEnergy::yes>(b, b.neo_hookean_packs, slab, x, f)

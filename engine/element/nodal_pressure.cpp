@@ -70,10 +70,11 @@ void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedV
 }
 
 // Pass 2 for nodes [first, first + count) of a block, kLanes at a time: J_n = V_n / V0_n,
-// p_n = U'(J_n) = lambda ln(J_n) / J_n (eq. NP.3); returns the largest |ln J_n| (eq. NP.6). A
-// node with J_n <= 0 (only next to an inverted element, which the element pass reports) gets
-// p_n = 0.
-double nodal_pressures(const NodalPressureData& d, double lambda, int first, int count) {
+// p_n = U'(J_n) = lambda ln(J_n) / J_n (eq. NP.3), stored with the node's position as
+// (x, y, z, p_n); returns the largest |ln J_n| (eq. NP.6). A node with J_n <= 0 (only next to an
+// inverted element, which the element pass reports) gets p_n = 0.
+double nodal_pressures(const NodalPressureData& d, const PaddedVec3* x, double lambda, int first,
+                       int count) {
   Lanes J{};
   for (int l = 0; l < kLanes; ++l) {
     const auto n = static_cast<size_t>(first + std::min(l, count - 1));
@@ -83,7 +84,8 @@ double nodal_pressures(const NodalPressureData& d, double lambda, int first, int
   const Lanes p = lambda * log_J / J;
   double max_abs_log_J = 0.0;
   for (int l = 0; l < std::min(count, kLanes); ++l) {
-    d.pressure[static_cast<size_t>(first + l)] = p[l];
+    const auto n = static_cast<size_t>(first + l);
+    d.position_pressure[n] = {{x[n].v[0], x[n].v[1], x[n].v[2], p[l]}};
     max_abs_log_J = std::max(max_abs_log_J, std::abs(log_J[l]));
   }
   return max_abs_log_J;
@@ -101,20 +103,58 @@ struct NodalPressureForces {
   Lanes W;  // V0_e W_e
 };
 
-CCM_NP_INLINE Lanes mean_nodal_pressure(const NeoHookeanPack& p, const double* pressure) {
-  Lanes sum{};
-  for (int l = 0; l < kLanes; ++l)
-    sum[l] = (pressure[p.node[0][l]] + pressure[p.node[1][l]]) +
-             (pressure[p.node[2][l]] + pressure[p.node[3][l]]);
-  return 0.25 * sum;
+// x[l], y[l], z[l], w[l] of the padded nodes n_l: gather_xyz (lanes.hpp) keeping the fourth
+// component, here the nodal pressure.
+CCM_NP_INLINE void gather_xyzw(const PaddedVec3* a, const int (&n)[kLanes], Lanes& x, Lanes& y,
+                               Lanes& z, Lanes& w) {
+#define CCM_NP_ROW(l) load_quad(a[n[l]])
+#if CCM_LANES_ARE_8
+  const Lanes t0 = __builtin_shufflevector(CCM_NP_ROW(0), CCM_NP_ROW(4), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes t1 = __builtin_shufflevector(CCM_NP_ROW(1), CCM_NP_ROW(5), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes t2 = __builtin_shufflevector(CCM_NP_ROW(2), CCM_NP_ROW(6), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes t3 = __builtin_shufflevector(CCM_NP_ROW(3), CCM_NP_ROW(7), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes xz01 = __builtin_shufflevector(t0, t1, 0, 8, 2, 10, 4, 12, 6, 14);
+  const Lanes yw01 = __builtin_shufflevector(t0, t1, 1, 9, 3, 11, 5, 13, 7, 15);
+  const Lanes xz23 = __builtin_shufflevector(t2, t3, 0, 8, 2, 10, 4, 12, 6, 14);
+  const Lanes yw23 = __builtin_shufflevector(t2, t3, 1, 9, 3, 11, 5, 13, 7, 15);
+  x = __builtin_shufflevector(xz01, xz23, 0, 1, 8, 9, 4, 5, 12, 13);
+  y = __builtin_shufflevector(yw01, yw23, 0, 1, 8, 9, 4, 5, 12, 13);
+  z = __builtin_shufflevector(xz01, xz23, 2, 3, 10, 11, 6, 7, 14, 15);
+  w = __builtin_shufflevector(yw01, yw23, 2, 3, 10, 11, 6, 7, 14, 15);
+#else
+  const Quad r0 = CCM_NP_ROW(0), r1 = CCM_NP_ROW(1), r2 = CCM_NP_ROW(2), r3 = CCM_NP_ROW(3);
+  const Lanes xz01 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
+  const Lanes yw01 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
+  const Lanes xz23 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
+  const Lanes yw23 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+  x = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
+  y = __builtin_shufflevector(yw01, yw23, 0, 1, 4, 5);
+  z = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
+  w = __builtin_shufflevector(yw01, yw23, 2, 3, 6, 7);
+#endif
+#undef CCM_NP_ROW
+}
+
+// The edges of Ds (as np_gather_edges) and the mean of the four nodal pressures, pbar_e, from
+// one move per node of the (x, y, z, p_n) rows.
+CCM_NP_INLINE Lanes gather_edges_and_mean_pressure(const NeoHookeanPack& p,
+                                                   const PaddedVec3* position_pressure,
+                                                   Lanes (&e)[3][3]) {
+  Lanes x0[3], p_node[4];
+  gather_xyzw(position_pressure, p.node[0], x0[0], x0[1], x0[2], p_node[0]);
+  for (int c = 0; c < 3; ++c) {
+    gather_xyzw(position_pressure, p.node[c + 1], e[c][0], e[c][1], e[c][2], p_node[c + 1]);
+    for (int r = 0; r < 3; ++r) e[c][r] -= x0[r];
+  }
+  return 0.25 * ((p_node[0] + p_node[1]) + (p_node[2] + p_node[3]));
 }
 
 template <bool Energy>
-CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const PaddedVec3* x,
-                                                 const double* pressure, const Lame& lame,
-                                                 double max_abs_log_J) {
+CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p,
+                                                 const PaddedVec3* position_pressure,
+                                                 const Lame& lame, double max_abs_log_J) {
   Lanes e[3][3], n[3][3];
-  np_gather_edges(p, x, e);
+  const Lanes p_mean = gather_edges_and_mean_pressure(p, position_pressure, e);
   face_normals(e, n);
   const Lanes V0 = np_load(p.V0);
   const Lanes det = det_of(e, n);
@@ -123,7 +163,6 @@ CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p, const 
   const Lanes inv_det = q * six_V0;
   NodalPressureForces out;
   out.J = det * det * q;
-  const Lanes p_mean = mean_nodal_pressure(p, pressure);
   const Lanes g00 = np_load(p.geometry[0]), g11 = np_load(p.geometry[1]);
   const Lanes g22 = np_load(p.geometry[2]), g01 = np_load(p.geometry[3]);
   const Lanes g02 = np_load(p.geometry[4]), g12 = np_load(p.geometry[5]);
@@ -202,15 +241,16 @@ void account_pack(const ElementBlock& b, int pack, const NodalPressureForces& r,
 }
 
 template <bool Energy>
-SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const PaddedVec3* x,
-                    const double* pressure, double max_abs_log_J, PaddedVec3* f) {
+SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const PaddedVec3* position_pressure,
+                    double max_abs_log_J, PaddedVec3* f) {
   SlabTotals out;
   LaneRunning t;
   const int end = slab.first_pack + slab.n_packs;
   for (int i = slab.first_pack; i < end; ++i) {
     const NeoHookeanPack& p = b.neo_hookean_packs[static_cast<size_t>(i)];
     const int lanes = i + 1 == end ? slab.last_lanes : kLanes;
-    const NodalPressureForces r = element_forces<Energy>(p, x, pressure, b.lame, max_abs_log_J);
+    const NodalPressureForces r =
+        element_forces<Energy>(p, position_pressure, b.lame, max_abs_log_J);
     scatter_forces(p, r, lanes, f);
     account_pack<Energy>(b, i, r, lanes, t, out);
   }
@@ -229,7 +269,7 @@ void prepare_nodal_pressure(ElementSet& es, const ModelMesh& mesh) {
   const auto n_nodes = static_cast<size_t>(mesh.n_nodes());
   es.nodal.V0.assign(n_nodes, 0.0);
   es.nodal.V.assign(n_nodes, 0.0);
-  es.nodal.pressure.assign(n_nodes, 0.0);
+  es.nodal.position_pressure.assign(n_nodes, PaddedVec3{});
   es.nodal.max_abs_log_J.assign(es.blocks.size(), 0.0);
   for (size_t k = 0; k < es.blocks.size(); ++k) {
     const ElementBlock& b = es.blocks[k];
@@ -276,9 +316,9 @@ void update_nodal_pressures(const ElementSet& es, const PaddedVec3* x, int threa
       double thread_max = 0.0;
 #pragma omp for schedule(static) nowait
       for (int c = 0; c < chunks; ++c)
-        thread_max = std::max(
-            thread_max,
-            nodal_pressures(d, b.lame.lambda, b.first_node + c * kLanes, b.n_nodes - c * kLanes));
+        thread_max =
+            std::max(thread_max, nodal_pressures(d, x, b.lame.lambda, b.first_node + c * kLanes,
+                                                 b.n_nodes - c * kLanes));
 #pragma omp critical(ccm_nodal_pressure_max)
       d.max_abs_log_J[k] = std::max(d.max_abs_log_J[k], thread_max);
     }
@@ -286,13 +326,12 @@ void update_nodal_pressures(const ElementSet& es, const PaddedVec3* x, int threa
 }
 
 SlabTotals run_nodal_pressure_slab(const ElementSet& es, const ElementBlock& block,
-                                   const Slab& slab, const PaddedVec3* x, PaddedVec3* f,
-                                   bool with_energy) {
-  const double* pressure = es.nodal.pressure.data();
+                                   const Slab& slab, PaddedVec3* f, bool with_energy) {
+  const PaddedVec3* position_pressure = es.nodal.position_pressure.data();
   const double max_abs_log_J =
       es.nodal.max_abs_log_J[static_cast<size_t>(&block - es.blocks.data())];
-  return with_energy ? run_slab<true>(block, slab, x, pressure, max_abs_log_J, f)
-                     : run_slab<false>(block, slab, x, pressure, max_abs_log_J, f);
+  return with_energy ? run_slab<true>(block, slab, position_pressure, max_abs_log_J, f)
+                     : run_slab<false>(block, slab, position_pressure, max_abs_log_J, f);
 }
 
 void add_nodal_volumetric_energy(const ElementSet& es, std::span<double> block_energy) {

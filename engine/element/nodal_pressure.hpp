@@ -24,15 +24,16 @@ namespace ccm {
 // such a block's material is not Neo-Hookean.
 void prepare_nodal_pressure(ElementSet& elements, const ModelMesh& mesh);
 
-// Passes 1 and 2: V_n, then (p_n, |ln J_n|) into elements.nodal, on up to `threads` threads
-// (bitwise the same for any count). Does nothing when no block uses the element.
+// Passes 1 and 2: V_n, then the rows (x, y, z, p_n) and each block's largest |ln J_n| into
+// elements.nodal, on up to `threads` threads (bitwise the same for any count). Does nothing when
+// no block uses the element.
 void update_nodal_pressures(const ElementSet& elements, const PaddedVec3* x, int threads);
 
 // Pass 3 for one slab of a nodal-pressure block: adds the forces into f and reports the slab as
-// the plain kernel does; energy (with_energy) is the elements' part sum_e V0_e W_e only.
+// the plain kernel does; energy (with_energy) is the elements' part sum_e V0_e W_e only. Reads the
+// positions and pressures update_nodal_pressures stored (elements.nodal.position_pressure).
 SlabTotals run_nodal_pressure_slab(const ElementSet& elements, const ElementBlock& block,
-                                   const Slab& slab, const PaddedVec3* x, PaddedVec3* f,
-                                   bool with_energy);
+                                   const Slab& slab, PaddedVec3* f, bool with_energy);
 
 // Adds the nodal volumetric energy sum_n V0_n U(J_n) of every nodal-pressure block to its entry
 // of block_energy (node order: fixed). Reads the V_n of the last update_nodal_pressures.

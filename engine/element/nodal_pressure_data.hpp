@@ -5,17 +5,20 @@
 
 #include <vector>
 
+#include "engine/element/padded_nodes.hpp"
+
 namespace ccm {
 
 struct NodalPressureData {
   // V0_n = sum_{e containing n} V0_e / 4, the reference volume a node represents (eq. NP.1).
   std::vector<double> V0;
   // Scratch of the current evaluation, rewritten by every call of add_internal_forces (so a Model
-  // is run by one run at a time, as every caller does): the current nodal volume V_n and the
-  // nodal pressure p_n (eq. NP.2-NP.3), and per block the largest |ln J_n| of its nodes, which
-  // sets the stable step (eq. NP.6).
+  // is run by one run at a time, as every caller does): the current nodal volume V_n, each node's
+  // current position with its pressure p_n (eq. NP.2-NP.3) in the fourth slot (x, y, z, p_n), so
+  // the element pass loads both in one move, and per block the largest |ln J_n| of its nodes,
+  // which sets the stable step (eq. NP.6).
   mutable std::vector<double> V;
-  mutable std::vector<double> pressure;
+  mutable PaddedNodes position_pressure;
   mutable std::vector<double> max_abs_log_J;
   bool empty() const { return V0.empty(); }
 };
