@@ -53,9 +53,9 @@ CCM_NP_INLINE Lanes det_of(const Lanes (&e)[3][3], const Lanes (&n)[3][3]) {
   return e[0][0] * n[0][0] + e[0][1] * n[0][1] + e[0][2] * n[0][2];
 }
 
-// Pass 1 for one slab: the current element volumes V_e = det(Ds) / 6, by element (each slab
-// writes its own elements: no order to keep).
-void slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedVec3* x, double* volume) {
+// Pass 1 for one slab: V_n += V_e / 4 at the four nodes of each element (eq. NP.2), lane by
+// lane, nodes 0..3: the fixed order every thread count shares.
+void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedVec3* x, double* V) {
   const int end = slab.first_pack + slab.n_packs;
   for (int i = slab.first_pack; i < end; ++i) {
     const NeoHookeanPack& p = b.neo_hookean_packs[static_cast<size_t>(i)];
@@ -63,13 +63,13 @@ void slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedVec3* x, 
     Lanes e[3][3], n[3][3];
     np_gather_edges(p, x, e);
     face_normals(e, n);
-    const Lanes V = det_of(e, n) * (1.0 / 6.0);
+    const Lanes quarter_volume = det_of(e, n) * (1.0 / 24.0);  // det(Ds) / 6 / 4
     for (int l = 0; l < lanes; ++l)
-      volume[b.lane_element[static_cast<size_t>(i * kLanes + l)]] = V[l];
+      for (int a = 0; a < 4; ++a) V[p.node[a][l]] += quarter_volume[l];
   }
 }
 
-// Pass 2 for nodes [first, first + count) of a block, kLanes at a time: V_n, J_n = V_n / V0_n,
+// Pass 2 for nodes [first, first + count) of a block, kLanes at a time: J_n = V_n / V0_n,
 // p_n = U'(J_n) = lambda ln(J_n) / J_n (eq. NP.3), stored with the node's position as
 // (x, y, z, p_n); returns the largest |ln J_n| (eq. NP.6). A node with J_n <= 0 (only next to an
 // inverted element, which the element pass reports) gets p_n = 0.
@@ -78,10 +78,6 @@ double nodal_pressures(const NodalPressureData& d, const PaddedVec3* x, double l
   Lanes J{};
   for (int l = 0; l < kLanes; ++l) {
     const auto n = static_cast<size_t>(first + std::min(l, count - 1));
-    double sum = 0.0;  // eq. NP.2, in the node's fixed element order
-    for (int k = d.node_first[n]; k < d.node_first[n + 1]; ++k)
-      sum += d.element_volume[static_cast<size_t>(d.node_elements[static_cast<size_t>(k)])];
-    d.V[n] = 0.25 * sum;
     J[l] = d.V0[n] > 0.0 ? d.V[n] / d.V0[n] : 1.0;  // V0_n = 0: a node of no element
   }
   const Lanes log_J = vector_log(J > 0.0 ? J : np_broadcast(1.0));
@@ -270,14 +266,11 @@ SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const PaddedVec3* p
 
 void prepare_nodal_pressure(ElementSet& es, const ModelMesh& mesh) {
   if (!any_nodal_pressure(es)) return;
-  NodalPressureData& d = es.nodal;
   const auto n_nodes = static_cast<size_t>(mesh.n_nodes());
-  d.V0.assign(n_nodes, 0.0);
-  d.V.assign(n_nodes, 0.0);
-  d.element_volume.assign(es.tets.size(), 0.0);
-  d.position_pressure.assign(n_nodes, PaddedVec3{});
-  d.max_abs_log_J.assign(es.blocks.size(), 0.0);
-  std::vector<int> count(n_nodes, 0);
+  es.nodal.V0.assign(n_nodes, 0.0);
+  es.nodal.V.assign(n_nodes, 0.0);
+  es.nodal.position_pressure.assign(n_nodes, PaddedVec3{});
+  es.nodal.max_abs_log_J.assign(es.blocks.size(), 0.0);
   for (size_t k = 0; k < es.blocks.size(); ++k) {
     const ElementBlock& b = es.blocks[k];
     if (!is_nodal_pressure(b)) continue;
@@ -285,40 +278,34 @@ void prepare_nodal_pressure(ElementSet& es, const ModelMesh& mesh) {
       throw std::runtime_error(
           fmt::format("body '{}': element nodal_pressure needs material model neo_hookean",
                       mesh.bodies[k].name));
-    for (int e = b.first; e < b.first + b.count; ++e)
-      for (int n : es.tets[static_cast<size_t>(e)]) ++count[static_cast<size_t>(n)];
-  }
-  d.node_first.assign(n_nodes + 1, 0);
-  for (size_t n = 0; n < n_nodes; ++n) d.node_first[n + 1] = d.node_first[n] + count[n];
-  d.node_elements.resize(static_cast<size_t>(d.node_first[n_nodes]));
-  std::vector<int> next(d.node_first.begin(), d.node_first.end() - 1);
-  for (const ElementBlock& b : es.blocks) {
-    if (!is_nodal_pressure(b)) continue;
-    for (int e = b.first; e < b.first + b.count; ++e)  // ascending: each node's list is sorted
+    for (int e = b.first; e < b.first + b.count; ++e)  // eq. NP.1
       for (int n : es.tets[static_cast<size_t>(e)])
-        d.node_elements[static_cast<size_t>(next[static_cast<size_t>(n)]++)] = e;
-  }
-  for (size_t n = 0; n < n_nodes; ++n) {  // eq. NP.1, in the order of eq. NP.2
-    double sum = 0.0;
-    for (int k = d.node_first[n]; k < d.node_first[n + 1]; ++k)
-      sum += es.reference[static_cast<size_t>(d.node_elements[static_cast<size_t>(k)])].V0;
-    d.V0[n] = 0.25 * sum;
+        es.nodal.V0[static_cast<size_t>(n)] += 0.25 * es.reference[static_cast<size_t>(e)].V0;
   }
 }
 
 void update_nodal_pressures(const ElementSet& es, const PaddedVec3* x, int threads) {
   if (es.nodal.empty()) return;
   const NodalPressureData& d = es.nodal;
+  double* V = d.V.data();
   const ElementSchedule& schedule = es.schedule;
   std::fill(d.max_abs_log_J.begin(), d.max_abs_log_J.end(), 0.0);
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
-    // Pass 1: every slab writes only its own elements' volumes.
+    for (const ElementBlock& b : es.blocks) {
+      if (!is_nodal_pressure(b)) continue;
+#pragma omp for schedule(static) nowait
+      for (int n = b.first_node; n < b.first_node + b.n_nodes; ++n) V[n] = 0.0;
+    }
+#pragma omp barrier
+    // Pass 1 in the phases of the force loop: the slabs of one phase share no node.
+    for (const std::vector<int>& phase : schedule.phases) {
 #pragma omp for schedule(dynamic, 1)
-    for (size_t s = 0; s < schedule.slabs.size(); ++s) {
-      const Slab& slab = schedule.slabs[s];
-      const ElementBlock& b = es.blocks[static_cast<size_t>(slab.block)];
-      if (is_nodal_pressure(b)) slab_volumes(b, slab, x, d.element_volume.data());
+      for (size_t k = 0; k < phase.size(); ++k) {
+        const Slab& slab = schedule.slabs[static_cast<size_t>(phase[k])];
+        const ElementBlock& b = es.blocks[static_cast<size_t>(slab.block)];
+        if (is_nodal_pressure(b)) scatter_slab_volumes(b, slab, x, V);
+      }
     }
     // Pass 2: the blocks' node ranges are disjoint, so no barrier between them; a maximum is
     // exact, so the order in which the threads' maxima combine does not matter.

@@ -12,17 +12,11 @@ namespace ccm {
 struct NodalPressureData {
   // V0_n = sum_{e containing n} V0_e / 4, the reference volume a node represents (eq. NP.1).
   std::vector<double> V0;
-  // The elements of each node, ascending: node n's are node_elements[node_first[n] ..
-  // node_first[n + 1]). Its volume sums them in this order, whatever the number of threads.
-  std::vector<int> node_first;
-  std::vector<int> node_elements;
   // Scratch of the current evaluation, rewritten by every call of add_internal_forces (so a Model
-  // is run by one run at a time, as every caller does): the element volumes, the current nodal
-  // volume V_n, each node's
+  // is run by one run at a time, as every caller does): the current nodal volume V_n, each node's
   // current position with its pressure p_n (eq. NP.2-NP.3) in the fourth slot (x, y, z, p_n), so
   // the element pass loads both in one move, and per block the largest |ln J_n| of its nodes,
   // which sets the stable step (eq. NP.6).
-  mutable std::vector<double> element_volume;  // V_e by element
   mutable std::vector<double> V;
   mutable PaddedNodes position_pressure;
   mutable std::vector<double> max_abs_log_J;
