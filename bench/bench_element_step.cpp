@@ -5,8 +5,11 @@
 // minimum and the median of the wall time are printed, the minimum CPU time per thread (which a
 // loaded machine inflates less), and the parallel efficiency t_1 / (N t_N) of the whole step.
 // The final positions and velocities of every thread count are compared bit for bit.
+// --element nodal_pressure runs the averaged-nodal-pressure tet (docs/elements.md) instead of
+// the plain tet4, for the cost ratio of the two.
 //
 //   ./build/bench_element_step [--cells NX NY NZ] [--steps N] [--repeat R] [--threads 1,2]
+//                              [--element tet4|nodal_pressure]
 #include <time.h>
 
 #include <algorithm>
@@ -30,6 +33,7 @@ struct Options {
   int steps = 200;
   int repeat = 5;
   std::vector<int> threads{1, 2};
+  ElementKind element = kDefaultElementKind;
 };
 
 std::vector<int> parse_list(const char* text) {
@@ -46,7 +50,8 @@ std::vector<int> parse_list(const char* text) {
 
 [[noreturn]] void usage(const char* argv0) {
   std::fprintf(stderr,
-               "usage: %s [--cells NX NY NZ] [--steps N] [--repeat R] [--threads N1,N2,...]\n",
+               "usage: %s [--cells NX NY NZ] [--steps N] [--repeat R] [--threads N1,N2,...] "
+               "[--element tet4|nodal_pressure]\n",
                argv0);
   std::exit(2);
 }
@@ -64,6 +69,8 @@ Options parse(int argc, char** argv) {
       o.repeat = std::atoi(argv[++i]);
     } else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
       o.threads = parse_list(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--element") && i + 1 < argc) {
+      if (!parse_element_kind(argv[++i], o.element)) usage(argv[0]);
     } else {
       usage(argv[0]);
     }
@@ -78,6 +85,7 @@ Model make_bench_model(const Options& o) {
   const double h = 0.01;
   add_body(mesh, "block", {MaterialModel::neo_hookean, 1.0e6, 0.45, 1000.0},
            structured_box(Vec3(o.nx * h, o.ny * h, o.nz * h), o.nx, o.ny, o.nz));
+  mesh.bodies.back().element = o.element;
   Model model = make_model(std::move(mesh));
   // A twisting initial velocity so every element deforms.
   for (size_t i = 0; i < model.initial_velocity.size(); ++i) {
@@ -158,10 +166,10 @@ int main(int argc, char** argv) {
   const Model model = make_bench_model(o);
   const int n_el = model.elements.n_elements();
   std::printf(
-      "mesh: %d tets, %d nodes (structured box %d x %d x %d cells), %zu slabs in %zu "
+      "mesh: %d %s tets, %d nodes (structured box %d x %d x %d cells), %zu slabs in %zu "
       "phases, %d lanes per pack\n",
-      n_el, model.mesh.n_nodes(), o.nx, o.ny, o.nz, model.elements.schedule.slabs.size(),
-      model.elements.schedule.phases.size(), kLanes);
+      n_el, std::string(to_string(o.element)).c_str(), model.mesh.n_nodes(), o.nx, o.ny, o.nz,
+      model.elements.schedule.slabs.size(), model.elements.schedule.phases.size(), kLanes);
   std::printf("%d steps per whole-step run, %d repetitions; ns per element-step, min / median\n",
               o.steps, o.repeat);
   std::printf("%-8s %-20s %-20s %-12s %-12s %s\n", "threads", "kernel (f_int, dt)", "whole step",

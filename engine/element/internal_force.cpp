@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "engine/element/lanes.hpp"
+#include "engine/element/nodal_pressure.hpp"
+#include "engine/element/slab_totals.hpp"
 
 namespace ccm {
 namespace {
@@ -164,15 +166,6 @@ CCM_INLINE void scatter(const Pack& p, const PackForces& r, int lanes, PaddedVec
   }
 }
 
-// What a slab reports; slabs are combined in slab order.
-struct SlabTotals {
-  double max_y = 0.0;
-  double min_J = std::numeric_limits<double>::infinity();  // over the elements with J > 0
-  int first_bad = -1;
-  double bad_J = 0.0;
-  double energy = 0.0;
-};
-
 // Per-lane running values over a slab's packs, reduced once at its end.
 struct LaneTotals {
   Lanes max_y = broadcast(0.0);
@@ -231,8 +224,10 @@ SlabTotals run_slab(const ElementBlock& b, const std::vector<Pack>& packs, const
   return out;
 }
 
-SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const PaddedVec3* x, PaddedVec3* f,
-                    bool with_energy) {
+SlabTotals run_slab(const ElementSet& es, const ElementBlock& b, const Slab& slab,
+                    const PaddedVec3* x, PaddedVec3* f, bool with_energy) {
+  if (b.element == ElementKind::nodal_pressure)
+    return run_nodal_pressure_slab(es, b, slab, f, with_energy);
   if (b.model == MaterialModel::neo_hookean)
     return with_energy
                ? run_slab<NeoHookeanPack, WithEnergy::yes>(b, b.neo_hookean_packs, slab, x, f)
@@ -287,7 +282,10 @@ ElementSet make_element_set(const ModelMesh& mesh) {
                          dilatational_wave_speed(body.material),
                          {},
                          {},
-                         {}});
+                         {},
+                         body.element,
+                         body.first_node,
+                         body.n_nodes});
     cuts.push_back(cut_into_slabs(mesh.X, mesh.tets, body.first_element, body.n_elements));
   }
   std::vector<std::span<const int>> slab_elements;
@@ -301,6 +299,7 @@ ElementSet make_element_set(const ModelMesh& mesh) {
       slab_elements.push_back(span);
     }
   es.schedule.phases = make_phases(mesh.n_nodes(), es.tets, es.schedule.slabs, slab_elements);
+  prepare_nodal_pressure(es, mesh);
   return es;
 }
 
@@ -323,6 +322,7 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
   threads = std::max(1, threads);
   const ElementSchedule& schedule = elements.schedule;
   std::vector<SlabTotals> totals(schedule.slabs.size());
+  update_nodal_pressures(elements, xp, threads);  // nodal_pressure.hpp; none: nothing
   // The slabs of one phase share no node; the barrier at the end of each `omp for` keeps the
   // phases in order (element_schedule.hpp).
 #pragma omp parallel num_threads(threads) if (threads > 1)
@@ -331,8 +331,8 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
     for (size_t k = 0; k < phase.size(); ++k) {
       const auto s = static_cast<size_t>(phase[k]);
       const Slab& slab = schedule.slabs[s];
-      totals[s] =
-          run_slab(elements.blocks[static_cast<size_t>(slab.block)], slab, xp, fp, with_energy);
+      totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp, fp,
+                           with_energy);
     }
   }
   // Fixed-order combination: slab order, whatever thread ran which slab.
@@ -352,6 +352,7 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
     }
     if (with_energy) block_energy[static_cast<size_t>(schedule.slabs[s].block)] += t.energy;
   }
+  if (with_energy) add_nodal_volumetric_energy(elements, block_energy);
   r.stable_dt = std::sqrt(min_ratio2);
   return r;
 }

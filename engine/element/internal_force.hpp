@@ -6,8 +6,10 @@
 #include <span>
 #include <vector>
 
+#include "engine/core/element_kind.hpp"
 #include "engine/element/element_pack.hpp"
 #include "engine/element/element_schedule.hpp"
+#include "engine/element/nodal_pressure_data.hpp"
 #include "engine/element/padded_nodes.hpp"
 #include "engine/element/tet4.hpp"
 #include "engine/material/material.hpp"
@@ -27,6 +29,9 @@ struct ElementBlock {
   std::vector<NeoHookeanPack> neo_hookean_packs;
   std::vector<LinearPack> linear_packs;
   std::vector<int> lane_element;  // the global element of every pack lane (padding repeats)
+  ElementKind element = kDefaultElementKind;  // nodal_pressure: see nodal_pressure.hpp
+  int first_node = 0;                         // the body's nodes [first_node, first_node + n_nodes)
+  int n_nodes = 0;
 };
 
 struct ElementSet {
@@ -34,10 +39,12 @@ struct ElementSet {
   std::vector<TetReference> reference;
   std::vector<ElementBlock> blocks;
   ElementSchedule schedule;
+  NodalPressureData nodal;  // for the blocks of element nodal_pressure
   int n_elements() const { return static_cast<int>(tets.size()); }
 };
 
-// Throws std::runtime_error naming the element when a reference tet has no positive volume.
+// Throws std::runtime_error naming the element when a reference tet has no positive volume, or
+// the body when it asks for the nodal-pressure element with a material other than Neo-Hookean.
 ElementSet make_element_set(const ModelMesh& mesh);
 
 struct InternalForceResult {

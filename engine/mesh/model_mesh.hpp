@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/element_kind.hpp"
 #include "engine/material/material.hpp"
 #include "engine/mesh/tet_mesh.hpp"
 
@@ -19,6 +20,7 @@ struct Body {
   int first_element = 0;
   int n_elements = 0;
   std::vector<Triangle> boundary;  // outward-oriented boundary triangles (global node ids)
+  ElementKind element = kDefaultElementKind;  // the formulation of its tets (docs/elements.md)
 };
 
 struct NamedSurface {

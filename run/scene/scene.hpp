@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "config/config_error.hpp"
+#include "engine/core/element_kind.hpp"
 #include "engine/core/penalty_mode.hpp"
 #include "engine/core/step_safety.hpp"
 #include "engine/core/types.hpp"
@@ -63,6 +64,7 @@ struct GeometrySpec {
 struct BodySpec {
   std::string name;
   MaterialParams material;
+  ElementKind element = kDefaultElementKind;  // the tets' formulation (docs/elements.md)
   GeometrySpec geometry;
   Placement placement;
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]

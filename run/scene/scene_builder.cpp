@@ -174,6 +174,7 @@ Model build_model(const Scene& scene) {
   for (const BodySpec& body : scene.bodies) {
     TetMesh geometry = mesh_body(scene, body);
     add_body(mesh, body.name, material_of(body, geometry), std::move(geometry));
+    mesh.bodies.back().element = body.element;
   }
   Model model = make_model(std::move(mesh));
   apply_fixed(scene, model);

@@ -299,14 +299,29 @@ Placement parse_placement(const Table& t) {
   return p;
 }
 
+// element = "tet4" (default) or "nodal_pressure" (Neo-Hookean only; docs/elements.md).
+ElementKind parse_element(const Table& t, const MaterialParams& material) {
+  ElementKind kind = kDefaultElementKind;
+  if (!t.has("element")) return kind;
+  const std::string name = t.need<std::string>("element");
+  if (!parse_element_kind(name, kind))
+    t.fail("element", unknown_value_problem(name, kElementKindNames));
+  if (kind == ElementKind::nodal_pressure && material.model != MaterialModel::neo_hookean)
+    t.fail("element", fmt::format("nodal_pressure needs material model neo_hookean (got '{}')",
+                                  to_string(material.model)));
+  return kind;
+}
+
 BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
-  t.allow_only({"name", "initial_velocity", "mass", "material", "geometry", "placement"});
+  t.allow_only(
+      {"name", "initial_velocity", "mass", "material", "element", "geometry", "placement"});
   BodySpec b;
   b.name = checked_name(t, "name");
   require_unique(t, "name", b.name, names);
   b.initial_velocity = t.get_or<Vec3>("initial_velocity", Vec3::Zero());
   if (t.has("mass")) b.mass = positive(t, "mass", t.need<double>("mass"));
   b.material = parse_material(t.need_table("material"));
+  b.element = parse_element(t, b.material);
   const Table geometry = t.need_table("geometry");
   b.geometry = parse_geometry(geometry);
   if (auto p = t.table("placement")) b.placement = parse_placement(*p);
@@ -561,6 +576,17 @@ void parse_penalty(const Table& t, ContactSpec& c) {
   c.penalty_scale = positive(t, "penalty_scale", t.get_or("penalty_scale", c.penalty_scale));
 }
 
+// DCR's projection update re-evaluates the elements around moved nodes with the plain tet's
+// energy (engine/contact/dcr/projection_update.hpp), which the nodal-pressure element's nodal
+// volumetric energy does not split into; such bodies are refused rather than run inconsistently.
+void refuse_nodal_pressure_bodies(const Table& t, const Scene& scene) {
+  for (const BodySpec& b : scene.bodies)
+    if (b.element == ElementKind::nodal_pressure)
+      t.fail("model", fmt::format("dcr does not support element = \"nodal_pressure\" (body '{}', "
+                                  "line {}); use element = \"tet4\" or rigid_penalty contact",
+                                  b.name, b.where.line_of("element")));
+}
+
 void parse_contact(const Table& root, Scene& scene) {
   const auto t = root.table("contact");
   if (!t) return;
@@ -571,6 +597,7 @@ void parse_contact(const Table& root, Scene& scene) {
   }
   if (model == "dcr") {
     parse_dcr(*t, scene.contact);
+    refuse_nodal_pressure_bodies(*t, scene);
     return;
   }
   if (model != "rigid_penalty")

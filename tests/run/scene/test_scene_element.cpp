@@ -1,0 +1,75 @@
+// Scene [[bodies]] element = "tet4" | "nodal_pressure" (docs/scene-file.md, docs/elements.md):
+// the default, the option reaching the model, and the refusals (an unknown name with a
+// suggestion, a linear-elastic body, DCR contact) with file, line and key.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "run/scene/scene_builder.hpp"
+#include "run/scene/scene_file.hpp"
+#include "tests/support/scene_fixtures.hpp"
+
+using Catch::Contains;
+using namespace ccm;
+
+namespace {
+
+// The one-cube scene with `line` added after the body's name (line 5 of the scene).
+std::string cube_with(const std::string& line) {
+  std::string text = test::kOneCubeScene;
+  const std::string name = "name = \"cube\"\n";
+  const size_t at = text.find(name);
+  REQUIRE(at != std::string::npos);
+  return text.insert(at + name.size(), line + "\n");
+}
+
+}  // namespace
+
+TEST_CASE("scene: a body's element defaults to tet4 and nodal_pressure reaches the model",
+          "[nodal_pressure][scene]") {
+  const Scene plain = parse_scene(test::kOneCubeScene, "s.toml");
+  CHECK(plain.bodies[0].element == ElementKind::tet4);
+  const Scene np = parse_scene(cube_with("element = \"nodal_pressure\""), "s.toml");
+  CHECK(np.bodies[0].element == ElementKind::nodal_pressure);
+  const Model model = build_model(np);
+  CHECK(model.mesh.bodies[0].element == ElementKind::nodal_pressure);
+  REQUIRE(model.elements.blocks.size() == 1);
+  CHECK(model.elements.blocks[0].element == ElementKind::nodal_pressure);
+  CHECK(model.elements.nodal.V0.size() == static_cast<size_t>(model.mesh.n_nodes()));
+  const Scene explicit_plain = parse_scene(cube_with("element = \"tet4\""), "s.toml");
+  CHECK(build_model(explicit_plain).elements.nodal.empty());
+}
+
+TEST_CASE("scene: a bad element is refused with file, line and key", "[nodal_pressure][scene]") {
+  CHECK(test::scene_error_of(cube_with("element = \"nodal_presure\"")) ==
+        "s.toml:5: bodies[0].element: must be one of \"tet4\", \"nodal_pressure\" (got "
+        "\"nodal_presure\"; did you mean \"nodal_pressure\"?)");
+  CHECK(test::scene_error_of(cube_with("element = \"hex8\"")) ==
+        "s.toml:5: bodies[0].element: must be one of \"tet4\", \"nodal_pressure\" (got \"hex8\")");
+  std::string linear = cube_with("element = \"nodal_pressure\"");
+  linear.insert(linear.find("E = 1e5"), "model = \"linear_elastic\"\n");
+  CHECK(test::scene_error_of(linear) ==
+        "s.toml:5: bodies[0].element: nodal_pressure needs material model neo_hookean (got "
+        "'linear_elastic')");
+}
+
+TEST_CASE("scene: dcr contact refuses a nodal_pressure body before the run",
+          "[nodal_pressure][scene]") {
+  const std::string text = cube_with("element = \"nodal_pressure\"") +
+                           "[contact]\nmodel = \"dcr\"\nsurfaces = [\"cube\"]\n";
+  CHECK_THAT(test::scene_error_of(text),
+             Contains("s.toml:15: contact.model: dcr does not support element = "
+                      "\"nodal_pressure\" (body 'cube', line 5)"));
+}
+
+TEST_CASE("scene: the nearly incompressible example parses and builds with nodal_pressure",
+          "[nodal_pressure][scene]") {
+  const Scene scene = parse_scene_file(std::string(CCM_SOURCE_DIR) +
+                                       "/scenes/examples/rubber_pad_nearly_incompressible.toml");
+  REQUIRE(scene.bodies.size() == 1);
+  CHECK(scene.bodies[0].element == ElementKind::nodal_pressure);
+  CHECK(scene.bodies[0].material.nu == 0.499);
+  CHECK(scene.warnings.empty());
+  const Model model = build_model(scene);
+  CHECK(model.elements.blocks[0].element == ElementKind::nodal_pressure);
+  CHECK(model.mesh.n_elements() > 100);
+}
