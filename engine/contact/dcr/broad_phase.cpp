@@ -35,23 +35,31 @@ void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
     throw std::invalid_argument("broad phase: inflation must be finite and >= 0, got " +
                                 std::to_string(inflation));
   if (f.nodes.empty()) return;
-  sweep_node_boxes(f, x_start, x_end, node_box_, *loops_);
   ++stats_.calls;
-  stats_.rebuilt = !cache_holds(f, inflation, self_contact);
+  stats_.rebuilt = !sweep_within_cache(f, x_start, x_end, inflation, self_contact);
   if (stats_.rebuilt) rebuild(f, inflation, self_contact);
   current_boxes(inflation);
   filter(out);
 }
 
-// Same surface, inflation and self_contact, and every node's swept box inside its allowance.
-bool BroadPhase::cache_holds(const SurfaceFeatures& f, double inflation, bool self_contact) {
-  if (features_ != &f || n_nodes_ != f.nodes.size() || n_edges_ != f.edges.size() ||
-      n_faces_ != f.faces.size() || inflation_ != inflation || self_contact_ != self_contact)
-    return false;
-  chunk_inside_.assign(static_cast<size_t>(loops_->chunks(node_box_.size())), 1);
-  loops_->run(node_box_.size(), [this](size_t begin, size_t end, int chunk) {
-    bool inside = true;  // branch-free over the chunk's nodes
-    for (size_t i = begin; i < end; ++i) inside &= contains(allowance_[i], node_box_[i]);
+// The swept node boxes of the step, and whether the cache holds for them: same surface,
+// inflation and self_contact, and every node's swept box inside its allowance (one loop: one
+// parallel region).
+bool BroadPhase::sweep_within_cache(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                                    std::span<const Vec3> x_end, double inflation,
+                                    bool self_contact) {
+  const bool same = features_ == &f && n_nodes_ == f.nodes.size() && n_edges_ == f.edges.size() &&
+                    n_faces_ == f.faces.size() && inflation_ == inflation &&
+                    self_contact_ == self_contact;
+  const size_t n = f.nodes.size();
+  node_box_.resize(n);
+  chunk_inside_.assign(static_cast<size_t>(loops_->chunks(n)), 1);
+  loops_->run(n, [&](size_t begin, size_t end, int chunk) {
+    bool inside = same;  // branch-free over the chunk's nodes
+    for (size_t i = begin; i < end; ++i) {
+      node_box_[i] = swept_node_box(f, x_start, x_end, i);
+      if (same) inside &= contains(allowance_[i], node_box_[i]);
+    }
     chunk_inside_[static_cast<size_t>(chunk)] = inside;
   });
   return std::all_of(chunk_inside_.begin(), chunk_inside_.end(), [](char c) { return c != 0; });

@@ -68,7 +68,8 @@ class BroadPhase {
   const BroadPhaseStats& stats() const { return stats_; }
 
  private:
-  bool cache_holds(const SurfaceFeatures& f, double inflation, bool self_contact);
+  bool sweep_within_cache(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                          std::span<const Vec3> x_end, double inflation, bool self_contact);
   void rebuild(const SurfaceFeatures& f, double inflation, bool self_contact);
   void list_active();
   void current_boxes(double inflation);
@@ -92,7 +93,7 @@ class BroadPhase {
   Candidates cache_;
   SweptBoxHash hash_;
   const ChunkedLoops* loops_ = &serial_loops();
-  std::vector<char> chunk_inside_;                // scratch of cache_holds, per chunk
+  std::vector<char> chunk_inside_;                // scratch of sweep_within_cache, per chunk
   ChunkLists<NodeFaceCandidate> node_face_part_;  // scratch of filter, per chunk
   ChunkLists<EdgeEdgeCandidate> edge_edge_part_;
   BroadPhaseStats stats_;

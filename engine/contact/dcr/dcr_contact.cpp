@@ -200,16 +200,19 @@ void DcrContact::detect(const State& s) {
 // in the same order, as one thread's.
 int DcrContact::test_candidates(const State& s, bool only_touched) {
   const size_t n = candidate_is_constraint_.size();
-  found_.reset(loops_.chunks(n));
-  loops_.run(n, [&](size_t begin, size_t end, int chunk) {
-    for (size_t k = begin; k < end; ++k) {
-      if (candidate_is_constraint_[k] || (only_touched && !candidate_touched(k))) continue;
-      if (const std::optional<Constraint> c = candidate_contact(s, k)) {
-        found_[chunk].push_back(*c);
-        candidate_is_constraint_[k] = 1;  // one byte per candidate: no two chunks share one
-      }
-    }
-  });
+  found_.reset(loops_.chunks(n, ChunkedLoops::kHeavyItem));
+  loops_.run(
+      n,
+      [&](size_t begin, size_t end, int chunk) {
+        for (size_t k = begin; k < end; ++k) {
+          if (candidate_is_constraint_[k] || (only_touched && !candidate_touched(k))) continue;
+          if (const std::optional<Constraint> c = candidate_contact(s, k)) {
+            found_[chunk].push_back(*c);
+            candidate_is_constraint_[k] = 1;  // one byte per candidate: no two chunks share one
+          }
+        }
+      },
+      ChunkedLoops::kHeavyItem);
   const size_t before = constraints_.size();
   found_.append_to(constraints_);
   return static_cast<int>(constraints_.size() - before);

@@ -168,20 +168,23 @@ void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, boo
   build(edge_, edges_);
   // One loop over the queries: the nodes (against the faces), then the edges (against the edges).
   const size_t n_nodes = f.nodes.size(), n = n_nodes + f.edges.size();
-  const int chunks = loops.chunks(n);
+  const int chunks = loops.chunks(n, ChunkedLoops::kHeavyItem);
   scratch_.resize(std::max(scratch_.size(), static_cast<size_t>(chunks)));
   node_face_part_.reset(chunks);
   edge_edge_part_.reset(chunks);
-  loops.run(n, [&](size_t begin, size_t end, int chunk) {
-    QueryScratch& scratch = scratch_[static_cast<size_t>(chunk)];
-    scratch.stats = {};
-    if (begin < n_nodes)
-      find_node_face(f, boxes, self_contact, begin, std::min(end, n_nodes), scratch,
-                     node_face_part_[chunk]);
-    if (end > n_nodes)
-      find_edge_edge(f, self_contact, std::max(begin, n_nodes) - n_nodes, end - n_nodes, scratch,
-                     edge_edge_part_[chunk]);
-  });
+  loops.run(
+      n,
+      [&](size_t begin, size_t end, int chunk) {
+        QueryScratch& scratch = scratch_[static_cast<size_t>(chunk)];
+        scratch.stats = {};
+        if (begin < n_nodes)
+          find_node_face(f, boxes, self_contact, begin, std::min(end, n_nodes), scratch,
+                         node_face_part_[chunk]);
+        if (end > n_nodes)
+          find_edge_edge(f, self_contact, std::max(begin, n_nodes) - n_nodes, end - n_nodes,
+                         scratch, edge_edge_part_[chunk]);
+      },
+      ChunkedLoops::kHeavyItem);
   node_face_part_.append_to(out.node_face);
   edge_edge_part_.append_to(out.edge_edge);
   for (int c = 0; c < chunks; ++c) {  // integer counters: the sum does not depend on the order

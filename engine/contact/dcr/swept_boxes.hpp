@@ -42,6 +42,10 @@ struct LocalTopology {
 // Throws std::invalid_argument when a face or edge uses a node missing from f.nodes.
 LocalTopology local_topology(const SurfaceFeatures& f);
 
+// The swept box of surface node i (index into f.nodes), not inflated; throws as below.
+Box swept_node_box(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                   std::span<const Vec3> x_end, std::size_t i);
+
 // The swept box of every surface node (index i of f.nodes), not inflated. Throws
 // std::invalid_argument when a surface node has no position and std::domain_error naming the node
 // when a position is not finite (the first such node). Each node on its own: `loops` may share

@@ -15,15 +15,17 @@ void ChunkedLoops::resolve_threads() {
   threads_ = use_.threads > 0 ? use_.threads : default_threads();
 }
 
-int ChunkedLoops::chunks(std::size_t n) const {
+int ChunkedLoops::chunks(std::size_t n, std::size_t item_weight) const {
   const int c = kChunksPerThread * threads_;
-  if (threads_ <= 1 || n < use_.min_items || n < static_cast<std::size_t>(c)) return 1;
+  if (threads_ <= 1 || n * item_weight < use_.min_items || n < static_cast<std::size_t>(c))
+    return 1;
   return c;
 }
 
 void ChunkedLoops::run(std::size_t n,
-                       const std::function<void(std::size_t, std::size_t, int)>& body) const {
-  const int c_total = chunks(n);
+                       const std::function<void(std::size_t, std::size_t, int)>& body,
+                       std::size_t item_weight) const {
+  const int c_total = chunks(n, item_weight);
   if (c_total == 1) {
     body(0, n, 0);
     return;

@@ -2,7 +2,8 @@
 // on the thread count, to the bit (docs/parallel.md, "Threads").
 //
 // A loop over n items is cut into C contiguous chunks taken in item order, chunk c covering items
-// [c n / C, (c + 1) n / C); C is kChunksPerThread x the thread count when n >= min_items, else 1.
+// [c n / C, (c + 1) n / C); C is kChunksPerThread x the thread count when the loop has enough work
+// (ThreadUse::min_items), else 1.
 // The threads take the chunks as they come free (a thread slowed by another process on the core
 // then does fewer of them, and uneven items even out). Each chunk writes
 // its own results (a list it appends to in item order, its own counters); the caller joins them
@@ -26,14 +27,18 @@ namespace ccm::dcr {
 struct ThreadUse {
   // Threads; 0: default_threads() (engine/solver/thread_count.hpp), read at each step.
   int threads = 0;
-  // Loops over fewer items stay on one thread: a parallel region costs microseconds, and the
-  // items (a box, a CCD test) cost tens to hundreds of nanoseconds.
+  // Loops of less work stay on one thread, counted in light items (a box, a few ns each); a
+  // heavy item (a CCD test, a grid query: a hundred ns to a microsecond) counts kHeavyItem. A
+  // parallel region costs microseconds on an idle machine and far more on a loaded one (a
+  // thread that is not running holds up the region's end: 0.07-8 ms measured on the 2 shared
+  // cores, docs/parallel.md).
   std::size_t min_items = 2048;
 };
 
 class ChunkedLoops {
  public:
   static constexpr int kChunksPerThread = 4;
+  static constexpr std::size_t kHeavyItem = 16;  // weight of a heavy item (ThreadUse::min_items)
 
   explicit ChunkedLoops(ThreadUse use = {}) : use_(use) {}
 
@@ -41,13 +46,15 @@ class ChunkedLoops {
   void resolve_threads();
   int threads() const { return threads_; }
 
-  // How many chunks a loop over n items is cut into (1: it runs on the calling thread).
-  int chunks(std::size_t n) const;
+  // How many chunks a loop over n items of the given weight (1 light, kHeavyItem heavy) is cut
+  // into (1: it runs on the calling thread).
+  int chunks(std::size_t n, std::size_t item_weight = 1) const;
 
   // Calls body(begin, end, chunk) for every chunk of a loop over n items, the chunks on their own
   // threads. An exception thrown by a chunk is rethrown after the loop: the one of the lowest
   // chunk, which is the one the serial loop would have thrown first.
-  void run(std::size_t n, const std::function<void(std::size_t, std::size_t, int)>& body) const;
+  void run(std::size_t n, const std::function<void(std::size_t, std::size_t, int)>& body,
+           std::size_t item_weight = 1) const;
 
   // Loops that ran on more than one thread since construction (tests check that the threaded
   // paths were taken).
