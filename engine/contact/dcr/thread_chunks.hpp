@@ -2,15 +2,14 @@
 // on the thread count, to the bit (docs/parallel.md, "Threads").
 //
 // A loop over n items is cut into C contiguous chunks taken in item order, chunk c covering items
-// [c n / C, (c + 1) n / C); C is kChunksPerThread x the thread count when the loop has enough work
-// (ThreadUse::min_items), else 1.
-// The threads take the chunks as they come free (a thread slowed by another process on the core
-// then does fewer of them, and uneven items even out). Each chunk writes
-// its own results (a list it appends to in item order, its own counters); the caller joins them
-// in chunk order. Joined that way, a list is the serial loop's list whatever C is, provided an
-// item's result depends on that item alone; minima, maxima, integer counts and logical ANDs do
-// not depend on the order of their operands anyway. No floating-point sum is formed across
-// items here (a sum would depend on where the chunks are cut).
+// [c n / C, (c + 1) n / C); C is kChunksPerThread x the thread count when the loop has enough
+// work (ThreadUse::min_items), else 1. The threads take the chunks as they come free (a thread
+// slowed by another process on its core then does fewer of them, and uneven items even out).
+// Each chunk writes its own results (a list it appends to in item order, its own counters); the
+// caller joins them in chunk order. Joined that way, a list is the serial loop's list whatever C
+// is, provided an item's result depends on that item alone; minima, maxima, integer counts and
+// logical ANDs do not depend on the order of their operands anyway. No floating-point sum is
+// formed across items here (a sum would depend on where the chunks are cut).
 //
 // Only this file's .cpp is compiled with OpenMP: the loops hand it one call per chunk (a
 // std::function call costs nothing against a chunk of thousands of items).
