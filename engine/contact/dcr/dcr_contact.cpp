@@ -155,7 +155,7 @@ bool DcrContact::bodies_may_touch(const State& s) const {
   const size_t n = features_.nodes.size();
   std::vector<std::vector<Eigen::AlignedBox3d>> part(static_cast<size_t>(loops_.chunks(n)));
   loops_.run(n, [&](size_t begin, size_t end, int chunk) {
-    std::vector<Eigen::AlignedBox3d>& boxes = part[static_cast<size_t>(chunk)];
+    std::vector<Eigen::AlignedBox3d> boxes;  // the chunk's own (no line shared with another's)
     for (size_t i = begin; i < end; ++i) {
       const auto body = static_cast<size_t>(features_.node_body[i]);
       if (boxes.size() <= body) boxes.resize(body + 1);
@@ -163,6 +163,7 @@ bool DcrContact::bodies_may_touch(const State& s) const {
       boxes[body].extend(x_n_[node]);
       boxes[body].extend(s.x[node]);
     }
+    part[static_cast<size_t>(chunk)] = std::move(boxes);
   });
   std::vector<Eigen::AlignedBox3d> boxes;
   for (const std::vector<Eigen::AlignedBox3d>& p : part) {
@@ -570,7 +571,7 @@ double DcrContact::approach_limit(const State& state) const {
   const size_t n = features_.nodes.size();
   std::vector<std::vector<Reach>> part(static_cast<size_t>(loops_.chunks(n)));
   loops_.run(n, [&](size_t begin, size_t end, int chunk) {
-    std::vector<Reach>& bodies = part[static_cast<size_t>(chunk)];
+    std::vector<Reach> bodies;  // the chunk's own (no line shared with another's)
     for (size_t i = begin; i < end; ++i) {
       const auto body = static_cast<size_t>(features_.node_body[i]);
       if (bodies.size() <= body) bodies.resize(body + 1);
@@ -579,6 +580,7 @@ double DcrContact::approach_limit(const State& state) const {
       bodies[body].v = std::max(bodies[body].v, state.v[node].norm());
       bodies[body].a = std::max(bodies[body].a, state.a[node].norm());
     }
+    part[static_cast<size_t>(chunk)] = std::move(bodies);
   });
   std::vector<Reach> bodies;
   for (const std::vector<Reach>& p : part) {

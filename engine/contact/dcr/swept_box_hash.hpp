@@ -98,8 +98,9 @@ class SweptBoxHash {
   static std::size_t bucket(std::int64_t i, std::int64_t j, std::int64_t k, int bits);
   template <typename Record>
   void build(const std::vector<Record>& records, Table& table);
-  // What one chunk of queries works with: the partners of one query, and its counters.
-  struct QueryScratch {
+  // What one chunk of queries works with: the partners of one query, and its counters (on cache
+  // lines of their own: they change at every box test).
+  struct alignas(kCacheLine) QueryScratch {
     std::vector<int> found;
     SearchStats stats;
   };

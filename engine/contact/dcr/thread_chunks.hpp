@@ -22,6 +22,9 @@
 
 namespace ccm::dcr {
 
+// Data that threads write often is kept this far apart (a cache line).
+inline constexpr std::size_t kCacheLine = 64;
+
 // How many threads the detection loops may use, and from what loop size.
 struct ThreadUse {
   // Threads; 0: default_threads() (engine/solver/thread_count.hpp), read at each step.
@@ -69,27 +72,32 @@ class ChunkedLoops {
 // Loops that always run on the calling thread (the default of the functions that take loops).
 const ChunkedLoops& serial_loops();
 
-// Per-chunk scratch lists, reused from one loop to the next.
+// Per-chunk scratch lists, reused from one loop to the next. Each list's header sits on a cache
+// line of its own: chunks on different threads append to their lists at every item, and headers
+// sharing a line would bounce it between the cores at every append.
 template <typename T>
 class ChunkLists {
  public:
   // c empty lists (their storage kept).
   void reset(int c) {
     if (lists_.size() < static_cast<std::size_t>(c)) lists_.resize(static_cast<std::size_t>(c));
-    for (int i = 0; i < c; ++i) lists_[static_cast<std::size_t>(i)].clear();
+    for (int i = 0; i < c; ++i) lists_[static_cast<std::size_t>(i)].items.clear();
     used_ = c;
   }
-  std::vector<T>& operator[](int c) { return lists_[static_cast<std::size_t>(c)]; }
+  std::vector<T>& operator[](int c) { return lists_[static_cast<std::size_t>(c)].items; }
   // Appends the lists to out in chunk order.
   void append_to(std::vector<T>& out) const {
     for (int c = 0; c < used_; ++c) {
-      const std::vector<T>& l = lists_[static_cast<std::size_t>(c)];
+      const std::vector<T>& l = lists_[static_cast<std::size_t>(c)].items;
       out.insert(out.end(), l.begin(), l.end());
     }
   }
 
  private:
-  std::vector<std::vector<T>> lists_;
+  struct alignas(kCacheLine) List {
+    std::vector<T> items;
+  };
+  std::vector<List> lists_;
   int used_ = 0;
 };
 
