@@ -34,7 +34,7 @@ struct ThreadUse {
   // parallel region costs microseconds on an idle machine and far more on a loaded one (a
   // thread that is not running holds up the region's end: 0.07-8 ms measured on the 2 shared
   // cores, docs/parallel.md).
-  std::size_t min_items = 2048;
+  std::size_t min_items = 16384;
 };
 
 class ChunkedLoops {
