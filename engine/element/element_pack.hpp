@@ -13,8 +13,10 @@ namespace ccm {
 
 // One SIMD register of doubles: 8 with AVX-512, else 4 (AVX2).
 #if defined(__AVX512F__)
+#define CCM_LANES_ARE_8 1  // for code that cannot be written for both widths in one form
 inline constexpr int kLanes = 8;
 #else
+#define CCM_LANES_ARE_8 0
 inline constexpr int kLanes = 4;
 #endif
 

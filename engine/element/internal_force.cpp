@@ -33,9 +33,9 @@ struct PackForces {
   Lanes W;  // V0 x strain energy density (WithEnergy::yes only)
 };
 
-// Edges e[c][r] = x_{c+1,r} - x_{0,r} (the columns of Ds), gathered from x (3 n doubles).
+// Edges e[c][r] = x_{c+1,r} - x_{0,r} (the columns of Ds), gathered from the padded nodes x.
 template <class Pack>
-CCM_INLINE void gather_edges(const Pack& p, const double* x, Lanes (&e)[3][3]) {
+CCM_INLINE void gather_edges(const Pack& p, const PaddedVec3* x, Lanes (&e)[3][3]) {
   Lanes x0[3];
   gather_xyz(x, p.node[0], x0[0], x0[1], x0[2]);
   for (int c = 0; c < 3; ++c) {
@@ -79,7 +79,8 @@ CCM_INLINE Shape shape_of(const Lanes (&e)[3][3], Lanes V0) {
 //   H = -V0 P Dm^-T = -mu V0 Ds G + V0 (mu - lambda ln J) cof(Ds) / det(Ds)
 // (F^-T Dm^-T = Ds^-T), and tr C = tr(F^T F) = sum_rc Ds_rc (Ds G)_rc.
 template <WithEnergy Energy>
-CCM_INLINE PackForces neo_hookean_pack(const NeoHookeanPack& p, const double* x, const Lame& lame) {
+CCM_INLINE PackForces neo_hookean_pack(const NeoHookeanPack& p, const PaddedVec3* x,
+                                       const Lame& lame) {
   Lanes e[3][3];
   gather_edges(p, x, e);
   const Lanes V0 = load(p.V0);
@@ -117,7 +118,7 @@ CCM_INLINE PackForces neo_hookean_pack(const NeoHookeanPack& p, const double* x,
 // Linear elastic (eq. 2.1; linear_elastic.hpp): sigma = lambda tr(eps) I + 2 mu eps with
 // eps = sym(F - I), H(i, a) = -V0 sum_c P(i, c) Dm^-1(a, c); the reference moduli set the step.
 template <WithEnergy Energy>
-CCM_INLINE PackForces linear_pack(const LinearPack& p, const double* x, const Lame& lame) {
+CCM_INLINE PackForces linear_pack(const LinearPack& p, const PaddedVec3* x, const Lame& lame) {
   Lanes e[3][3];
   gather_edges(p, x, e);
   const Lanes V0 = load(p.V0);
@@ -151,20 +152,15 @@ CCM_INLINE PackForces linear_pack(const LinearPack& p, const double* x, const La
 // Adds the first `lanes` lanes' nodal forces into f, lane by lane, nodes 1, 2, 3 then 0: the
 // fixed order every thread count shares (lanes may share nodes).
 template <class Pack>
-CCM_INLINE void scatter(const Pack& p, const PackForces& r, int lanes, double* f) {
-  Lanes h0[3];
-  for (int i = 0; i < 3; ++i) h0[i] = -(r.h[0][i] + r.h[1][i] + r.h[2][i]);
+CCM_INLINE void scatter(const Pack& p, const PackForces& r, int lanes, PaddedVec3* f) {
+  const LaneRows rows[4] = {
+      lane_rows(-(r.h[0][0] + r.h[1][0] + r.h[2][0]), -(r.h[0][1] + r.h[1][1] + r.h[2][1]),
+                -(r.h[0][2] + r.h[1][2] + r.h[2][2])),
+      lane_rows(r.h[0][0], r.h[0][1], r.h[0][2]), lane_rows(r.h[1][0], r.h[1][1], r.h[1][2]),
+      lane_rows(r.h[2][0], r.h[2][1], r.h[2][2])};
   for (int l = 0; l < lanes; ++l) {
-    for (int a = 0; a < 3; ++a) {
-      double* fa = f + 3 * p.node[a + 1][l];
-      fa[0] += r.h[a][0][l];
-      fa[1] += r.h[a][1][l];
-      fa[2] += r.h[a][2][l];
-    }
-    double* f0 = f + 3 * p.node[0][l];
-    f0[0] += h0[0][l];
-    f0[1] += h0[1][l];
-    f0[2] += h0[2][l];
+    for (int a = 1; a < 4; ++a) add_row(rows[a], l, f[p.node[a][l]]);
+    add_row(rows[0], l, f[p.node[0][l]]);
   }
 }
 
@@ -212,7 +208,7 @@ CCM_INLINE void account(const ElementBlock& b, int pack, const PackForces& r, in
 
 template <class Pack, WithEnergy Energy>
 SlabTotals run_slab(const ElementBlock& b, const std::vector<Pack>& packs, const Slab& slab,
-                    const double* x, double* f) {
+                    const PaddedVec3* x, PaddedVec3* f) {
   SlabTotals out;
   LaneTotals t;
   const int end = slab.first_pack + slab.n_packs;
@@ -235,7 +231,7 @@ SlabTotals run_slab(const ElementBlock& b, const std::vector<Pack>& packs, const
   return out;
 }
 
-SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const double* x, double* f,
+SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const PaddedVec3* x, PaddedVec3* f,
                     bool with_energy) {
   if (b.model == MaterialModel::neo_hookean)
     return with_energy
@@ -311,9 +307,18 @@ ElementSet make_element_set(const ModelMesh& mesh) {
 InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const Vec3> x,
                                         std::span<Vec3> f, std::span<double> block_energy,
                                         int threads) {
-  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
-  const double* xp = x.data()->data();
-  double* fp = f.data()->data();
+  PaddedNodes x4(x.size()), f4(f.size());
+  for (size_t i = 0; i < x.size(); ++i) x4[i] = padded(x[i]);
+  const InternalForceResult r = add_internal_forces(elements, x4, f4, block_energy, threads);
+  for (size_t i = 0; i < f.size(); ++i) f[i] += unpadded(f4[i]);
+  return r;
+}
+
+InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const PaddedVec3> x,
+                                        std::span<PaddedVec3> f, std::span<double> block_energy,
+                                        int threads) {
+  const PaddedVec3* xp = x.data();
+  PaddedVec3* fp = f.data();
   const bool with_energy = !block_energy.empty();
   threads = std::max(1, threads);
   const ElementSchedule& schedule = elements.schedule;

@@ -8,6 +8,7 @@
 
 #include "engine/element/element_pack.hpp"
 #include "engine/element/element_schedule.hpp"
+#include "engine/element/padded_nodes.hpp"
 #include "engine/element/tet4.hpp"
 #include "engine/material/material.hpp"
 #include "engine/mesh/model_mesh.hpp"
@@ -54,6 +55,12 @@ struct InternalForceResult {
 InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const Vec3> x,
                                         std::span<Vec3> f, std::span<double> block_energy = {},
                                         int threads = 1);
+
+// The same on padded nodes (padded_nodes.hpp), the form the kernel moves without repacking: the
+// integrator's path. f is added into as above; its fourth components stay as they are.
+InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const PaddedVec3> x,
+                                        std::span<PaddedVec3> f,
+                                        std::span<double> block_energy = {}, int threads = 1);
 
 // Reference-configuration stable step min_e h_e / c_d,e, used before the first evaluation.
 double reference_stable_dt(const ElementSet& elements, std::span<const Vec3> X);

@@ -1,13 +1,17 @@
 // A vector of kLanes doubles (GCC vector extension: one SIMD register), the log the Neo-Hookean
-// kernel needs on it, and the gather of a nodal array of Vec3 (x y z, packed) into lanes.
-// (Gathers and scatters by masked 256-bit loads and stores and an 8 x 4 transpose were measured
-// slower here than these scalar moves: the scatter's masked stores do not forward to the next
-// read of the same node.)
+// kernel needs on it, and the moves between lanes and nodal arrays of padded nodes
+// (padded_nodes.hpp): a pack's node slot is one aligned 256-bit load per lane and a transpose by
+// shuffles, and its forces go back by the reverse transpose and one 256-bit read-add-write per
+// lane. (On nodes packed as three doubles, masked 256-bit
+// moves were measured slower than scalar ones: masked stores do not forward to the next read of
+// the same node.)
 #pragma once
 
 #include <cmath>
+#include <cstring>
 
 #include "engine/element/element_pack.hpp"
+#include "engine/element/padded_nodes.hpp"
 
 namespace ccm {
 
@@ -29,17 +33,90 @@ inline Lanes vector_log(Lanes v) {
 }
 #endif
 
-// x[l] = a[3 n_l], y[l] = a[3 n_l + 1], z[l] = a[3 n_l + 2] for the nodes n_l of the lanes.
-inline void gather_xyz(const double* a, const int (&n)[kLanes], Lanes& x, Lanes& y, Lanes& z) {
-  Lanes gx{}, gy{}, gz{};
-  for (int l = 0; l < kLanes; ++l) {
-    gx[l] = a[3 * n[l]];
-    gy[l] = a[3 * n[l] + 1];
-    gz[l] = a[3 * n[l] + 2];
+// One padded node as a vector (x, y, z, 0).
+using Quad = double __attribute__((vector_size(4 * sizeof(double))));
+
+inline Quad load_quad(const PaddedVec3& a) {
+  Quad q;
+  std::memcpy(&q, a.v, sizeof q);
+  return q;
+}
+
+// x[l], y[l], z[l]: the coordinates of the nodes n_l of the lanes. One aligned 256-bit load per
+// node, then a transpose by shuffles: [x y z 0] rows to x, y and z lanes.
+inline void gather_xyz(const PaddedVec3* a, const int (&n)[kLanes], Lanes& x, Lanes& y, Lanes& z) {
+#define CCM_ROW(l) load_quad(a[n[l]])
+#if CCM_LANES_ARE_8
+  // t_k = [node k | node k + 4]; unpacks give x z and y pairs; a two-source permute finishes.
+  const Lanes t0 = __builtin_shufflevector(CCM_ROW(0), CCM_ROW(4), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes t1 = __builtin_shufflevector(CCM_ROW(1), CCM_ROW(5), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes t2 = __builtin_shufflevector(CCM_ROW(2), CCM_ROW(6), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes t3 = __builtin_shufflevector(CCM_ROW(3), CCM_ROW(7), 0, 1, 2, 3, 4, 5, 6, 7);
+  const Lanes xz01 = __builtin_shufflevector(t0, t1, 0, 8, 2, 10, 4, 12, 6, 14);
+  const Lanes y01 = __builtin_shufflevector(t0, t1, 1, 9, 3, 11, 5, 13, 7, 15);
+  const Lanes xz23 = __builtin_shufflevector(t2, t3, 0, 8, 2, 10, 4, 12, 6, 14);
+  const Lanes y23 = __builtin_shufflevector(t2, t3, 1, 9, 3, 11, 5, 13, 7, 15);
+  x = __builtin_shufflevector(xz01, xz23, 0, 1, 8, 9, 4, 5, 12, 13);
+  y = __builtin_shufflevector(y01, y23, 0, 1, 8, 9, 4, 5, 12, 13);
+  z = __builtin_shufflevector(xz01, xz23, 2, 3, 10, 11, 6, 7, 14, 15);
+#else
+  const Quad r0 = CCM_ROW(0), r1 = CCM_ROW(1), r2 = CCM_ROW(2), r3 = CCM_ROW(3);
+  const Lanes xz01 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
+  const Lanes y01 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
+  const Lanes xz23 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
+  const Lanes y23 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+  x = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
+  y = __builtin_shufflevector(y01, y23, 0, 1, 4, 5);
+  z = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
+#endif
+#undef CCM_ROW
+}
+
+// The forces (x, y, z)[l] of the lanes as one padded row per lane, (x, y, z, 0)[l]: the
+// reverse transpose.
+struct LaneRows {
+#if CCM_LANES_ARE_8
+  Lanes pair[4];  // pair[k] = [row k | row k + 4]
+  Quad row(int l) const {
+    return l < 4 ? __builtin_shufflevector(pair[l], pair[l], 0, 1, 2, 3)
+                 : __builtin_shufflevector(pair[l - 4], pair[l - 4], 4, 5, 6, 7);
   }
-  x = gx;
-  y = gy;
-  z = gz;
+#else
+  Lanes rows[4];
+  Quad row(int l) const { return rows[l]; }
+#endif
+};
+
+inline LaneRows lane_rows(Lanes x, Lanes y, Lanes z) {
+  const Lanes zero{};
+  LaneRows r;
+#if CCM_LANES_ARE_8
+  const Lanes xz01 = __builtin_shufflevector(x, z, 0, 1, 8, 9, 4, 5, 12, 13);
+  const Lanes xz23 = __builtin_shufflevector(x, z, 2, 3, 10, 11, 6, 7, 14, 15);
+  const Lanes y01 = __builtin_shufflevector(y, zero, 0, 1, 8, 9, 4, 5, 12, 13);
+  const Lanes y23 = __builtin_shufflevector(y, zero, 2, 3, 10, 11, 6, 7, 14, 15);
+  r.pair[0] = __builtin_shufflevector(xz01, y01, 0, 8, 2, 10, 4, 12, 6, 14);
+  r.pair[1] = __builtin_shufflevector(xz01, y01, 1, 9, 3, 11, 5, 13, 7, 15);
+  r.pair[2] = __builtin_shufflevector(xz23, y23, 0, 8, 2, 10, 4, 12, 6, 14);
+  r.pair[3] = __builtin_shufflevector(xz23, y23, 1, 9, 3, 11, 5, 13, 7, 15);
+#else
+  const Lanes xz01 = __builtin_shufflevector(x, z, 0, 4, 1, 5);  // x0 z0 x1 z1
+  const Lanes xz23 = __builtin_shufflevector(x, z, 2, 6, 3, 7);
+  const Lanes y01 = __builtin_shufflevector(y, zero, 0, 4, 1, 5);  // y0 0 y1 0
+  const Lanes y23 = __builtin_shufflevector(y, zero, 2, 6, 3, 7);
+  r.rows[0] = __builtin_shufflevector(xz01, y01, 0, 4, 1, 5);  // x0 y0 z0 0
+  r.rows[1] = __builtin_shufflevector(xz01, y01, 2, 6, 3, 7);
+  r.rows[2] = __builtin_shufflevector(xz23, y23, 0, 4, 1, 5);
+  r.rows[3] = __builtin_shufflevector(xz23, y23, 2, 6, 3, 7);
+#endif
+  return r;
+}
+
+// a += row l of r: each of the three components added once, as scalar adds would (the fourth
+// adds 0 to 0).
+inline void add_row(const LaneRows& r, int l, PaddedVec3& a) {
+  const Quad sum = load_quad(a) + r.row(l);
+  std::memcpy(a.v, &sum, sizeof sum);
 }
 
 }  // namespace ccm

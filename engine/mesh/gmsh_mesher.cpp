@@ -450,7 +450,7 @@ void set_refinement(const LocalRefinement& r, double mesh_size) {
   field::setNumber(ball, "VIn", r.mesh_size);
   field::setNumber(ball, "VOut", mesh_size);
   field::setNumber(ball, "Radius", r.radius);
-  field::setNumber(ball, "Thickness", r.radius);
+  field::setNumber(ball, "Thickness", r.transition > 0.0 ? r.transition : r.radius);
   field::setNumber(ball, "XCenter", r.center.x());
   field::setNumber(ball, "YCenter", r.center.y());
   field::setNumber(ball, "ZCenter", r.center.z());

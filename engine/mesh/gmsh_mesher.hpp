@@ -36,8 +36,9 @@ enum class PrimitiveKind { sphere, box, cylinder, pipe };
 // needs the fine mesh and the rest of the body does not.
 struct LocalRefinement {
   Vec3 center = Vec3::Zero();
-  double radius = 0;     // > 0
-  double mesh_size = 0;  // > 0, at most the primitive's mesh_size
+  double radius = 0;      // > 0
+  double mesh_size = 0;   // > 0, at most the primitive's mesh_size
+  double transition = 0;  // width over which the size grows to the primitive's; 0: `radius`
 };
 
 struct PrimitiveSpec {

@@ -141,6 +141,10 @@ class CentralDifference {
   LoadWork load_work_;
   EnergyBalance energy_;
   std::vector<double> body_energy_;
+  // x and the internal forces in the element kernel's padded form (padded_nodes.hpp): the
+  // predictor writes x_padded_ as it moves x; every other change of x is copied in by evaluate.
+  PaddedNodes x_padded_, f_internal_;
+  bool x_padded_current_ = false;
   InternalForceResult last_eval_;
   long next_output_index_ = 1;
   double last_dt_ = 0.0;
@@ -156,6 +160,8 @@ void CentralDifference::initialise() {
   s_.v = model_.initial_velocity;
   s_.a.assign(mesh.X.size(), Vec3::Zero());
   s_.f.assign(mesh.X.size(), Vec3::Zero());
+  x_padded_.assign(mesh.X.size(), PaddedVec3{});
+  f_internal_.assign(mesh.X.size(), PaddedVec3{});
   s_.m_lumped = lumped_mass(mesh, model_.elements);
   s_.inv_m.resize(s_.m_lumped.size());
   if (opt_.coupling) opt_.coupling->assemble(s_.m_lumped, 1);
@@ -232,31 +238,45 @@ void CentralDifference::predict(double dt) {
   for (size_t i = 0; i < n; ++i) {
     s_.v[i] += half_dt * s_.a[i];
     s_.x[i] += dt * s_.v[i];
+    x_padded_[i] = padded(s_.x[i]);
   }
+  x_padded_current_ = true;
 }
 
-// a_{n+1} = M^-1 (f_ext + f_int) + g   (eq. 2.29)
+// a_{n+1} = M^-1 (f_ext + f_int) + g   (eq. 2.29). The internal forces are summed apart, in
+// f_internal_, and added to the external ones (loads, then contact) in the acceleration.
 void CentralDifference::evaluate(bool with_energy) {
   const auto n = s_.f.size();
+  const bool copy_x = !x_padded_current_;
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
-  for (size_t i = 0; i < n; ++i) s_.f[i].setZero();
+  for (size_t i = 0; i < n; ++i) {
+    s_.f[i].setZero();
+    f_internal_[i] = PaddedVec3{};
+    if (copy_x) x_padded_[i] = padded(s_.x[i]);
+  }
+  x_padded_current_ = false;
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
   for (StateLoad* load : opt_.loads) load->add_forces(s_, s_.f);
   // A block without elements (a subdomain may hold none of a body's) is not written.
   if (with_energy) std::fill(body_energy_.begin(), body_energy_.end(), 0.0);
   last_eval_ = add_internal_forces(
-      model_.elements, s_.x, s_.f,
+      model_.elements, x_padded_, f_internal_,
       with_energy ? std::span<double>(body_energy_) : std::span<double>(), threads_);
   if (opt_.coupling) couple_evaluation(with_energy);
   if (opt_.contact) opt_.contact->add_forces(s_);
   const Vec3 g = model_.bcs.gravity;
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
-  for (size_t i = 0; i < n; ++i) s_.a[i] = s_.inv_m[i] * s_.f[i] + g;
+  for (size_t i = 0; i < n; ++i) s_.a[i] = s_.inv_m[i] * (s_.f[i] + unpadded(f_internal_[i])) + g;
 }
 
 // A partitioned run: the shared nodes' forces completed (neighbour halos), and the stable step,
 // the element check and the stored energy made global, so every subdomain decides alike.
 void CentralDifference::couple_evaluation(bool with_energy) {
+  // One halo exchange: the internal forces join the external ones first.
+  for (size_t i = 0; i < s_.f.size(); ++i) {
+    s_.f[i] += unpadded(f_internal_[i]);
+    f_internal_[i] = PaddedVec3{};
+  }
   opt_.coupling->assemble(std::span<double>(s_.f.data()->data(), 3 * s_.f.size()), 3);
   double local[2] = {last_eval_.stable_dt, last_eval_.first_bad_element < 0 ? 1.0 : 0.0};
   opt_.coupling->min_over_domains(local);

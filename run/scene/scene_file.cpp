@@ -229,13 +229,15 @@ PrimitiveKind primitive_kind(Shape s) {
   return PrimitiveKind::box;
 }
 
-// refine = { center = [x, y, z], radius = r, mesh_size = h }: local coordinates of the shape.
+// refine = { center = [x, y, z], radius = r, mesh_size = h, transition = w }: local coordinates
+// of the shape; the size grows linearly to the body's over w (default r).
 LocalRefinement parse_refinement(const Table& t, double mesh_size) {
-  t.allow_only({"center", "radius", "mesh_size"});
+  t.allow_only({"center", "radius", "mesh_size", "transition"});
   LocalRefinement r;
   r.center = t.need<Vec3>("center");
   r.radius = positive(t, "radius", t.need<double>("radius"));
   r.mesh_size = positive(t, "mesh_size", t.need<double>("mesh_size"));
+  if (t.has("transition")) r.transition = positive(t, "transition", t.need<double>("transition"));
   if (r.mesh_size > mesh_size)
     t.fail("mesh_size",
            fmt::format("must not exceed the body's mesh_size ({} > {})", r.mesh_size, mesh_size));
@@ -453,8 +455,8 @@ void parse_output(const Table& root, Scene& scene) {
   o.field_interval = scene.time.output_interval;
   const auto t = root.table("output");
   if (!t) return;
-  t->allow_only({"kinetic_energy", "internal_energy", "displacement", "track", "fields",
-                 "field_interval"});
+  t->allow_only(
+      {"kinetic_energy", "internal_energy", "displacement", "track", "fields", "field_interval"});
   o.kinetic_energy = t->get_or("kinetic_energy", o.kinetic_energy);
   o.internal_energy = t->get_or("internal_energy", o.internal_energy);
   o.displacement = t->get_or("displacement", o.displacement);

@@ -38,7 +38,7 @@ double update_row(ContactRow& r, const std::vector<double>& inv_m, std::vector<V
     // updated normal impulse.
     const auto u = tangential_velocity(r, v);
     double l1 = r.lambda_t1 - u[0] / r.W_t, l2 = r.lambda_t2 - u[1] / r.W_t;
-    const double bound = mu * r.S * lambda_n, norm = std::hypot(l1, l2);
+    const double bound = mu * r.S * lambda_n, norm = std::sqrt(l1 * l1 + l2 * l2);
     if (norm > bound) {
       l1 *= bound / norm;
       l2 *= bound / norm;
@@ -51,37 +51,143 @@ double update_row(ContactRow& r, const std::vector<double>& inv_m, std::vector<V
       const auto i = static_cast<size_t>(r.nodes[a]);
       v[i] += inv_m[i] * r.beta[a] * tangential;
     }
-    change = std::max(change, std::hypot(d_t1, d_t2) * r.W_t);
+    change = std::max(change, std::sqrt(d_t1 * d_t1 + d_t2 * d_t2) * r.W_t);
   }
   return change;
 }
 
+// Adds the impulse (lambda_n along grad g, tangential along beta) to the row's four nodes.
+void apply_impulse(const ContactRow& r, double lambda_n, const Vec3& tangential,
+                   const std::vector<double>& inv_m, std::vector<Vec3>& v) {
+  for (int a = 0; a < 4; ++a) {
+    const auto i = static_cast<size_t>(r.nodes[a]);
+    v[i] += inv_m[i] * (lambda_n * r.grad[a] + r.beta[a] * tangential);
+  }
+}
+
+bool by_nodes(const std::array<int, 4>& a, const std::array<int, 4>& b) { return a < b; }
+
 }  // namespace
 
+// Each row held in the last step starts from its impulses there: the normal multiplier as it
+// was, the tangential impulse projected on the new tangents and limited to the Coulomb disc of
+// that normal impulse, |lambda_t| <= mu S lambda_n.
+void ContactImpulses::warm_start(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
+                                 std::vector<Vec3>& v, double friction) {
+  warm_started_ = 0;
+  for (ContactRow& r : rows) {
+    if (!(r.W_n > 0.0)) continue;
+    const auto it = std::lower_bound(
+        last_.begin(), last_.end(), r.nodes,
+        [](const Remembered& m, const std::array<int, 4>& key) { return by_nodes(m.nodes, key); });
+    if (it == last_.end() || it->nodes != r.nodes || !(it->lambda_n > 0.0)) continue;
+    r.lambda_n = it->lambda_n;
+    if (friction > 0.0 && r.W_t > 0.0) {
+      double l1 = it->tangential.dot(r.t1), l2 = it->tangential.dot(r.t2);
+      const double bound = friction * r.S * r.lambda_n, norm = std::sqrt(l1 * l1 + l2 * l2);
+      if (norm > bound) {
+        l1 *= bound / norm;
+        l2 *= bound / norm;
+      }
+      r.lambda_t1 = l1;
+      r.lambda_t2 = l2;
+    }
+    apply_impulse(r, r.lambda_n, r.lambda_t1 * r.t1 + r.lambda_t2 * r.t2, inv_m, v);
+    ++warm_started_;
+  }
+}
+
+void ContactImpulses::remember(const std::vector<ContactRow>& rows) {
+  last_.clear();
+  for (const ContactRow& r : rows)
+    if (r.lambda_n > 0.0)
+      last_.push_back({r.nodes, r.lambda_n, r.lambda_t1 * r.t1 + r.lambda_t2 * r.t2});
+  std::sort(last_.begin(), last_.end(),
+            [](const Remembered& a, const Remembered& b) { return by_nodes(a.nodes, b.nodes); });
+}
+
+// The rows that share a node with each row (itself included), as a list per node: entries_ holds
+// (node, row) sorted by node, and a row's neighbours are the entries of its four nodes.
+void ContactImpulses::link_rows(const std::vector<ContactRow>& rows) {
+  entries_.clear();
+  for (size_t k = 0; k < rows.size(); ++k)
+    for (int n : rows[k].nodes) entries_.push_back({n, static_cast<int>(k)});
+  std::sort(entries_.begin(), entries_.end());
+  ranges_.resize(4 * rows.size());
+  for (size_t k = 0; k < rows.size(); ++k)
+    for (int a = 0; a < 4; ++a) {
+      const auto [lo, hi] = std::equal_range(
+          entries_.begin(), entries_.end(), std::pair<int, int>{rows[k].nodes[a], -1},
+          [](const std::pair<int, int>& x, const std::pair<int, int>& y) {
+            return x.first < y.first;
+          });
+      ranges_[4 * k + static_cast<size_t>(a)] = {static_cast<int>(lo - entries_.begin()),
+                                                 static_cast<int>(hi - entries_.begin())};
+    }
+}
+
+void ContactImpulses::mark_neighbours_dirty(size_t row) {
+  for (int a = 0; a < 4; ++a) {
+    const auto [lo, hi] = ranges_[4 * row + static_cast<size_t>(a)];
+    for (int e = lo; e < hi; ++e)
+      dirty_[static_cast<size_t>(entries_[static_cast<size_t>(e)].second)] = 1;
+  }
+}
+
+// The velocities of a row's nodes at the start of the sweep, the first time the sweep visits them.
+void ContactImpulses::remember_velocities(const ContactRow& r, const std::vector<Vec3>& v) {
+  for (int n : r.nodes) {
+    const auto i = static_cast<size_t>(n);
+    if (stamp_[i] == epoch_) continue;
+    stamp_[i] = epoch_;
+    start_.emplace_back(n, v[i]);
+  }
+}
+
+// The largest change of a node's velocity over the sweep.
+double ContactImpulses::largest_change(const std::vector<Vec3>& v) const {
+  double worst2 = 0.0;
+  for (const auto& [n, v0] : start_)
+    worst2 = std::max(worst2, (v[static_cast<size_t>(n)] - v0).squaredNorm());
+  return std::sqrt(worst2);
+}
+
 ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
-                           const std::vector<double>& inv_m, std::vector<Vec3>& v,
-                           const ImpulseSettings& settings) {
+                                    const std::vector<double>& inv_m, std::vector<Vec3>& v,
+                                    const ImpulseSettings& settings) {
   // Reference speed: the fastest contact node (a solve that moves no node by more than
   // tolerance x v_ref has converged).
   double v_ref = 0.0;
   for (const ContactRow& r : rows)
     for (int n : r.nodes) v_ref = std::max(v_ref, v[static_cast<size_t>(n)].norm());
   const double limit = settings.tolerance * std::max(v_ref, 1e-300);
+  if (settings.warm_start) warm_start(rows, inv_m, v, settings.friction);
+  link_rows(rows);
+  dirty_.assign(rows.size(), 1);
   ImpulseSolve out{0, rows.empty()};
+  visits_ = 0;
+  if (stamp_.size() < v.size()) stamp_.resize(v.size(), -1);
   while (out.sweeps < settings.max_iterations) {
-    double worst = 0.0;
     const int sweep = out.sweeps;
     const bool forward = sweep % 2 == 0;
+    start_.clear();
+    ++epoch_;
     for (size_t j = 0; j < order.size(); ++j) {
-      ContactRow& r = rows[static_cast<size_t>(order[forward ? j : order.size() - 1 - j])];
-      worst = std::max(worst, update_row(r, inv_m, v, settings.friction));
+      const auto k = static_cast<size_t>(order[forward ? j : order.size() - 1 - j]);
+      if (!dirty_[k]) continue;
+      dirty_[k] = 0;
+      ++visits_;
+      remember_velocities(rows[k], v);
+      if (update_row(rows[k], inv_m, v, settings.friction) > limit) mark_neighbours_dirty(k);
     }
     ++out.sweeps;
+    const double worst = largest_change(v);
     if (worst <= limit) {
       out.converged = true;
       break;
     }
   }
+  remember(rows);
   return out;
 }
 

@@ -15,9 +15,18 @@
 // applied at once to its four nodes. Every update is along a direction whose mass-weighted sum
 // vanishes, so linear momentum is exact; friction opposes the tangential velocity it acts on,
 // so it only dissipates.
+//
+// Warm start (docs/hard-scenes.md, "Resting contact"): a contact held over consecutive steps
+// (the same four nodes) starts from the impulses it carried at the end of the last step,
+// applied to the velocities before the first sweep (the tangential impulse re-expressed in the
+// new tangent basis and put back on the Coulomb disc). A resting contact needs nearly the same
+// impulse every step (m g dt under gravity), so its solve starts next to its solution and meets
+// the tolerance in a few sweeps instead of running to the cap. The sweeps are the same projected
+// Gauss-Seidel from any start: the warm start changes where they begin, not what they solve.
 #pragma once
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "engine/core/types.hpp"
@@ -40,6 +49,7 @@ struct ImpulseSettings {
   double friction = 0.0;     // Coulomb mu
   int max_iterations = 100;  // Gauss-Seidel sweeps
   double tolerance = 1e-9;   // stop when no row changes a velocity by more than this x v_ref
+  bool warm_start = true;    // start held contacts from the last step's impulses
 };
 
 struct ImpulseSolve {
@@ -53,8 +63,34 @@ class ContactImpulses {
   // velocities v (indexed by global node id; only the rows' nodes are read and written) and
   // returns the number of sweeps made and whether the last one met the tolerance.
   ImpulseSolve solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
-            const std::vector<double>& inv_m, std::vector<Vec3>& v,
-            const ImpulseSettings& settings);
+                     const std::vector<double>& inv_m, std::vector<Vec3>& v,
+                     const ImpulseSettings& settings);
+  // Rows of the last solve that started from a remembered impulse (diagnostics).
+  int warm_started() const { return warm_started_; }
+
+ private:
+  // The impulses a contact ended the last step with, keyed by its four nodes.
+  struct Remembered {
+    std::array<int, 4> nodes{};
+    double lambda_n = 0.0;
+    Vec3 tangential = Vec3::Zero();  // lambda_t1 t1 + lambda_t2 t2 [N s]
+  };
+  void warm_start(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
+                  std::vector<Vec3>& v, double friction);
+  void remember(const std::vector<ContactRow>& rows);
+  void link_rows(const std::vector<ContactRow>& rows);
+  void mark_neighbours_dirty(size_t row);
+  void remember_velocities(const ContactRow& r, const std::vector<Vec3>& v);
+  double largest_change(const std::vector<Vec3>& v) const;
+  std::vector<long> stamp_;                  // per node: the sweep (epoch_) that saved its velocity
+  long epoch_ = 0;                           // sweeps made by this solver, over all solves
+  std::vector<std::pair<int, Vec3>> start_;  // (node, velocity at the start of the sweep)
+  std::vector<std::pair<int, int>> entries_;  // (node, row), sorted
+  std::vector<std::pair<int, int>> ranges_;   // per row and node: its entries [first, last)
+  std::vector<char> dirty_;                   // per row: a neighbour changed since its last visit
+  long visits_ = 0;                           // row updates made by the last solve
+  std::vector<Remembered> last_;              // sorted by nodes
+  int warm_started_ = 0;
 };
 
 }  // namespace ccm::dcr

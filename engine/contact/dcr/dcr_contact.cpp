@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "engine/contact/dcr/ccd.hpp"
+#include "engine/contact/dcr/ccd_prefilter.hpp"
 #include "engine/contact/dcr/step_limit.hpp"
 
 namespace ccm::dcr {
@@ -75,6 +76,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
       settings_(std::move(settings)),
       features_(make_surface_features(mesh, settings_.surfaces)),
       loops_(settings_.threads),
+      edge_orientation_(features_),
       restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)),
       projection_update_(mesh, features_.nodes),
       output_(mesh, contact_bodies(features_), settings_.output) {
@@ -229,8 +231,7 @@ std::optional<Constraint> DcrContact::candidate_contact(const State& s, size_t k
                              features_.faces[static_cast<size_t>(nf.face)]);
   }
   const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
-  return edge_edge_contact(s, features_.edges[static_cast<size_t>(ee.edge_a)],
-                           features_.edges[static_cast<size_t>(ee.edge_b)]);
+  return edge_edge_contact(s, ee.edge_a, ee.edge_b);
 }
 
 // Whether candidate k has a node that the projection moved (touched_).
@@ -286,16 +287,22 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p,
 
 // Two edges are a contact when they cross during the step (CCD); the admissible side is the one
 // they started on (the thesis's orientation tag).
-std::optional<Constraint> DcrContact::edge_edge_contact(const State& s,
-                                                        const std::array<int, 2>& ea,
-                                                        const std::array<int, 2>& eb) const {
+std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge_a,
+                                                        int edge_b) const {
   const std::vector<Vec3>& x0 = x_n_;
   const std::vector<Vec3>& x1 = s.x;
+  const auto& ea = features_.edges[static_cast<size_t>(edge_a)];
+  const auto& eb = features_.edges[static_cast<size_t>(edge_b)];
+  if (!edges_may_cross(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
+                       x1[eb[1]]))
+    return std::nullopt;
   if (!edge_edge_ccd(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
                      x1[eb[1]], kInclusionTolerance))
     return std::nullopt;
-  const double g0 = edge_edge_volume(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]);
-  return Constraint{{ea[0], ea[1], eb[0], eb[1]}, false, g0 >= 0.0 ? 1.0 : -1.0, false};
+  // The side the edges start on; where they start in one plane, the side the surfaces face
+  // (edge_orientation.hpp).
+  const double sign = edge_orientation_.sign(features_, edge_a, edge_b, x0, separation_);
+  return Constraint{{ea[0], ea[1], eb[0], eb[1]}, false, sign, false};
 }
 
 // The order in which the solves visit the constraints: by a key from the reference positions

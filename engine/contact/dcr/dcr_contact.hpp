@@ -33,6 +33,7 @@
 #include "engine/contact/dcr/contact_impulses.hpp"
 #include "engine/contact/dcr/contact_output.hpp"
 #include "engine/contact/dcr/contact_surface.hpp"
+#include "engine/contact/dcr/edge_orientation.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/contact/dcr/projection_update.hpp"
 #include "engine/contact/dcr/thread_chunks.hpp"
@@ -134,8 +135,8 @@ class DcrContact : public ContactModel, public HistorySource {
   void remember_start(const State& s, size_t first);
   void enforce_positions(State& s, double dt);
   std::optional<Constraint> node_face_contact(const State& s, int p, const Triangle& t) const;
-  std::optional<Constraint> edge_edge_contact(const State& s, const std::array<int, 2>& ea,
-                                              const std::array<int, 2>& eb) const;
+  // edge_a, edge_b: indices into features_.edges.
+  std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b) const;
   bool bodies_may_touch(const State& s) const;
   double approach_limit(const State& state) const;
   bool project_positions(State& s);
@@ -151,6 +152,7 @@ class DcrContact : public ContactModel, public HistorySource {
   DcrSettings settings_;
   SurfaceFeatures features_;
   ChunkedLoops loops_;
+  EdgeOrientation edge_orientation_;  // the admissible side of edges that start in one plane
   BroadPhase broad_phase_;
   Candidates candidates_;
   std::vector<char> candidate_is_constraint_;  // per candidate (node-face, then edge-edge)

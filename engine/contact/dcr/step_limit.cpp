@@ -14,12 +14,32 @@ double approach_speed(const std::array<int, NA>& a, const std::array<int, NB>& b
                       const std::vector<Vec3>& v) {
   double u = 0.0;
   for (int i : a)
-    for (int j : b) u = std::max(u, -(v[static_cast<size_t>(j)] - v[static_cast<size_t>(i)]).dot(n));
+    for (int j : b)
+      u = std::max(u, -(v[static_cast<size_t>(j)] - v[static_cast<size_t>(i)]).dot(n));
   return u;
 }
 
 double edge_length(const std::vector<Vec3>& X, int a, int b) {
   return (X[static_cast<size_t>(b)] - X[static_cast<size_t>(a)]).norm();
+}
+
+// The largest relative speed of a node of b and a node of a: an upper bound of the approach
+// speed along any normal.
+template <size_t NA, size_t NB>
+double relative_speed(const std::array<int, NA>& a, const std::array<int, NB>& b,
+                      const std::vector<Vec3>& v) {
+  double u2 = 0.0;
+  for (int i : a)
+    for (int j : b)
+      u2 = std::max(u2, (v[static_cast<size_t>(j)] - v[static_cast<size_t>(i)]).squaredNorm());
+  return std::sqrt(u2);
+}
+
+// Whether a pair of shortest edge L whose nodes move at relative speeds up to u_max can set a
+// limit below `current`: its limit is at least step_fraction L / u_max (gap >= 0, u <= u_max),
+// so when that is not below `current` the pair is skipped (the result is the same).
+bool may_bind(double L, double u_max, double step_fraction, double current) {
+  return step_fraction * L < current * u_max;
 }
 
 // dt allowed by one pair: (gap + step_fraction L) / u, infinity when u = 0.
@@ -39,6 +59,9 @@ PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
   for (size_t k = 0; k < c.node_face.size(); ++k) {
     const int p = f.nodes[static_cast<size_t>(c.node_face[k].node)];
     const Triangle& t = f.faces[static_cast<size_t>(c.node_face[k].face)];
+    const double L = std::min(
+        {edge_length(X, t[0], t[1]), edge_length(X, t[1], t[2]), edge_length(X, t[2], t[0])});
+    if (!may_bind(L, relative_speed(t, std::array<int, 1>{p}, v), step_fraction, out.dt)) continue;
     const Vec3& a = x[t[0]];
     Vec3 n = (x[t[1]] - a).cross(x[t[2]] - a);
     if (!(n.norm() > 0.0)) continue;
@@ -48,14 +71,14 @@ PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
       n = -n;
       d = -d;
     }
-    const double L = std::min({edge_length(X, t[0], t[1]), edge_length(X, t[1], t[2]),
-                               edge_length(X, t[2], t[0])});
     keep(allowed(d, L, approach_speed(t, std::array<int, 1>{p}, n, v), step_fraction), k);
   }
   const size_t n_nf = c.node_face.size();
   for (size_t k = 0; k < c.edge_edge.size(); ++k) {
     const auto& ea = f.edges[static_cast<size_t>(c.edge_edge[k].edge_a)];
     const auto& eb = f.edges[static_cast<size_t>(c.edge_edge[k].edge_b)];
+    const double L = std::min(edge_length(X, ea[0], ea[1]), edge_length(X, eb[0], eb[1]));
+    if (!may_bind(L, relative_speed(ea, eb, v), step_fraction, out.dt)) continue;
     const Vec3 da = x[ea[1]] - x[ea[0]], db = x[eb[1]] - x[eb[0]];
     const Vec3 between = 0.5 * (x[eb[0]] + x[eb[1]] - x[ea[0]] - x[ea[1]]);
     Vec3 n = da.cross(db);
@@ -68,7 +91,6 @@ PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
       n = -n;
       d = -d;
     }
-    const double L = std::min(edge_length(X, ea[0], ea[1]), edge_length(X, eb[0], eb[1]));
     keep(allowed(d, L, approach_speed(ea, eb, n, v), step_fraction), n_nf + k);
   }
   return out;

@@ -256,6 +256,22 @@ TEST_CASE("mesh_primitive: a local refinement is fine inside its ball only", "[m
   CHECK(mean_edge(sm, Vec3(0, 0, 2.5), 0.0, 0.3) / h_ball == Approx(1.0).epsilon(0.15));
 }
 
+TEST_CASE("mesh_primitive: a wide transition grows the refined size gently", "[mesh][gmsh]") {
+  // The same plate and zone, the size growing from 0.03 to 0.1 m over 0.6 m instead of 0.2 m:
+  // halfway between the ball's edge and 0.4 m out (r = 0.3 m) the Ball field asks 0.047 m
+  // instead of 0.065 m; the measured mean edges must keep that order with a margin of 15 % (the
+  // Delaunay overshoot is alike in both meshes).
+  PrimitiveSpec sharp = box({1.0, 1.0, 0.25}, 0.1);
+  const Vec3 c(0.5, 0.5, 0.25);
+  sharp.refinement = ccm::LocalRefinement{c, 0.2, 0.03};
+  PrimitiveSpec gentle = sharp;
+  gentle.refinement->transition = 0.6;
+  const double h_sharp = mean_edge(ccm::mesh_primitive(sharp, {}), c, 0.25, 0.35);
+  const double h_gentle = mean_edge(ccm::mesh_primitive(gentle, {}), c, 0.25, 0.35);
+  INFO("mean edge at 0.25-0.35 m: transition 0.2 m " << h_sharp << ", 0.6 m " << h_gentle);
+  CHECK(h_gentle < 0.85 * h_sharp);
+}
+
 TEST_CASE("mesh_primitive: invalid specs name the field", "[mesh][gmsh]") {
   CHECK_THROWS_WITH(ccm::mesh_primitive(sphere(-1.0, 0.1), {}), Contains("radius"));
   CHECK_THROWS_WITH(ccm::mesh_primitive(sphere(1.0, 0.0), {}), Contains("mesh_size"));
