@@ -2,7 +2,7 @@
 // ratio to the structural cost per step, on a soft sphere pressed into a clamped plate refined
 // two or three times (thesis 2.7.4: exponent 0.99, contact about 3x the structure).
 //
-//   ./build/bench_contact [--levels N] [--repeats R] [--end T]
+//   ./build/bench_contact [--levels N] [--repeats R] [--end T] [--threads N]
 //
 // Method. Each run times, inside one process and in thread CPU time (CLOCK_THREAD_CPUTIME_ID, so
 // that time spent descheduled on a shared machine counts for neither), the contact model's calls
@@ -14,6 +14,11 @@
 // least-squares slope of log(median contact ms/step) against log(surface triangles). The load
 // average of the machine is printed before and after: on a shared machine the absolute times move
 // with it, the ratios much less.
+//
+// --threads N runs the structure's loops and the contact's detection on N threads
+// (docs/parallel.md, "Threads"); the clock is then the wall clock (CLOCK_MONOTONIC), since thread
+// CPU time would miss the other threads' work, for any N, so that N = 1 and N = 2 compare. The
+// process CPU time of the whole run is printed beside it.
 #include <time.h>
 
 #include <algorithm>
@@ -35,13 +40,18 @@ using namespace ccm;
 
 namespace {
 
-// CPU time of this thread [s]: time the thread spends descheduled (a shared machine) is not
-// counted, for the contact and the structure alike.
-double thread_seconds() {
+// The clock of the timings: CPU time of this thread (time the thread spends descheduled on a
+// shared machine is not counted, for the contact and the structure alike), or with --threads the
+// wall clock.
+clockid_t g_clock = CLOCK_THREAD_CPUTIME_ID;
+
+double seconds_on(clockid_t clock) {
   timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  clock_gettime(clock, &ts);
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
+
+double thread_seconds() { return seconds_on(g_clock); }
 
 // Forwards to a contact model, accumulating the thread CPU time spent in it (`contact`) and in
 // whole steps (`loop`: from one begin_step to the next, and the last one to its end_step).
@@ -95,6 +105,8 @@ struct Result {
   int elements;
   long steps;
   double contact_ms, structure_ms;  // per step
+  double cpu_s;                     // process CPU time of the run [s]
+  long threaded_loops;              // detection loops that ran on more than one thread
   double ratio() const { return contact_ms / structure_ms; }
 };
 
@@ -119,22 +131,31 @@ Model sphere_on_plate(int level) {
   return model;
 }
 
-Result run(const Model& model, double end_time) {
+Result run(const Model& model, double end_time, int threads) {
   dcr::DcrSettings settings;
   settings.surfaces = {"plate/boundary", "ball/boundary"};
+  settings.threads.threads = threads;
   dcr::DcrContact dcr(model.mesh, settings, model.bcs.fixed_nodes);
   TimedContact timed(dcr);
   RunOptions opt;
   opt.contact = &timed;
   opt.time.end_time = end_time;
+  opt.threads = threads;
+  const double cpu_start = seconds_on(CLOCK_PROCESS_CPUTIME_ID);
   const RunSummary s = run_explicit(model, opt);
+  const double cpu = seconds_on(CLOCK_PROCESS_CPUTIME_ID) - cpu_start;
   if (s.verdict != Verdict::completed)
     std::fprintf(stderr, "warning: run ended %s: %s\n", std::string(to_string(s.verdict)).c_str(),
                  s.instability.reason.c_str());
   timed.finish();
   const double steps = static_cast<double>(s.steps);
-  return {dcr.features().n_faces(), s.n_elements, s.steps, 1e3 * timed.contact / steps,
-          1e3 * (timed.loop - timed.contact) / steps};
+  return {dcr.features().n_faces(),
+          s.n_elements,
+          s.steps,
+          1e3 * timed.contact / steps,
+          1e3 * (timed.loop - timed.contact) / steps,
+          cpu,
+          dcr.threaded_loops()};
 }
 
 std::string load_average() {
@@ -165,6 +186,7 @@ struct Options {
   int levels = 3;
   int repeats = 3;
   double end_time = 2e-3;  // the ball touches at 0.05 ms and is in contact to about 1.8 ms
+  int threads = 0;         // 0: not given (thread CPU clock, one thread)
 };
 
 Options parse(int argc, char** argv) {
@@ -176,13 +198,17 @@ Options parse(int argc, char** argv) {
       o.repeats = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--end"))
       o.end_time = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--threads"))
+      o.threads = std::atoi(argv[i + 1]);
     else {
-      std::fprintf(stderr, "usage: bench_contact [--levels N] [--repeats R] [--end T]\n");
+      std::fprintf(stderr,
+                   "usage: bench_contact [--levels N] [--repeats R] [--end T] [--threads N]\n");
       std::exit(2);
     }
   }
-  if (o.levels < 2 || o.repeats < 1 || !(o.end_time > 0)) {
-    std::fprintf(stderr, "bench_contact: need --levels >= 2, --repeats >= 1, --end > 0\n");
+  if (o.levels < 2 || o.repeats < 1 || !(o.end_time > 0) || o.threads < 0) {
+    std::fprintf(stderr,
+                 "bench_contact: need --levels >= 2, --repeats >= 1, --end > 0, --threads >= 1\n");
     std::exit(2);
   }
   return o;
@@ -192,25 +218,30 @@ Options parse(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
+  if (o.threads > 0) g_clock = CLOCK_MONOTONIC;
+  const int threads = std::max(1, o.threads);
   std::printf(
       "DCR contact cost per step vs structure, sphere on plate, %d levels x %d repeats, "
       "end %g s\n"
       "contact = begin_step + correct + end_step + step_bound of the DCR model (broad phase with a "
       "Verlet candidate cache, CCD, projection, momentum exchange);\n"
-      "structure = whole steps - contact; both in thread CPU time, in one process. "
+      "structure = whole steps - contact; both in %s, in one process, %d thread(s). "
       "load average before: %s\n",
-      o.levels, o.repeats, o.end_time, load_average().c_str());
-  std::printf("%6s %10s %8s %6s %8s %14s %17s %7s\n", "level", "triangles", "tets", "repeat",
-              "steps", "contact ms/step", "structure ms/step", "ratio");
+      o.levels, o.repeats, o.end_time, o.threads > 0 ? "wall time" : "thread CPU time", threads,
+      load_average().c_str());
+  std::printf("%6s %10s %8s %6s %8s %14s %17s %7s %8s %9s\n", "level", "triangles", "tets",
+              "repeat", "steps", "contact ms/step", "structure ms/step", "ratio", "cpu s",
+              "thr.loops");
   std::vector<double> triangles, contact_ms, ratios;
   double worst_ratio = 0.0;
   for (int level = 0; level < o.levels; ++level) {
     const Model model = sphere_on_plate(level);
     std::vector<double> contact, ratio;
     for (int r = 0; r < o.repeats; ++r) {
-      const Result res = run(model, o.end_time);
-      std::printf("%6d %10d %8d %6d %8ld %14.4f %17.4f %7.3f\n", level, res.surface_triangles,
-                  res.elements, r, res.steps, res.contact_ms, res.structure_ms, res.ratio());
+      const Result res = run(model, o.end_time, threads);
+      std::printf("%6d %10d %8d %6d %8ld %14.4f %17.4f %7.3f %8.3f %9ld\n", level,
+                  res.surface_triangles, res.elements, r, res.steps, res.contact_ms,
+                  res.structure_ms, res.ratio(), res.cpu_s, res.threaded_loops);
       contact.push_back(res.contact_ms);
       ratio.push_back(res.ratio());
       if (r == 0) triangles.push_back(res.surface_triangles);

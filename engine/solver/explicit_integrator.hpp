@@ -101,8 +101,9 @@ struct RunOptions {
   double progress_seconds = 0.5;
   // Threads for the structure's work (internal forces, stable step, nodal updates, energy sums);
   // 0: default_threads() (thread_count.hpp). The result is bitwise the same for any count; the
-  // contact model's phases and the boundary conditions run on one thread, and so does a model
-  // of fewer than 8,192 elements (RunSummary::threads says what was used).
+  // boundary conditions run on one thread, and so does a model of fewer than 8,192 elements
+  // (RunSummary::threads says what was used). A contact model has its own thread setting (the
+  // DCR's detection: DcrSettings::threads, by default default_threads() as well).
   int threads = 0;
   // A subdomain of a partitioned mesh (engine/distributed/): the model is the local one, and
   // history and on_sample are left to the coupling. None: a serial run.

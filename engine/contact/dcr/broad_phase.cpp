@@ -35,22 +35,34 @@ void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
     throw std::invalid_argument("broad phase: inflation must be finite and >= 0, got " +
                                 std::to_string(inflation));
   if (f.nodes.empty()) return;
-  sweep_node_boxes(f, x_start, x_end, node_box_);
   ++stats_.calls;
-  stats_.rebuilt = !cache_holds(f, inflation, self_contact);
+  stats_.rebuilt = !sweep_within_cache(f, x_start, x_end, inflation, self_contact);
   if (stats_.rebuilt) rebuild(f, inflation, self_contact);
   current_boxes(inflation);
   filter(out);
 }
 
-// Same surface, inflation and self_contact, and every node's swept box inside its allowance.
-bool BroadPhase::cache_holds(const SurfaceFeatures& f, double inflation, bool self_contact) const {
-  if (features_ != &f || n_nodes_ != f.nodes.size() || n_edges_ != f.edges.size() ||
-      n_faces_ != f.faces.size() || inflation_ != inflation || self_contact_ != self_contact)
-    return false;
-  bool inside = true;  // branch-free over all nodes
-  for (size_t i = 0; i < node_box_.size(); ++i) inside &= contains(allowance_[i], node_box_[i]);
-  return inside;
+// The swept node boxes of the step, and whether the cache holds for them: same surface,
+// inflation and self_contact, and every node's swept box inside its allowance (one loop: one
+// parallel region).
+bool BroadPhase::sweep_within_cache(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                                    std::span<const Vec3> x_end, double inflation,
+                                    bool self_contact) {
+  const bool same = features_ == &f && n_nodes_ == f.nodes.size() && n_edges_ == f.edges.size() &&
+                    n_faces_ == f.faces.size() && inflation_ == inflation &&
+                    self_contact_ == self_contact;
+  const size_t n = f.nodes.size();
+  node_box_.resize(n);
+  chunk_inside_.assign(static_cast<size_t>(loops_->chunks(n)), 1);
+  loops_->run(n, [&](size_t begin, size_t end, int chunk) {
+    bool inside = same;  // branch-free over the chunk's nodes
+    for (size_t i = begin; i < end; ++i) {
+      node_box_[i] = swept_node_box(f, x_start, x_end, i);
+      if (same) inside &= contains(allowance_[i], node_box_[i]);
+    }
+    chunk_inside_[static_cast<size_t>(chunk)] = inside;
+  });
+  return std::all_of(chunk_inside_.begin(), chunk_inside_.end(), [](char c) { return c != 0; });
 }
 
 void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_contact) {
@@ -64,7 +76,7 @@ void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_c
   inflation_ = inflation;
   self_contact_ = self_contact;
 
-  feature_boxes(topology_, node_box_, 0.0, cached_);
+  feature_boxes(topology_, node_box_, 0.0, cached_, *loops_);
   const double h = kHalfSkinFraction * median_face_extent(cached_.face, extent_);
   allowance_ = node_box_;
   for (Box& b : allowance_)
@@ -72,8 +84,8 @@ void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_c
       b.lo[d] -= h;
       b.hi[d] += h;
     }
-  feature_boxes(topology_, allowance_, inflation, cached_);
-  hash_.find(f, cached_, self_contact, cache_);
+  feature_boxes(topology_, allowance_, inflation, cached_, *loops_);
+  hash_.find(f, cached_, self_contact, cache_, *loops_);
 
   static_cast<SearchStats&>(stats_) = hash_.stats();
   ++stats_.rebuilds;
@@ -114,31 +126,56 @@ void BroadPhase::list_active() {
       active_edges_);
 }
 
-// The step's boxes of the active features, by the functions the grid search used.
+// The step's boxes of the active features, by the functions the grid search used (one loop over
+// the active nodes, then edges, then faces).
 void BroadPhase::current_boxes(double inflation) {
   current_.node.resize(n_nodes_);
   current_.edge.resize(n_edges_);
   current_.face.resize(n_faces_);
-  for (int i : active_nodes_)
-    current_.node[static_cast<size_t>(i)] = inflated(node_box_[static_cast<size_t>(i)], inflation);
-  for (int i : active_edges_)
-    current_.edge[static_cast<size_t>(i)] =
-        edge_box(topology_.edges[static_cast<size_t>(i)], node_box_, inflation);
-  for (int i : active_faces_)
-    current_.face[static_cast<size_t>(i)] =
-        face_box(topology_.faces[static_cast<size_t>(i)], node_box_, inflation);
+  const size_t n_nodes = active_nodes_.size(), n_edges = active_edges_.size();
+  loops_->run(n_nodes + n_edges + active_faces_.size(), [&](size_t begin, size_t end, int) {
+    for (size_t k = begin; k < end; ++k) {
+      if (k < n_nodes) {
+        const auto i = static_cast<size_t>(active_nodes_[k]);
+        current_.node[i] = inflated(node_box_[i], inflation);
+      } else if (k < n_nodes + n_edges) {
+        const auto i = static_cast<size_t>(active_edges_[k - n_nodes]);
+        current_.edge[i] = edge_box(topology_.edges[i], node_box_, inflation);
+      } else {
+        const auto i = static_cast<size_t>(active_faces_[k - n_nodes - n_edges]);
+        current_.face[i] = face_box(topology_.faces[i], node_box_, inflation);
+      }
+    }
+  });
 }
 
-// The fresh search's test (closed box overlap) on the current boxes, over the cached pairs.
-void BroadPhase::filter(Candidates& out) const {
-  for (const NodeFaceCandidate& p : cache_.node_face)
-    if (overlap(current_.node[static_cast<size_t>(p.node)],
-                current_.face[static_cast<size_t>(p.face)]))
-      out.node_face.push_back(p);
-  for (const EdgeEdgeCandidate& p : cache_.edge_edge)
-    if (overlap(current_.edge[static_cast<size_t>(p.edge_a)],
-                current_.edge[static_cast<size_t>(p.edge_b)]))
-      out.edge_edge.push_back(p);
+// The fresh search's test (closed box overlap) on the current boxes, over the cached pairs (one
+// loop over the node-face pairs, then the edge-edge pairs; each chunk keeps its pairs in cache
+// order, and the chunks are joined in order: the cache's order).
+void BroadPhase::filter(Candidates& out) {
+  const size_t n_nf = cache_.node_face.size(), n = n_nf + cache_.edge_edge.size();
+  const int chunks = loops_->chunks(n);
+  node_face_part_.reset(chunks);
+  edge_edge_part_.reset(chunks);
+  loops_->run(n, [&](size_t begin, size_t end, int chunk) {
+    std::vector<NodeFaceCandidate>& nf = node_face_part_[chunk];
+    std::vector<EdgeEdgeCandidate>& ee = edge_edge_part_[chunk];
+    for (size_t k = begin; k < end; ++k) {
+      if (k < n_nf) {
+        const NodeFaceCandidate& p = cache_.node_face[k];
+        if (overlap(current_.node[static_cast<size_t>(p.node)],
+                    current_.face[static_cast<size_t>(p.face)]))
+          nf.push_back(p);
+      } else {
+        const EdgeEdgeCandidate& p = cache_.edge_edge[k - n_nf];
+        if (overlap(current_.edge[static_cast<size_t>(p.edge_a)],
+                    current_.edge[static_cast<size_t>(p.edge_b)]))
+          ee.push_back(p);
+      }
+    }
+  });
+  node_face_part_.append_to(out.node_face);
+  edge_edge_part_.append_to(out.edge_edge);
 }
 
 }  // namespace ccm::dcr

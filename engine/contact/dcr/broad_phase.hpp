@@ -1,5 +1,6 @@
 // Broad phase of the DCR contact search: the node-face and edge-edge pairs of a contact surface
-// whose swept, inflated bounding boxes overlap during a step (docs/contact-method.md §4; thesis 2.4).
+// whose swept, inflated bounding boxes overlap during a step (docs/contact-method.md §4;
+// thesis 2.4).
 //
 // Verlet-style candidate cache with a skin (Verlet 1967; the "neighbour list" of molecular
 // dynamics, here on boxes instead of spheres). At a rebuild every surface node's swept box is
@@ -26,6 +27,7 @@
 #include "engine/contact/dcr/contact_surface.hpp"
 #include "engine/contact/dcr/swept_box_hash.hpp"
 #include "engine/contact/dcr/swept_boxes.hpp"
+#include "engine/contact/dcr/thread_chunks.hpp"
 #include "engine/core/types.hpp"
 
 namespace ccm::dcr {
@@ -59,14 +61,19 @@ class BroadPhase {
   // Forgets the cache (the next find() rebuilds).
   void reset();
 
+  // The loops find() may share among threads (the result is the same; default: one thread).
+  // `loops` must outlive this object's calls to find().
+  void use_loops(const ChunkedLoops& loops) { loops_ = &loops; }
+
   const BroadPhaseStats& stats() const { return stats_; }
 
  private:
-  bool cache_holds(const SurfaceFeatures& f, double inflation, bool self_contact) const;
+  bool sweep_within_cache(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                          std::span<const Vec3> x_end, double inflation, bool self_contact);
   void rebuild(const SurfaceFeatures& f, double inflation, bool self_contact);
   void list_active();
   void current_boxes(double inflation);
-  void filter(Candidates& out) const;
+  void filter(Candidates& out);
 
   // What the cache was built for.
   const SurfaceFeatures* features_ = nullptr;
@@ -85,6 +92,10 @@ class BroadPhase {
   std::vector<double> extent_;  // scratch for the median
   Candidates cache_;
   SweptBoxHash hash_;
+  const ChunkedLoops* loops_ = &serial_loops();
+  std::vector<char> chunk_inside_;                // scratch of sweep_within_cache, per chunk
+  ChunkLists<NodeFaceCandidate> node_face_part_;  // scratch of filter, per chunk
+  ChunkLists<EdgeEdgeCandidate> edge_edge_part_;
   BroadPhaseStats stats_;
 };
 

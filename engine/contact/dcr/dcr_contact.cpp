@@ -75,6 +75,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
     : ContactModel("dcr"),
       settings_(std::move(settings)),
       features_(make_surface_features(mesh, settings_.surfaces)),
+      loops_(settings_.threads),
       edge_orientation_(features_),
       restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)),
       projection_update_(mesh, features_.nodes),
@@ -84,6 +85,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   if (settings_.friction < 0.0) throw std::invalid_argument("dcr: friction must be >= 0");
   if (!(settings_.proximity > 0.0 && settings_.proximity <= 0.5))
     throw std::invalid_argument("dcr: proximity must lie in (0, 0.5] (fraction of an edge)");
+  broad_phase_.use_loops(loops_);
   node_body_.assign(mesh.X.size(), -1);
   for (size_t b = 0; b < mesh.bodies.size(); ++b)
     for (int n = 0; n < mesh.bodies[b].n_nodes; ++n)
@@ -112,11 +114,14 @@ std::string DcrContact::failure() const {
 }
 
 void DcrContact::begin_step(const State& state, double /*dt*/) {
+  loops_.resolve_threads();
   if (x_n_.empty()) {  // first step: masses are known now
     for (size_t i = 0; i < inv_m_.size(); ++i)
       inv_m_[i] = inv_m_[i] < 0.0 ? 0.0 : 1.0 / state.m_lumped[i];
+    x_n_.assign(state.x.size(), Vec3::Zero());
   }
-  x_n_ = state.x;
+  // The detection reads the start positions of the surface nodes only.
+  for (int n : features_.nodes) x_n_[static_cast<size_t>(n)] = state.x[static_cast<size_t>(n)];
 }
 
 // g = sign * signed volume (docs/contact-method.md §1.1); returns it.
@@ -145,16 +150,27 @@ double DcrContact::constraint_gradient(const Constraint& c, const std::vector<Ve
 }
 
 // Without self-contact, bodies whose swept surface boxes do not overlap cannot touch: the
-// broad phase is skipped (a scene pays for the search only while bodies are close).
+// broad phase is skipped (a scene pays for the search only while bodies are close). The boxes
+// are grown over chunks of the surface nodes and joined (min and max: the same for any cut).
 bool DcrContact::bodies_may_touch(const State& s) const {
   if (settings_.self_contact) return true;
+  const size_t n = features_.nodes.size();
+  std::vector<std::vector<Eigen::AlignedBox3d>> part(static_cast<size_t>(loops_.chunks(n)));
+  loops_.run(n, [&](size_t begin, size_t end, int chunk) {
+    std::vector<Eigen::AlignedBox3d> boxes;  // the chunk's own (no line shared with another's)
+    for (size_t i = begin; i < end; ++i) {
+      const auto body = static_cast<size_t>(features_.node_body[i]);
+      if (boxes.size() <= body) boxes.resize(body + 1);
+      const auto node = static_cast<size_t>(features_.nodes[i]);
+      boxes[body].extend(x_n_[node]);
+      boxes[body].extend(s.x[node]);
+    }
+    part[static_cast<size_t>(chunk)] = std::move(boxes);
+  });
   std::vector<Eigen::AlignedBox3d> boxes;
-  for (size_t i = 0; i < features_.nodes.size(); ++i) {
-    const auto body = static_cast<size_t>(features_.node_body[i]);
-    if (boxes.size() <= body) boxes.resize(body + 1);
-    const auto n = static_cast<size_t>(features_.nodes[i]);
-    boxes[body].extend(x_n_[n]);
-    boxes[body].extend(s.x[n]);
+  for (const std::vector<Eigen::AlignedBox3d>& p : part) {
+    if (boxes.size() < p.size()) boxes.resize(p.size());
+    for (size_t b = 0; b < p.size(); ++b) boxes[b].extend(p[b]);
   }
   for (auto& b : boxes)
     if (!b.isEmpty()) {
@@ -177,24 +193,63 @@ void DcrContact::detect(const State& s) {
   }
   broad_phase_.find(features_, x_n_, s.x, proximity_, settings_.self_contact, candidates_);
   candidate_is_constraint_.assign(candidates_.node_face.size() + candidates_.edge_edge.size(), 0);
-  for (size_t k = 0; k < candidate_is_constraint_.size(); ++k) try_candidate(s, k);
+  test_candidates(s, false);
 }
 
-// Candidate k (node-face pairs first, then edge-edge pairs) becomes a constraint if it is a
-// contact at the current positions; returns whether it did.
-bool DcrContact::try_candidate(const State& s, size_t k) {
-  const size_t n_nf = candidates_.node_face.size();
+// Tests the candidates that are no constraint yet (only_touched: only those with a node the
+// projection moved) and appends the contacts among them to the constraints, in candidate order;
+// returns how many. A candidate's test reads the positions only, so the candidates are shared
+// among threads in chunks, and the chunks' contacts are joined in chunk order: the same list,
+// in the same order, as one thread's.
+int DcrContact::test_candidates(const State& s, bool only_touched) {
+  const size_t n = candidate_is_constraint_.size();
+  found_.reset(loops_.chunks(n, ChunkedLoops::kHeavyItem));
+  loops_.run(
+      n,
+      [&](size_t begin, size_t end, int chunk) {
+        for (size_t k = begin; k < end; ++k) {
+          if (candidate_is_constraint_[k] || (only_touched && !candidate_touched(k))) continue;
+          if (const std::optional<Constraint> c = candidate_contact(s, k)) {
+            found_[chunk].push_back(*c);
+            candidate_is_constraint_[k] = 1;  // one byte per candidate: no two chunks share one
+          }
+        }
+      },
+      ChunkedLoops::kHeavyItem);
   const size_t before = constraints_.size();
+  found_.append_to(constraints_);
+  return static_cast<int>(constraints_.size() - before);
+}
+
+// Candidate k (node-face pairs first, then edge-edge pairs) as a contact at the current
+// positions, if it is one.
+std::optional<Constraint> DcrContact::candidate_contact(const State& s, size_t k) const {
+  const size_t n_nf = candidates_.node_face.size();
   if (k < n_nf) {
     const NodeFaceCandidate& nf = candidates_.node_face[k];
-    add_node_face(s, features_.nodes[static_cast<size_t>(nf.node)],
-                  features_.faces[static_cast<size_t>(nf.face)]);
-  } else {
-    const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
-    add_edge_edge(s, ee.edge_a, ee.edge_b);
+    return node_face_contact(s, features_.nodes[static_cast<size_t>(nf.node)],
+                             features_.faces[static_cast<size_t>(nf.face)]);
   }
-  candidate_is_constraint_[k] = constraints_.size() > before ? 1 : 0;
-  return candidate_is_constraint_[k] != 0;
+  const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
+  return edge_edge_contact(s, ee.edge_a, ee.edge_b);
+}
+
+// Whether candidate k has a node that the projection moved (touched_).
+bool DcrContact::candidate_touched(size_t k) const {
+  auto touched = [&](int a, int b, int c, int d) {
+    return touched_[static_cast<size_t>(a)] || touched_[static_cast<size_t>(b)] ||
+           touched_[static_cast<size_t>(c)] || touched_[static_cast<size_t>(d)];
+  };
+  const size_t n_nf = candidates_.node_face.size();
+  if (k < n_nf) {
+    const NodeFaceCandidate& nf = candidates_.node_face[k];
+    const Triangle& t = features_.faces[static_cast<size_t>(nf.face)];
+    return touched(features_.nodes[static_cast<size_t>(nf.node)], t[0], t[1], t[2]);
+  }
+  const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
+  const auto& a = features_.edges[static_cast<size_t>(ee.edge_a)];
+  const auto& b = features_.edges[static_cast<size_t>(ee.edge_b)];
+  return touched(a[0], a[1], b[0], b[1]);
 }
 
 // The projection moves nodes after detection, so it can push a node through a face (or an edge
@@ -204,27 +259,7 @@ int DcrContact::redetect(const State& s) {
   for (size_t k = 0; k < moved_.size(); ++k)
     if (s.x[static_cast<size_t>(moved_[k])] != x_start_[k])
       touched_[static_cast<size_t>(moved_[k])] = 1;
-  auto touched = [&](int a, int b, int c, int d) {
-    return touched_[static_cast<size_t>(a)] || touched_[static_cast<size_t>(b)] ||
-           touched_[static_cast<size_t>(c)] || touched_[static_cast<size_t>(d)];
-  };
-  int added = 0;
-  const size_t n_nf = candidates_.node_face.size();
-  for (size_t k = 0; k < candidate_is_constraint_.size(); ++k) {
-    if (candidate_is_constraint_[k]) continue;
-    bool moved;
-    if (k < n_nf) {
-      const NodeFaceCandidate& nf = candidates_.node_face[k];
-      const Triangle& t = features_.faces[static_cast<size_t>(nf.face)];
-      moved = touched(features_.nodes[static_cast<size_t>(nf.node)], t[0], t[1], t[2]);
-    } else {
-      const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
-      const auto& a = features_.edges[static_cast<size_t>(ee.edge_a)];
-      const auto& b = features_.edges[static_cast<size_t>(ee.edge_b)];
-      moved = touched(a[0], a[1], b[0], b[1]);
-    }
-    if (moved && try_candidate(s, k)) ++added;
-  }
+  const int added = test_candidates(s, true);
   for (int n : moved_) touched_[static_cast<size_t>(n)] = 0;
   return added;
 }
@@ -232,39 +267,42 @@ int DcrContact::redetect(const State& s) {
 // A node and a face are a contact when the node, arriving from the outward side (g(x_n) >= 0),
 // crosses the face during the step (CCD), or stays outward within the proximity distance of it
 // with its projection inside the face (persistent contact).
-void DcrContact::add_node_face(const State& s, int p, const Triangle& t) {
+std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p,
+                                                        const Triangle& t) const {
   const std::vector<Vec3>& x0 = x_n_;
   const std::vector<Vec3>& x1 = s.x;
-  if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return;
+  if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return std::nullopt;
   const bool crossed = node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
                                      x1[t[2]], kInclusionTolerance)
                            .has_value();
   if (!crossed) {
     const double g1 = node_face_volume(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]);
     const double third_area = (x1[t[1]] - x1[t[0]]).cross(x1[t[2]] - x1[t[0]]).norm() / 6.0;
-    if (!(g1 >= 0.0 && g1 <= proximity_ * third_area)) return;
-    if (!projects_inside(x1[p], x1[t[0]], x1[t[1]], x1[t[2]], kPersistentTolerance)) return;
+    if (!(g1 >= 0.0 && g1 <= proximity_ * third_area)) return std::nullopt;
+    if (!projects_inside(x1[p], x1[t[0]], x1[t[1]], x1[t[2]], kPersistentTolerance))
+      return std::nullopt;
   }
-  constraints_.push_back({{p, t[0], t[1], t[2]}, true, 1.0, false});
+  return Constraint{{p, t[0], t[1], t[2]}, true, 1.0, false};
 }
 
 // Two edges are a contact when they cross during the step (CCD); the admissible side is the one
 // they started on (the thesis's orientation tag).
-void DcrContact::add_edge_edge(const State& s, int edge_a, int edge_b) {
+std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge_a,
+                                                        int edge_b) const {
   const std::vector<Vec3>& x0 = x_n_;
   const std::vector<Vec3>& x1 = s.x;
   const auto& ea = features_.edges[static_cast<size_t>(edge_a)];
   const auto& eb = features_.edges[static_cast<size_t>(edge_b)];
   if (!edges_may_cross(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
                        x1[eb[1]]))
-    return;
+    return std::nullopt;
   if (!edge_edge_ccd(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
                      x1[eb[1]], kInclusionTolerance))
-    return;
+    return std::nullopt;
   // The side the edges start on; where they start in one plane, the side the surfaces face
   // (edge_orientation.hpp).
   const double sign = edge_orientation_.sign(features_, edge_a, edge_b, x0, separation_);
-  constraints_.push_back({{ea[0], ea[1], eb[0], eb[1]}, false, sign, false});
+  return Constraint{{ea[0], ea[1], eb[0], eb[1]}, false, sign, false};
 }
 
 // The order in which the solves visit the constraints: by a key from the reference positions
@@ -464,8 +502,9 @@ void DcrContact::exchange_momentum(State& s, double dt) {
   std::sort(near_.begin(), near_.end());
   near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
   restitution_.before_solve(near_, s, dt);
-  const ImpulseSolve solve = impulses_.solve(
-      rows_, order_, inv_m_, v_end, {settings_.friction, settings_.max_iterations, kVelocityTolerance});
+  const ImpulseSolve solve =
+      impulses_.solve(rows_, order_, inv_m_, v_end,
+                      {settings_.friction, settings_.max_iterations, kVelocityTolerance});
   sweeps_ = solve.sweeps;
   if (!solve.converged) ++unconverged_velocity_;
 
@@ -535,14 +574,29 @@ double DcrContact::approach_limit(const State& state) const {
     Eigen::AlignedBox3d box;
     double v = 0.0, a = 0.0;
   };
+  // Per body over chunks of the surface nodes, then joined (min and max: the same for any cut).
+  const size_t n = features_.nodes.size();
+  std::vector<std::vector<Reach>> part(static_cast<size_t>(loops_.chunks(n)));
+  loops_.run(n, [&](size_t begin, size_t end, int chunk) {
+    std::vector<Reach> bodies;  // the chunk's own (no line shared with another's)
+    for (size_t i = begin; i < end; ++i) {
+      const auto body = static_cast<size_t>(features_.node_body[i]);
+      if (bodies.size() <= body) bodies.resize(body + 1);
+      const auto node = static_cast<size_t>(features_.nodes[i]);
+      bodies[body].box.extend(state.x[node]);
+      bodies[body].v = std::max(bodies[body].v, state.v[node].norm());
+      bodies[body].a = std::max(bodies[body].a, state.a[node].norm());
+    }
+    part[static_cast<size_t>(chunk)] = std::move(bodies);
+  });
   std::vector<Reach> bodies;
-  for (size_t i = 0; i < features_.nodes.size(); ++i) {
-    const auto body = static_cast<size_t>(features_.node_body[i]);
-    if (bodies.size() <= body) bodies.resize(body + 1);
-    const auto n = static_cast<size_t>(features_.nodes[i]);
-    bodies[body].box.extend(state.x[n]);
-    bodies[body].v = std::max(bodies[body].v, state.v[n].norm());
-    bodies[body].a = std::max(bodies[body].a, state.a[n].norm());
+  for (const std::vector<Reach>& p : part) {
+    if (bodies.size() < p.size()) bodies.resize(p.size());
+    for (size_t b = 0; b < p.size(); ++b) {
+      bodies[b].box.extend(p[b].box);
+      bodies[b].v = std::max(bodies[b].v, p[b].v);
+      bodies[b].a = std::max(bodies[b].a, p[b].a);
+    }
   }
   for (size_t i = 0; i < bodies.size(); ++i)
     for (size_t j = i + 1; j < bodies.size(); ++j) {

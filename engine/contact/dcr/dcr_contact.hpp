@@ -23,6 +23,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,7 @@
 #include "engine/contact/dcr/edge_orientation.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/contact/dcr/projection_update.hpp"
+#include "engine/contact/dcr/thread_chunks.hpp"
 #include "engine/observe/history.hpp"
 
 namespace ccm::dcr {
@@ -50,6 +52,9 @@ struct DcrSettings {
   double step_fraction = 0.5;   // dt limit: a pair's approach per step <= gap + this x its edge
   double proximity = 0.1;       // persistent contacts: gap <= this x min edge
   ContactOutputRequest output;  // pair forces and sensor pressures, when asked
+  // Threads of the detection (swept boxes, broad phase, CCD, the bodies' reach): the result is
+  // the same for any count (thread_chunks.hpp). The solves run on one thread.
+  ThreadUse threads;
 };
 
 // One active contact: g(x) = sign * volume(nodes) >= target.
@@ -117,16 +122,21 @@ class DcrContact : public ContactModel, public HistorySource {
   const PairRestitution& restitution() const { return restitution_; }
   double residual_penetration() const { return residual_; }  // max -g/|grad_p g| [m], >= 0
   const SurfaceFeatures& features() const { return features_; }
+  // Detection loops that ran on more than one thread since construction.
+  long threaded_loops() const { return loops_.threaded_loops(); }
   double min_edge() const { return min_edge_; }  // shortest surface edge, reference [m]
 
  private:
   void detect(const State& s);
-  bool try_candidate(const State& s, size_t k);
+  int test_candidates(const State& s, bool only_touched);
+  std::optional<Constraint> candidate_contact(const State& s, size_t k) const;
+  bool candidate_touched(size_t k) const;
   int redetect(const State& s);
   void remember_start(const State& s, size_t first);
   void enforce_positions(State& s, double dt);
-  void add_node_face(const State& s, int p, const Triangle& t);
-  void add_edge_edge(const State& s, int edge_a, int edge_b);  // indices into features_.edges
+  std::optional<Constraint> node_face_contact(const State& s, int p, const Triangle& t) const;
+  // edge_a, edge_b: indices into features_.edges.
+  std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b) const;
   bool bodies_may_touch(const State& s) const;
   double approach_limit(const State& state) const;
   bool project_positions(State& s);
@@ -141,10 +151,12 @@ class DcrContact : public ContactModel, public HistorySource {
 
   DcrSettings settings_;
   SurfaceFeatures features_;
+  ChunkedLoops loops_;
   EdgeOrientation edge_orientation_;  // the admissible side of edges that start in one plane
   BroadPhase broad_phase_;
   Candidates candidates_;
   std::vector<char> candidate_is_constraint_;  // per candidate (node-face, then edge-edge)
+  ChunkLists<Constraint> found_;               // scratch: new constraints per chunk of candidates
   std::vector<double> inv_m_;                  // 1/m of every node; 0 for fixed nodes
   std::vector<int> node_body_;                 // body of every node
   std::vector<Vec3> x_n_;                      // positions at the start of the step

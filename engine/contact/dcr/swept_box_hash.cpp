@@ -108,17 +108,18 @@ void SweptBoxHash::build(const std::vector<Record>& records, Table& table) {
 // A bucket lists its entries in ascending order (build() fills it backwards), so it is read from
 // the top down to the first entry <= after.
 template <typename Test>
-void SweptBoxHash::visit(const CellRange& r, const Table& t, int after, Test&& test) {
+void SweptBoxHash::visit(const CellRange& r, const Table& t, int after, SearchStats& stats,
+                         Test&& test) {
   for (std::int64_t k = r.lo[2]; k <= r.hi[2]; ++k)
     for (std::int64_t j = r.lo[1]; j <= r.hi[1]; ++j)
       for (std::int64_t i = r.lo[0]; i <= r.hi[0]; ++i) {
         const std::size_t h = bucket(i, j, k, t.bits);
         const std::uint32_t begin = t.start[h];
-        ++stats_.cell_visits;
+        ++stats.cell_visits;
         for (std::uint32_t e = t.start[h + 1]; e > begin;) {
           const int entry = t.entries[--e];
           if (entry <= after) break;
-          ++stats_.box_tests;
+          ++stats.box_tests;
           test(entry);
         }
       }
@@ -151,7 +152,7 @@ void SweptBoxHash::choose_grid(const FeatureBoxes& boxes) {
 }
 
 void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact,
-                        Candidates& out) {
+                        Candidates& out, const ChunkedLoops& loops) {
   out.node_face.clear();
   out.edge_edge.clear();
   stats_ = {};
@@ -165,64 +166,97 @@ void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, boo
   choose_grid(boxes);
   build(face_, faces_);
   build(edge_, edges_);
-  find_node_face(f, boxes, self_contact, out);
-  find_edge_edge(f, self_contact, out);
+  // One loop over the queries: the nodes (against the faces), then the edges (against the edges).
+  const size_t n_nodes = f.nodes.size(), n = n_nodes + f.edges.size();
+  const int chunks = loops.chunks(n, ChunkedLoops::kHeavyItem);
+  scratch_.resize(std::max(scratch_.size(), static_cast<size_t>(chunks)));
+  node_face_part_.reset(chunks);
+  edge_edge_part_.reset(chunks);
+  loops.run(
+      n,
+      [&](size_t begin, size_t end, int chunk) {
+        QueryScratch& scratch = scratch_[static_cast<size_t>(chunk)];
+        scratch.stats = {};
+        if (begin < n_nodes)
+          find_node_face(f, boxes, self_contact, begin, std::min(end, n_nodes), scratch,
+                         node_face_part_[chunk]);
+        if (end > n_nodes)
+          find_edge_edge(f, self_contact, std::max(begin, n_nodes) - n_nodes, end - n_nodes,
+                         scratch, edge_edge_part_[chunk]);
+      },
+      ChunkedLoops::kHeavyItem);
+  node_face_part_.append_to(out.node_face);
+  edge_edge_part_.append_to(out.edge_edge);
+  for (int c = 0; c < chunks; ++c) {  // integer counters: the sum does not depend on the order
+    const SearchStats& s = scratch_[static_cast<size_t>(c)].stats;
+    stats_.cell_visits += s.cell_visits;
+    stats_.box_tests += s.box_tests;
+    stats_.outliers += s.outliers;
+  }
 }
 
 void SweptBoxHash::find_node_face(const SurfaceFeatures& f, const FeatureBoxes& boxes,
-                                  bool self_contact, Candidates& out) {
+                                  bool self_contact, size_t begin, size_t end,
+                                  QueryScratch& scratch,
+                                  std::vector<NodeFaceCandidate>& out) const {
   CellRange cells;
-  for (size_t i = 0; i < f.nodes.size(); ++i) {
+  std::vector<int>& found = scratch.found;
+  SearchStats& stats = scratch.stats;
+  for (size_t i = begin; i < end; ++i) {
     const int node = f.nodes[i];
     const int body = self_contact ? -1 : f.node_body[i];
     const Box& q = boxes.node[i];
-    found_.clear();
+    found.clear();
     auto test = [&](int face) {
       const FaceRecord& rec = face_[static_cast<size_t>(face)];
       if (!overlap(q, rec.box) || rec.body == body) return;
       if (rec.nodes[0] == node || rec.nodes[1] == node || rec.nodes[2] == node) return;
-      found_.push_back(face);
+      found.push_back(face);
     };
     if (cells_of(q, cells)) {
-      visit(cells, faces_, -1, test);
+      visit(cells, faces_, -1, stats, test);
       for (int face : faces_.outliers) test(face);
-      stats_.box_tests += faces_.outliers.size();
+      stats.box_tests += faces_.outliers.size();
     } else {
-      ++stats_.outliers;
+      ++stats.outliers;
       for (int face = 0; face < f.n_faces(); ++face) test(face);
-      stats_.box_tests += f.faces.size();
+      stats.box_tests += f.faces.size();
     }
-    sort_unique(found_);
-    for (int face : found_) out.node_face.push_back({static_cast<int>(i), face});
+    sort_unique(found);
+    for (int face : found) out.push_back({static_cast<int>(i), face});
   }
 }
 
 // Each pair (a, b) once, with a < b.
-void SweptBoxHash::find_edge_edge(const SurfaceFeatures& f, bool self_contact, Candidates& out) {
+void SweptBoxHash::find_edge_edge(const SurfaceFeatures& f, bool self_contact, size_t begin,
+                                  size_t end, QueryScratch& scratch,
+                                  std::vector<EdgeEdgeCandidate>& out) const {
   CellRange cells;
-  for (size_t a = 0; a < f.edges.size(); ++a) {
+  std::vector<int>& found = scratch.found;
+  SearchStats& stats = scratch.stats;
+  for (size_t a = begin; a < end; ++a) {
     const std::array<int, 2> ea = f.edges[a];
     const int body = self_contact ? -1 : f.edge_body[a];
     const int ia = static_cast<int>(a);
     const Box& q = edge_[a].box;
-    found_.clear();
+    found.clear();
     auto test = [&](int b) {  // b > ia
       const EdgeRecord& rec = edge_[static_cast<size_t>(b)];
       if (!overlap(q, rec.box) || rec.body == body) return;
       if (shares_node(ea, rec.nodes)) return;
-      found_.push_back(b);
+      found.push_back(b);
     };
     if (cells_of(q, cells)) {
-      visit(cells, edges_, ia, test);
+      visit(cells, edges_, ia, stats, test);
       for (int b : edges_.outliers)
         if (b > ia) test(b);
-      stats_.box_tests += edges_.outliers.size();
+      stats.box_tests += edges_.outliers.size();
     } else {
       for (int b = ia + 1; b < f.n_edges(); ++b) test(b);
-      stats_.box_tests += f.edges.size() - a - 1;
+      stats.box_tests += f.edges.size() - a - 1;
     }
-    sort_unique(found_);
-    for (int b : found_) out.edge_edge.push_back({ia, b});
+    sort_unique(found);
+    for (int b : found) out.push_back({ia, b});
   }
 }
 

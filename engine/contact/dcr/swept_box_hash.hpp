@@ -23,6 +23,7 @@
 
 #include "engine/contact/dcr/contact_surface.hpp"
 #include "engine/contact/dcr/swept_boxes.hpp"
+#include "engine/contact/dcr/thread_chunks.hpp"
 
 namespace ccm::dcr {
 
@@ -60,8 +61,11 @@ class SweptBoxHash {
   // Every pair whose boxes overlap, except a node and a face that contains it, two edges that
   // share a node, and (self_contact false) two features of the same body. `out` is overwritten;
   // the result depends only on the input. Buffers are reused (no allocation after warm-up).
-  void find(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact,
-            Candidates& out);
+  // The queries (one per node, one per edge) may be shared among threads by `loops`: each chunk
+  // of queries lists its pairs in query order and the chunks are joined in order, so the list
+  // is the same for any thread count; the table is built on the calling thread.
+  void find(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact, Candidates& out,
+            const ChunkedLoops& loops = serial_loops());
 
   const SearchStats& stats() const { return stats_; }
 
@@ -94,13 +98,24 @@ class SweptBoxHash {
   static std::size_t bucket(std::int64_t i, std::int64_t j, std::int64_t k, int bits);
   template <typename Record>
   void build(const std::vector<Record>& records, Table& table);
+  // What one chunk of queries works with: the partners of one query, and its counters (on cache
+  // lines of their own: they change at every box test).
+  struct alignas(kCacheLine) QueryScratch {
+    std::vector<int> found;
+    SearchStats stats;
+  };
   // Calls test(entry) for every entry above `after` in the cells r of table t.
   template <typename Test>
-  void visit(const CellRange& r, const Table& t, int after, Test&& test);
+  static void visit(const CellRange& r, const Table& t, int after, SearchStats& stats, Test&& test);
   void choose_grid(const FeatureBoxes& boxes);
+  // The node-face pairs of the nodes [begin, end), appended to `out` in node order.
   void find_node_face(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact,
-                      Candidates& out);
-  void find_edge_edge(const SurfaceFeatures& f, bool self_contact, Candidates& out);
+                      std::size_t begin, std::size_t end, QueryScratch& scratch,
+                      std::vector<NodeFaceCandidate>& out) const;
+  // The edge-edge pairs (a, b > a) of the edges a in [begin, end), appended in order of a.
+  void find_edge_edge(const SurfaceFeatures& f, bool self_contact, std::size_t begin,
+                      std::size_t end, QueryScratch& scratch,
+                      std::vector<EdgeEdgeCandidate>& out) const;
 
   std::vector<EdgeRecord> edge_;
   std::vector<FaceRecord> face_;
@@ -108,7 +123,9 @@ class SweptBoxHash {
   std::vector<double> extent_;       // scratch for the median
   std::vector<std::uint32_t> keys_;  // scratch: bucket of each entry
   Table faces_, edges_;
-  std::vector<int> found_;  // scratch: the partners of one query
+  std::vector<QueryScratch> scratch_;  // per chunk of queries
+  ChunkLists<NodeFaceCandidate> node_face_part_;
+  ChunkLists<EdgeEdgeCandidate> edge_edge_part_;
   std::array<double, 3> origin_{};
   double inv_cell_ = 1;
   SearchStats stats_;

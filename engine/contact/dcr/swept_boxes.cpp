@@ -23,38 +23,53 @@ LocalTopology local_topology(const SurfaceFeatures& f) {
   return t;
 }
 
-void sweep_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
-                      std::span<const Vec3> x_end, std::vector<Box>& node_boxes) {
-  const std::size_t n_global = std::min(x_start.size(), x_end.size());
-  node_boxes.resize(f.nodes.size());
-  for (size_t i = 0; i < f.nodes.size(); ++i) {
-    const int n = f.nodes[i];
-    if (n < 0 || static_cast<std::size_t>(n) >= n_global)
-      throw std::invalid_argument("broad phase: surface node " + std::to_string(n) +
-                                  " has no position");
-    const Vec3& a = x_start[static_cast<size_t>(n)];
-    const Vec3& c = x_end[static_cast<size_t>(n)];
-    if (!a.allFinite() || !c.allFinite())
-      throw std::domain_error("broad phase: non-finite position at node " + std::to_string(n));
-    Box& b = node_boxes[i];
-    for (size_t d = 0; d < 3; ++d) {
-      const auto k = static_cast<Eigen::Index>(d);
-      b.lo[d] = std::min(a[k], c[k]);
-      b.hi[d] = std::max(a[k], c[k]);
-    }
+Box swept_node_box(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                   std::span<const Vec3> x_end, std::size_t i) {
+  const int n = f.nodes[i];
+  if (n < 0 || static_cast<std::size_t>(n) >= std::min(x_start.size(), x_end.size()))
+    throw std::invalid_argument("broad phase: surface node " + std::to_string(n) +
+                                " has no position");
+  const Vec3& a = x_start[static_cast<size_t>(n)];
+  const Vec3& c = x_end[static_cast<size_t>(n)];
+  if (!a.allFinite() || !c.allFinite())
+    throw std::domain_error("broad phase: non-finite position at node " + std::to_string(n));
+  Box b;
+  for (size_t d = 0; d < 3; ++d) {
+    const auto k = static_cast<Eigen::Index>(d);
+    b.lo[d] = std::min(a[k], c[k]);
+    b.hi[d] = std::max(a[k], c[k]);
   }
+  return b;
+}
+
+void sweep_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                      std::span<const Vec3> x_end, std::vector<Box>& node_boxes,
+                      const ChunkedLoops& loops) {
+  node_boxes.resize(f.nodes.size());
+  loops.run(f.nodes.size(), [&](std::size_t begin, std::size_t end, int /*chunk*/) {
+    for (size_t i = begin; i < end; ++i) node_boxes[i] = swept_node_box(f, x_start, x_end, i);
+  });
 }
 
 void feature_boxes(const LocalTopology& topology, const std::vector<Box>& node_boxes,
-                   double inflation, FeatureBoxes& out) {
+                   double inflation, FeatureBoxes& out, const ChunkedLoops& loops) {
   out.node.resize(node_boxes.size());
-  for (size_t i = 0; i < node_boxes.size(); ++i) out.node[i] = inflated(node_boxes[i], inflation);
   out.edge.resize(topology.edges.size());
-  for (size_t i = 0; i < topology.edges.size(); ++i)
-    out.edge[i] = edge_box(topology.edges[i], node_boxes, inflation);
   out.face.resize(topology.faces.size());
-  for (size_t i = 0; i < topology.faces.size(); ++i)
-    out.face[i] = face_box(topology.faces[i], node_boxes, inflation);
+  // One loop over the nodes, then the edges, then the faces: item i < n_nodes is node i, and so on.
+  const std::size_t n_nodes = node_boxes.size(), n_edges = topology.edges.size();
+  loops.run(n_nodes + n_edges + topology.faces.size(), [&](std::size_t begin, std::size_t end,
+                                                           int /*chunk*/) {
+    for (size_t i = begin; i < end; ++i) {
+      if (i < n_nodes)
+        out.node[i] = inflated(node_boxes[i], inflation);
+      else if (i < n_nodes + n_edges)
+        out.edge[i - n_nodes] = edge_box(topology.edges[i - n_nodes], node_boxes, inflation);
+      else
+        out.face[i - n_nodes - n_edges] =
+            face_box(topology.faces[i - n_nodes - n_edges], node_boxes, inflation);
+    }
+  });
 }
 
 }  // namespace ccm::dcr

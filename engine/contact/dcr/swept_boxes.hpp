@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/contact/dcr/contact_surface.hpp"
+#include "engine/contact/dcr/thread_chunks.hpp"
 #include "engine/core/types.hpp"
 
 namespace ccm::dcr {
@@ -41,11 +42,17 @@ struct LocalTopology {
 // Throws std::invalid_argument when a face or edge uses a node missing from f.nodes.
 LocalTopology local_topology(const SurfaceFeatures& f);
 
+// The swept box of surface node i (index into f.nodes), not inflated; throws as below.
+Box swept_node_box(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                   std::span<const Vec3> x_end, std::size_t i);
+
 // The swept box of every surface node (index i of f.nodes), not inflated. Throws
 // std::invalid_argument when a surface node has no position and std::domain_error naming the node
-// when a position is not finite.
+// when a position is not finite (the first such node). Each node on its own: `loops` may share
+// them among threads.
 void sweep_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
-                      std::span<const Vec3> x_end, std::vector<Box>& node_boxes);
+                      std::span<const Vec3> x_end, std::vector<Box>& node_boxes,
+                      const ChunkedLoops& loops = serial_loops());
 
 // The box of one feature: the hull of its nodes' boxes, inflated. feature_boxes() and the
 // broad phase's cached filter both call these, so their boxes are bit-identical.
@@ -82,8 +89,9 @@ struct FeatureBoxes {
   std::vector<Box> node, edge, face;  // inflated; indexed like SurfaceFeatures
 };
 
-// Hulls of the given node boxes over each edge and face, then all boxes inflated.
+// Hulls of the given node boxes over each edge and face, then all boxes inflated (each box on
+// its own: `loops` may share them among threads).
 void feature_boxes(const LocalTopology& topology, const std::vector<Box>& node_boxes,
-                   double inflation, FeatureBoxes& out);
+                   double inflation, FeatureBoxes& out, const ChunkedLoops& loops = serial_loops());
 
 }  // namespace ccm::dcr
