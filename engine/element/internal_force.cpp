@@ -151,21 +151,6 @@ CCM_INLINE PackForces linear_pack(const LinearPack& p, const PaddedVec3* x, cons
   return out;
 }
 
-// Adds the first `lanes` lanes' nodal forces into f, lane by lane, nodes 1, 2, 3 then 0: the
-// fixed order every thread count shares (lanes may share nodes).
-template <class Pack>
-CCM_INLINE void scatter(const Pack& p, const PackForces& r, int lanes, PaddedVec3* f) {
-  const LaneRows rows[4] = {
-      lane_rows(-(r.h[0][0] + r.h[1][0] + r.h[2][0]), -(r.h[0][1] + r.h[1][1] + r.h[2][1]),
-                -(r.h[0][2] + r.h[1][2] + r.h[2][2])),
-      lane_rows(r.h[0][0], r.h[0][1], r.h[0][2]), lane_rows(r.h[1][0], r.h[1][1], r.h[1][2]),
-      lane_rows(r.h[2][0], r.h[2][1], r.h[2][2])};
-  for (int l = 0; l < lanes; ++l) {
-    for (int a = 1; a < 4; ++a) add_row(rows[a], l, f[p.node[a][l]]);
-    add_row(rows[0], l, f[p.node[0][l]]);
-  }
-}
-
 // Per-lane running values over a slab's packs, reduced once at its end.
 struct LaneTotals {
   Lanes max_y = broadcast(0.0);
@@ -213,7 +198,7 @@ SlabTotals run_slab(const ElementBlock& b, const std::vector<Pack>& packs, const
       r = neo_hookean_pack<Energy>(p, x, b.lame);
     else
       r = linear_pack<Energy>(p, x, b.lame);
-    scatter(p, r, lanes, f);
+    scatter_forces(p.node, r.h, lanes, f);
     account<Pack, Energy>(b, i, r, lanes, t, out);
   }
   for (int l = 0; l < kLanes; ++l) {

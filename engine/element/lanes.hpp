@@ -42,34 +42,47 @@ inline Quad load_quad(const PaddedVec3& a) {
   return q;
 }
 
-// x[l], y[l], z[l]: the coordinates of the nodes n_l of the lanes. One aligned 256-bit load per
-// node, then a transpose by shuffles: [x y z 0] rows to x, y and z lanes.
-inline void gather_xyz(const PaddedVec3* a, const int (&n)[kLanes], Lanes& x, Lanes& y, Lanes& z) {
+// x[l], y[l], z[l], w[l]: the four components of the padded nodes n_l of the lanes (w is 0 for
+// positions; a kernel may keep a nodal value there). One aligned 256-bit load per node, then a
+// transpose by shuffles: [x y z w] rows to x, y, z and w lanes.
+#define CCM_LANES_INLINE inline __attribute__((always_inline))
+CCM_LANES_INLINE void gather_xyzw(const PaddedVec3* a, const int (&n)[kLanes], Lanes& x, Lanes& y,
+                                  Lanes& z, Lanes& w) {
 #define CCM_ROW(l) load_quad(a[n[l]])
 #if CCM_LANES_ARE_8
-  // t_k = [node k | node k + 4]; unpacks give x z and y pairs; a two-source permute finishes.
+  // t_k = [node k | node k + 4]; unpacks give x z and y w pairs; a two-source permute finishes.
   const Lanes t0 = __builtin_shufflevector(CCM_ROW(0), CCM_ROW(4), 0, 1, 2, 3, 4, 5, 6, 7);
   const Lanes t1 = __builtin_shufflevector(CCM_ROW(1), CCM_ROW(5), 0, 1, 2, 3, 4, 5, 6, 7);
   const Lanes t2 = __builtin_shufflevector(CCM_ROW(2), CCM_ROW(6), 0, 1, 2, 3, 4, 5, 6, 7);
   const Lanes t3 = __builtin_shufflevector(CCM_ROW(3), CCM_ROW(7), 0, 1, 2, 3, 4, 5, 6, 7);
   const Lanes xz01 = __builtin_shufflevector(t0, t1, 0, 8, 2, 10, 4, 12, 6, 14);
-  const Lanes y01 = __builtin_shufflevector(t0, t1, 1, 9, 3, 11, 5, 13, 7, 15);
+  const Lanes yw01 = __builtin_shufflevector(t0, t1, 1, 9, 3, 11, 5, 13, 7, 15);
   const Lanes xz23 = __builtin_shufflevector(t2, t3, 0, 8, 2, 10, 4, 12, 6, 14);
-  const Lanes y23 = __builtin_shufflevector(t2, t3, 1, 9, 3, 11, 5, 13, 7, 15);
+  const Lanes yw23 = __builtin_shufflevector(t2, t3, 1, 9, 3, 11, 5, 13, 7, 15);
   x = __builtin_shufflevector(xz01, xz23, 0, 1, 8, 9, 4, 5, 12, 13);
-  y = __builtin_shufflevector(y01, y23, 0, 1, 8, 9, 4, 5, 12, 13);
+  y = __builtin_shufflevector(yw01, yw23, 0, 1, 8, 9, 4, 5, 12, 13);
   z = __builtin_shufflevector(xz01, xz23, 2, 3, 10, 11, 6, 7, 14, 15);
+  w = __builtin_shufflevector(yw01, yw23, 2, 3, 10, 11, 6, 7, 14, 15);
 #else
   const Quad r0 = CCM_ROW(0), r1 = CCM_ROW(1), r2 = CCM_ROW(2), r3 = CCM_ROW(3);
   const Lanes xz01 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
-  const Lanes y01 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
+  const Lanes yw01 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
   const Lanes xz23 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
-  const Lanes y23 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+  const Lanes yw23 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
   x = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
-  y = __builtin_shufflevector(y01, y23, 0, 1, 4, 5);
+  y = __builtin_shufflevector(yw01, yw23, 0, 1, 4, 5);
   z = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
+  w = __builtin_shufflevector(yw01, yw23, 2, 3, 6, 7);
 #endif
 #undef CCM_ROW
+}
+
+// x[l], y[l], z[l]: the coordinates of the nodes n_l (the unused w shuffle is dropped by the
+// compiler).
+CCM_LANES_INLINE void gather_xyz(const PaddedVec3* a, const int (&n)[kLanes], Lanes& x, Lanes& y,
+                                 Lanes& z) {
+  Lanes w;
+  gather_xyzw(a, n, x, y, z, w);
 }
 
 // The forces (x, y, z)[l] of the lanes as one padded row per lane, (x, y, z, 0)[l]: the
@@ -117,6 +130,22 @@ inline LaneRows lane_rows(Lanes x, Lanes y, Lanes z) {
 inline void add_row(const LaneRows& r, int l, PaddedVec3& a) {
   const Quad sum = load_quad(a) + r.row(l);
   std::memcpy(a.v, &sum, sizeof sum);
+}
+
+// Adds the first `lanes` lanes' nodal forces of a pack into f: h[a][i] is component i of the
+// force on local node a + 1, node 0 takes minus their sum. Lane by lane, nodes 1, 2, 3 then 0:
+// the fixed order every thread count shares (lanes may share nodes).
+CCM_LANES_INLINE void scatter_forces(const int (&node)[4][kLanes], const Lanes (&h)[3][3],
+                                     int lanes, PaddedVec3* f) {
+  const LaneRows rows[4] = {
+      lane_rows(-(h[0][0] + h[1][0] + h[2][0]), -(h[0][1] + h[1][1] + h[2][1]),
+                -(h[0][2] + h[1][2] + h[2][2])),
+      lane_rows(h[0][0], h[0][1], h[0][2]), lane_rows(h[1][0], h[1][1], h[1][2]),
+      lane_rows(h[2][0], h[2][1], h[2][2])};
+  for (int l = 0; l < lanes; ++l) {
+    for (int a = 1; a < 4; ++a) add_row(rows[a], l, f[node[a][l]]);
+    add_row(rows[0], l, f[node[0][l]]);
+  }
 }
 
 }  // namespace ccm

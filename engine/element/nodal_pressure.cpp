@@ -103,38 +103,6 @@ struct NodalPressureForces {
   Lanes W;  // V0_e W_e
 };
 
-// x[l], y[l], z[l], w[l] of the padded nodes n_l: gather_xyz (lanes.hpp) keeping the fourth
-// component, here the nodal pressure.
-CCM_NP_INLINE void gather_xyzw(const PaddedVec3* a, const int (&n)[kLanes], Lanes& x, Lanes& y,
-                               Lanes& z, Lanes& w) {
-#define CCM_NP_ROW(l) load_quad(a[n[l]])
-#if CCM_LANES_ARE_8
-  const Lanes t0 = __builtin_shufflevector(CCM_NP_ROW(0), CCM_NP_ROW(4), 0, 1, 2, 3, 4, 5, 6, 7);
-  const Lanes t1 = __builtin_shufflevector(CCM_NP_ROW(1), CCM_NP_ROW(5), 0, 1, 2, 3, 4, 5, 6, 7);
-  const Lanes t2 = __builtin_shufflevector(CCM_NP_ROW(2), CCM_NP_ROW(6), 0, 1, 2, 3, 4, 5, 6, 7);
-  const Lanes t3 = __builtin_shufflevector(CCM_NP_ROW(3), CCM_NP_ROW(7), 0, 1, 2, 3, 4, 5, 6, 7);
-  const Lanes xz01 = __builtin_shufflevector(t0, t1, 0, 8, 2, 10, 4, 12, 6, 14);
-  const Lanes yw01 = __builtin_shufflevector(t0, t1, 1, 9, 3, 11, 5, 13, 7, 15);
-  const Lanes xz23 = __builtin_shufflevector(t2, t3, 0, 8, 2, 10, 4, 12, 6, 14);
-  const Lanes yw23 = __builtin_shufflevector(t2, t3, 1, 9, 3, 11, 5, 13, 7, 15);
-  x = __builtin_shufflevector(xz01, xz23, 0, 1, 8, 9, 4, 5, 12, 13);
-  y = __builtin_shufflevector(yw01, yw23, 0, 1, 8, 9, 4, 5, 12, 13);
-  z = __builtin_shufflevector(xz01, xz23, 2, 3, 10, 11, 6, 7, 14, 15);
-  w = __builtin_shufflevector(yw01, yw23, 2, 3, 10, 11, 6, 7, 14, 15);
-#else
-  const Quad r0 = CCM_NP_ROW(0), r1 = CCM_NP_ROW(1), r2 = CCM_NP_ROW(2), r3 = CCM_NP_ROW(3);
-  const Lanes xz01 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
-  const Lanes yw01 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
-  const Lanes xz23 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
-  const Lanes yw23 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
-  x = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
-  y = __builtin_shufflevector(yw01, yw23, 0, 1, 4, 5);
-  z = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
-  w = __builtin_shufflevector(yw01, yw23, 2, 3, 6, 7);
-#endif
-#undef CCM_NP_ROW
-}
-
 // The edges of Ds (as np_gather_edges) and the mean of the four nodal pressures, pbar_e, from
 // one move per node of the (x, y, z, p_n) rows.
 CCM_NP_INLINE Lanes gather_edges_and_mean_pressure(const NeoHookeanPack& p,
@@ -197,21 +165,6 @@ CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p,
   return out;
 }
 
-// Adds the first `lanes` lanes' forces into f: lane by lane, nodes 1, 2, 3 then 0 (the fixed
-// order of the plain kernel; one padded row per node, lanes.hpp).
-CCM_NP_INLINE void scatter_forces(const NeoHookeanPack& p, const NodalPressureForces& r, int lanes,
-                                  PaddedVec3* f) {
-  const LaneRows rows[4] = {
-      lane_rows(-(r.h[0][0] + r.h[1][0] + r.h[2][0]), -(r.h[0][1] + r.h[1][1] + r.h[2][1]),
-                -(r.h[0][2] + r.h[1][2] + r.h[2][2])),
-      lane_rows(r.h[0][0], r.h[0][1], r.h[0][2]), lane_rows(r.h[1][0], r.h[1][1], r.h[1][2]),
-      lane_rows(r.h[2][0], r.h[2][1], r.h[2][2])};
-  for (int l = 0; l < lanes; ++l) {
-    for (int a = 1; a < 4; ++a) add_row(rows[a], l, f[p.node[a][l]]);
-    add_row(rows[0], l, f[p.node[0][l]]);
-  }
-}
-
 // Per-lane running values over a slab, reduced once at its end (as the plain kernel does).
 struct LaneRunning {
   Lanes max_y = np_broadcast(0.0);
@@ -251,7 +204,7 @@ SlabTotals run_slab(const ElementBlock& b, const Slab& slab, const PaddedVec3* p
     const int lanes = i + 1 == end ? slab.last_lanes : kLanes;
     const NodalPressureForces r =
         element_forces<Energy>(p, position_pressure, b.lame, max_abs_log_J);
-    scatter_forces(p, r, lanes, f);
+    scatter_forces(p.node, r.h, lanes, f);
     account_pack<Energy>(b, i, r, lanes, t, out);
   }
   for (int l = 0; l < kLanes; ++l) {
