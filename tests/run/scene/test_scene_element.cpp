@@ -1,6 +1,6 @@
 // Scene [[bodies]] element = "tet4" | "nodal_pressure" (docs/scene-file.md, docs/elements.md):
 // the default, the option reaching the model, and the refusals (an unknown name with a
-// suggestion, a linear-elastic body, DCR contact) with file, line and key.
+// suggestion, a linear-elastic body) with file, line and key; DCR contact takes the element.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -52,13 +52,12 @@ TEST_CASE("scene: a bad element is refused with file, line and key", "[nodal_pre
         "'linear_elastic')");
 }
 
-TEST_CASE("scene: dcr contact refuses a nodal_pressure body before the run",
-          "[nodal_pressure][scene]") {
+TEST_CASE("scene: dcr contact takes a nodal_pressure body", "[nodal_pressure][scene]") {
   const std::string text = cube_with("element = \"nodal_pressure\"") +
                            "[contact]\nmodel = \"dcr\"\nsurfaces = [\"cube\"]\n";
-  CHECK_THAT(test::scene_error_of(text),
-             Contains("s.toml:15: contact.model: dcr does not support element = "
-                      "\"nodal_pressure\" (body 'cube', line 5)"));
+  const Scene scene = parse_scene(text, "s.toml");
+  CHECK(scene.contact.kind == ContactKind::dcr);
+  CHECK(scene.bodies[0].element == ElementKind::nodal_pressure);
 }
 
 TEST_CASE("scene: the nearly incompressible example parses and builds with nodal_pressure",
