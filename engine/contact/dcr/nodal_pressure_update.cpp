@@ -82,6 +82,7 @@ NodalPressureUpdate::NodalPressureUpdate(const ModelMesh& mesh, std::span<const 
   stamp_element_.assign(elements_.size(), -1);
   stamp_node_.assign(n_nodes, -1);
   pressure_.assign(n_nodes, {});
+  volume_.assign(elements_.size(), {});
 }
 
 // V_e = det(Ds) / 6 with the columns e_c = x_{c+1} - x_0; dV_e/dx_{c+1} = e_{c+1} x e_{c+2} / 6
@@ -122,23 +123,21 @@ void NodalPressureUpdate::mark_rings(std::span<const int> moved) {
     }
 }
 
-void NodalPressureUpdate::nodal_volumes(int n, std::span<const Vec3> before,
-                                        std::span<const int> before_index,
-                                        const std::vector<Vec3>& x, double& V_old,
-                                        double& V_new) const {
-  V_old = V_new = 0.0;
+// V_e before and after the move of every element of E2 (equal outside E1).
+void NodalPressureUpdate::element_volumes(std::span<const Vec3> before,
+                                          std::span<const int> before_index,
+                                          const std::vector<Vec3>& x) {
   Vec3 unused[4];
-  for (int j = first_[static_cast<size_t>(n)]; j < first_[static_cast<size_t>(n) + 1]; ++j) {
-    const auto k = static_cast<size_t>(adjacent_[static_cast<size_t>(j)]);
+  for (int k : ring_elements_) {
+    const Element& e = elements_[static_cast<size_t>(k)];
     Vec3 x_old[4], x_new[4];
     for (int c = 0; c < 4; ++c) {
-      const int i = elements_[k].nodes[c];
-      x_new[c] = x[static_cast<size_t>(i)];
-      x_old[c] = position_before(i, before, before_index, x);
+      x_new[c] = x[static_cast<size_t>(e.nodes[c])];
+      x_old[c] = position_before(e.nodes[c], before, before_index, x);
     }
-    const double V_e_new = volume(x_new, unused);
-    V_new += 0.25 * V_e_new;  // eq. NP.2
-    V_old += moves_[k] ? 0.25 * volume(x_old, unused) : 0.25 * V_e_new;
+    const double V_new = volume(x_new, unused);
+    volume_[static_cast<size_t>(k)] = {moves_[static_cast<size_t>(k)] ? volume(x_old, unused) : V_new,
+                                       V_new};
   }
 }
 
@@ -146,11 +145,16 @@ void NodalPressureUpdate::nodal_volumes(int n, std::span<const Vec3> before,
 NodalPressureUpdate::Change NodalPressureUpdate::nodal_energy(std::span<const Vec3> before,
                                                               std::span<const int> before_index,
                                                               const std::vector<Vec3>& x) {
+  element_volumes(before, before_index, x);
   Change out;
   for (int n : ring_nodes_) {
     const auto i = static_cast<size_t>(n);
-    double V_old, V_new;
-    nodal_volumes(n, before, before_index, x, V_old, V_new);
+    double V_old = 0.0, V_new = 0.0;  // eq. NP.2, over every element at n (all in E2)
+    for (int j = first_[i]; j < first_[i + 1]; ++j) {
+      const ElementVolume& v = volume_[static_cast<size_t>(adjacent_[static_cast<size_t>(j)])];
+      V_old += 0.25 * v.old_value;
+      V_new += 0.25 * v.new_value;
+    }
     const Volumetric old_value = volumetric(V_old, V0_node_[i], lambda_node_[i]);
     const Volumetric new_value = volumetric(V_new, V0_node_[i], lambda_node_[i]);
     out.stored += V0_node_[i] * (new_value.U - old_value.U);

@@ -49,9 +49,12 @@ class NodalPressureUpdate {
   };
   // The current volume V_e and its gradient (eq. NP.4: dV_e/dx_{c+1} = n_c / 6).
   static double volume(const Vec3 (&x)[4], Vec3 (&dV)[4]);
-  // V_n over every element at n, for the positions before (old) and after (new) the move.
-  void nodal_volumes(int n, std::span<const Vec3> before, std::span<const int> before_index,
-                     const std::vector<Vec3>& x, double& V_old, double& V_new) const;
+  struct ElementVolume {
+    double old_value = 0.0, new_value = 0.0;
+  };
+  // V_e before (old) and after (new) the move, for the elements of E2.
+  void element_volumes(std::span<const Vec3> before, std::span<const int> before_index,
+                       const std::vector<Vec3>& x);
   void mark_rings(std::span<const int> moved);
   Change nodal_energy(std::span<const Vec3> before, std::span<const int> before_index,
                       const std::vector<Vec3>& x);
@@ -63,6 +66,7 @@ class NodalPressureUpdate {
   std::vector<double> V0_node_, lambda_node_;
   std::vector<char> moves_;  // per prepared element: holds a moved node (E1) in this apply()
   std::vector<NodeValues> pressure_;  // per node, valid for the nodes of ring_nodes_
+  std::vector<ElementVolume> volume_;  // per prepared element, valid for ring_elements_
   std::vector<int> stamp_node_, stamp_element_;
   std::vector<int> ring_nodes_, ring_elements_;  // N1 and E2 of this apply(), first-seen order
   int epoch_ = 0;
