@@ -136,8 +136,8 @@ void NodalPressureUpdate::element_volumes(std::span<const Vec3> before,
       x_old[c] = position_before(e.nodes[c], before, before_index, x);
     }
     const double V_new = volume(x_new, unused);
-    volume_[static_cast<size_t>(k)] = {moves_[static_cast<size_t>(k)] ? volume(x_old, unused) : V_new,
-                                       V_new};
+    volume_[static_cast<size_t>(k)] = {
+        moves_[static_cast<size_t>(k)] ? volume(x_old, unused) : V_new, V_new};
   }
 }
 
