@@ -147,10 +147,6 @@ std::vector<Vec3> node_coordinates(const std::vector<size_t>& wanted, const std:
   return nodes;
 }
 
-double six_volume(const Tet& t, const std::vector<Vec3>& x) {
-  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).dot(x[t[3]] - x[t[0]]);
-}
-
 // Swaps two nodes of a negative tet; refuses a flat one (relative to its longest edge from t[0]).
 void orient_tet(Tet& t, const std::vector<Vec3>& x, size_t gmsh_tag, const std::string& context) {
   const double v6 = six_volume(t, x);

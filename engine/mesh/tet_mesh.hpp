@@ -23,22 +23,25 @@ struct TetMesh {
   std::vector<Tet> tets;
   std::map<std::string, std::vector<Triangle>> named_surfaces;
   std::map<std::string, std::vector<int>> named_node_sets;  // sorted unique node indices
-  std::vector<std::string> region_names;  // empty: the mesh is one region
-  std::vector<int> tet_region;            // per tet, an index into region_names (or empty)
+  std::vector<std::string> region_names;                    // empty: the mesh is one region
+  std::vector<int> tet_region;  // per tet, an index into region_names (or empty)
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_elements() const { return static_cast<int>(tets.size()); }
 };
 
-// The reference volume of the mesh: sum over tets of det[x1 - x0, x2 - x0, x3 - x0] / 6 [m^3].
+// Six times the signed volume of tet t: det[x1 - x0, x2 - x0, x3 - x0].
+inline double six_volume(const Tet& t, const std::vector<Vec3>& x) {
+  const Vec3& x0 = x[static_cast<size_t>(t[0])];
+  return (x[static_cast<size_t>(t[1])] - x0)
+      .cross(x[static_cast<size_t>(t[2])] - x0)
+      .dot(x[static_cast<size_t>(t[3])] - x0);
+}
+
+// The reference volume of the mesh: sum over tets of six_volume / 6 [m^3].
 inline double mesh_volume(const TetMesh& mesh) {
   double v = 0.0;
-  for (const Tet& t : mesh.tets) {
-    const Vec3& x0 = mesh.nodes[static_cast<size_t>(t[0])];
-    v += (mesh.nodes[static_cast<size_t>(t[1])] - x0)
-             .cross(mesh.nodes[static_cast<size_t>(t[2])] - x0)
-             .dot(mesh.nodes[static_cast<size_t>(t[3])] - x0);
-  }
+  for (const Tet& t : mesh.tets) v += six_volume(t, mesh.nodes);
   return v / 6.0;
 }
 

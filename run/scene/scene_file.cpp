@@ -576,17 +576,6 @@ void parse_penalty(const Table& t, ContactSpec& c) {
   c.penalty_scale = positive(t, "penalty_scale", t.get_or("penalty_scale", c.penalty_scale));
 }
 
-// DCR's projection update re-evaluates the elements around moved nodes with the plain tet's
-// energy (engine/contact/dcr/projection_update.hpp), which the nodal-pressure element's nodal
-// volumetric energy does not split into; such bodies are refused rather than run inconsistently.
-void refuse_nodal_pressure_bodies(const Table& t, const Scene& scene) {
-  for (const BodySpec& b : scene.bodies)
-    if (b.element == ElementKind::nodal_pressure)
-      t.fail("model", fmt::format("dcr does not support element = \"nodal_pressure\" (body '{}', "
-                                  "line {}); use element = \"tet4\" or rigid_penalty contact",
-                                  b.name, b.where.line_of("element")));
-}
-
 void parse_contact(const Table& root, Scene& scene) {
   const auto t = root.table("contact");
   if (!t) return;
@@ -597,7 +586,6 @@ void parse_contact(const Table& root, Scene& scene) {
   }
   if (model == "dcr") {
     parse_dcr(*t, scene.contact);
-    refuse_nodal_pressure_bodies(*t, scene);
     return;
   }
   if (model != "rigid_penalty")

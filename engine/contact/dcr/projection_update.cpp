@@ -31,9 +31,18 @@ Mat3 first_piola(MaterialModel model, const Mat3& F, const Lame& lame) {
   throw std::logic_error("projection update: unknown material model");
 }
 
+// The element part of the energy: the whole W for a plain tet, W_e = W with lambda = 0 for the
+// nodal-pressure tet (eq. NP.2; its volumetric part is NodalPressureUpdate's).
+Lame element_lame(const Body& body) {
+  Lame lame = lame_from(body.material);
+  if (body.element == ElementKind::nodal_pressure) lame.lambda = 0.0;
+  return lame;
+}
+
 }  // namespace
 
-ProjectionUpdate::ProjectionUpdate(const ModelMesh& mesh, std::span<const int> movable) {
+ProjectionUpdate::ProjectionUpdate(const ModelMesh& mesh, std::span<const int> movable)
+    : nodal_pressure_(mesh, movable) {
   const auto n_nodes = static_cast<size_t>(mesh.n_nodes());
   std::vector<bool> is_movable(n_nodes, false);
   for (int n : movable) is_movable[static_cast<size_t>(n)] = true;
@@ -46,9 +55,8 @@ ProjectionUpdate::ProjectionUpdate(const ModelMesh& mesh, std::span<const int> m
     const auto& X = mesh.X;
     const auto reference = make_tet_reference(X[t[0]], X[t[1]], X[t[2]], X[t[3]]);
     if (!reference) throw std::invalid_argument("projection update: degenerate reference tet");
-    const MaterialParams& m =
-        mesh.bodies[static_cast<size_t>(mesh.element_body[static_cast<size_t>(e)])].material;
-    elements_.push_back({t, *reference, m.model, lame_from(m)});
+    const Body& body = mesh.bodies[static_cast<size_t>(mesh.element_body[static_cast<size_t>(e)])];
+    elements_.push_back({t, *reference, body.material.model, element_lame(body)});
     for (int n : t)
       if (is_movable[static_cast<size_t>(n)]) ++count[static_cast<size_t>(n)];
   }
@@ -76,8 +84,9 @@ double ProjectionUpdate::evaluate(const Element& e, const Vec3 (&x)[4], double s
   return e.reference.V0 * energy_density(e.model, F, e.lame);
 }
 
-ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
-                               std::span<const double> inv_m, double dt) {
+ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> moved,
+                                                       std::span<const Vec3> before, State& s,
+                                                       std::span<const double> inv_m, double dt) {
   const std::vector<Vec3>& x = s.x;
   ++epoch_;
   for (size_t k = 0; k < moved.size(); ++k)
@@ -105,6 +114,10 @@ ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> move
         dE.kinetic += 0.5 * dt * s.v[i].dot(df[c]);
       }
     }
+  const NodalPressureUpdate::Change nodal =
+      nodal_pressure_.apply(moved, before, before_index_, s, inv_m, dt);
+  dE.stored += nodal.stored;
+  dE.kinetic += nodal.kinetic;
   for (int n : moved) before_index_[static_cast<size_t>(n)] = -1;
   return dE;
 }

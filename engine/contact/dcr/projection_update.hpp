@@ -15,16 +15,21 @@
 //   dE = dQ + dt/2 sum_i v*_i . df_i,
 // the second term being the change of the leapfrog kinetic energy 1/2 m (v_{n+1}^2 - dt^2/4 a^2)
 // = 1/2 m v* . (v* + dt a) that the monitor measures (v_{n+1} = v* + dt/2 a).
+//
+// A body with the averaged-nodal-pressure tet (docs/elements.md) keeps W_e with lambda = 0 here
+// (its element part, eq. NP.2); the nodal volumetric part, whose forces reach one ring further,
+// is NodalPressureUpdate's (nodal_pressure_update.hpp).
 #pragma once
 
 #include <span>
 #include <vector>
 
+#include "engine/contact/dcr/nodal_pressure_update.hpp"
+#include "engine/core/state.hpp"
 #include "engine/core/types.hpp"
 #include "engine/element/tet4.hpp"
 #include "engine/material/material.hpp"
 #include "engine/mesh/model_mesh.hpp"
-#include "engine/core/state.hpp"
 
 namespace ccm::dcr {
 
@@ -42,7 +47,7 @@ class ProjectionUpdate {
   // the force change divided by the node's mass into s.a (inv_m: 1/m, 0 for fixed nodes) and
   // returns dQ and dK for the step dt.
   EnergyChange apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
-               std::span<const double> inv_m, double dt);
+                     std::span<const double> inv_m, double dt);
 
  private:
   struct Element {
@@ -59,6 +64,7 @@ class ProjectionUpdate {
   std::vector<int> stamp_;         // per prepared element: the last apply() that counted it
   std::vector<int> before_index_;  // per node: its index in `before` during apply(), else -1
   int epoch_ = 0;
+  NodalPressureUpdate nodal_pressure_;
 };
 
 }  // namespace ccm::dcr

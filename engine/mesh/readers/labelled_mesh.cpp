@@ -55,10 +55,6 @@ std::unordered_map<long, int> compact_nodes(const LabelledMesh& m,
   return compact;
 }
 
-double six_volume(const Tet& t, const std::vector<Vec3>& x) {
-  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).dot(x[t[3]] - x[t[0]]);
-}
-
 void add_tets(const LabelledMesh& m, const std::unordered_map<long, int>& compact, MeshFile& out) {
   int inverted = 0;
   for (const auto& lt : m.tets) {
