@@ -55,29 +55,21 @@ NodalPressureUpdate::NodalPressureUpdate(const ModelMesh& mesh, std::span<const 
   const std::vector<int> prepared = elements_at(mesh, ring);  // E2 candidates
   if (prepared.empty()) return;
 
-  std::vector<int> count(n_nodes, 0);
   V0_node_.assign(n_nodes, 0.0);
   lambda_node_.assign(n_nodes, 0.0);
   for (int e : prepared) {
     const Tet& t = mesh.tets[static_cast<size_t>(e)];
-    elements_.push_back({t});
+    elements_.push_back(t);
     Vec3 X[4], unused[4];
     for (int c = 0; c < 4; ++c) X[c] = mesh.X[static_cast<size_t>(t[c])];
     const double V0 = volume(X, unused);
     const Body& b = mesh.bodies[static_cast<size_t>(mesh.element_body[static_cast<size_t>(e)])];
     for (int n : t) {
-      ++count[static_cast<size_t>(n)];
       V0_node_[static_cast<size_t>(n)] += 0.25 * V0;  // eq. NP.1 (exact for the nodes of N1)
       lambda_node_[static_cast<size_t>(n)] = lame_from(b.material).lambda;
     }
   }
-  first_.assign(n_nodes + 1, 0);
-  for (size_t i = 0; i < n_nodes; ++i) first_[i + 1] = first_[i] + count[i];
-  adjacent_.resize(static_cast<size_t>(first_[n_nodes]));
-  std::vector<int> next(first_.begin(), first_.end() - 1);
-  for (size_t k = 0; k < elements_.size(); ++k)
-    for (int n : elements_[k].nodes)
-      adjacent_[static_cast<size_t>(next[static_cast<size_t>(n)]++)] = static_cast<int>(k);
+  around_ = NodeElements(n_nodes, elements_, [](int) { return true; });
   moves_.assign(elements_.size(), 0);
   stamp_element_.assign(elements_.size(), -1);
   stamp_node_.assign(n_nodes, -1);
@@ -105,18 +97,18 @@ void NodalPressureUpdate::mark_rings(std::span<const int> moved) {
   ring_nodes_.clear();
   ring_elements_.clear();
   for (int m : moved)
-    for (int j = first_[static_cast<size_t>(m)]; j < first_[static_cast<size_t>(m) + 1]; ++j) {
-      const auto k = static_cast<size_t>(adjacent_[static_cast<size_t>(j)]);
+    for (int j = around_.begin(m); j < around_.end(m); ++j) {
+      const auto k = static_cast<size_t>(around_.at(j));
       moves_[k] = 1;
-      for (int n : elements_[k].nodes)
+      for (int n : elements_[k])
         if (stamp_node_[static_cast<size_t>(n)] != epoch_) {
           stamp_node_[static_cast<size_t>(n)] = epoch_;
           ring_nodes_.push_back(n);
         }
     }
   for (int n : ring_nodes_)
-    for (int j = first_[static_cast<size_t>(n)]; j < first_[static_cast<size_t>(n) + 1]; ++j) {
-      const int k = adjacent_[static_cast<size_t>(j)];
+    for (int j = around_.begin(n); j < around_.end(n); ++j) {
+      const int k = around_.at(j);
       if (stamp_element_[static_cast<size_t>(k)] == epoch_) continue;
       stamp_element_[static_cast<size_t>(k)] = epoch_;
       ring_elements_.push_back(k);
@@ -129,11 +121,11 @@ void NodalPressureUpdate::element_volumes(std::span<const Vec3> before,
                                           const std::vector<Vec3>& x) {
   Vec3 unused[4];
   for (int k : ring_elements_) {
-    const Element& e = elements_[static_cast<size_t>(k)];
+    const Tet& e = elements_[static_cast<size_t>(k)];
     Vec3 x_old[4], x_new[4];
     for (int c = 0; c < 4; ++c) {
-      x_new[c] = x[static_cast<size_t>(e.nodes[c])];
-      x_old[c] = position_before(e.nodes[c], before, before_index, x);
+      x_new[c] = x[static_cast<size_t>(e[c])];
+      x_old[c] = position_before(e[c], before, before_index, x);
     }
     const double V_new = volume(x_new, unused);
     volume_[static_cast<size_t>(k)] = {
@@ -150,8 +142,8 @@ NodalPressureUpdate::Change NodalPressureUpdate::nodal_energy(std::span<const Ve
   for (int n : ring_nodes_) {
     const auto i = static_cast<size_t>(n);
     double V_old = 0.0, V_new = 0.0;  // eq. NP.2, over every element at n (all in E2)
-    for (int j = first_[i]; j < first_[i + 1]; ++j) {
-      const ElementVolume& v = volume_[static_cast<size_t>(adjacent_[static_cast<size_t>(j)])];
+    for (int j = around_.begin(n); j < around_.end(n); ++j) {
+      const ElementVolume& v = volume_[static_cast<size_t>(around_.at(j))];
       V_old += 0.25 * v.old_value;
       V_new += 0.25 * v.new_value;
     }
@@ -168,11 +160,11 @@ void NodalPressureUpdate::add_force_change(int k, std::span<const Vec3> before,
                                            std::span<const int> before_index, State& s,
                                            std::span<const double> inv_m, double dt,
                                            Change& out) const {
-  const Element& e = elements_[static_cast<size_t>(k)];
+  const Tet& e = elements_[static_cast<size_t>(k)];
   Vec3 x_new[4], x_old[4], dV_new[4], dV_old[4];
   double p_old = 0.0, p_new = 0.0;  // 4 pbar_e; nodes outside N1 keep their pressure
   for (int c = 0; c < 4; ++c) {
-    const int i = e.nodes[c];
+    const int i = e[c];
     x_new[c] = s.x[static_cast<size_t>(i)];
     x_old[c] = position_before(i, before, before_index, s.x);
     if (stamp_node_[static_cast<size_t>(i)] != epoch_) continue;
@@ -187,7 +179,7 @@ void NodalPressureUpdate::add_force_change(int k, std::span<const Vec3> before,
     const Vec3 df = moves_[static_cast<size_t>(k)]
                         ? Vec3(-0.25 * (p_new * dV_new[c] - p_old * dV_old[c]))
                         : Vec3(-0.25 * (p_new - p_old) * dV_new[c]);
-    const auto i = static_cast<size_t>(e.nodes[c]);
+    const auto i = static_cast<size_t>(e[c]);
     if (inv_m[i] == 0.0) continue;  // fixed: the boundary condition keeps it at rest
     s.a[i] += inv_m[i] * df;
     out.kinetic += 0.5 * dt * s.v[i].dot(df);

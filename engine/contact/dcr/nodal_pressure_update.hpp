@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/contact/dcr/node_elements.hpp"
 #include "engine/core/state.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/model_mesh.hpp"
@@ -41,9 +42,6 @@ class NodalPressureUpdate {
                double dt);
 
  private:
-  struct Element {
-    Tet nodes;
-  };
   struct NodeValues {
     double p_old = 0.0, p_new = 0.0;
   };
@@ -61,11 +59,11 @@ class NodalPressureUpdate {
   void add_force_change(int k, std::span<const Vec3> before, std::span<const int> before_index,
                         State& s, std::span<const double> inv_m, double dt, Change& out) const;
 
-  std::vector<Element> elements_;
-  std::vector<int> first_, adjacent_;  // CSR: the prepared elements at each node (all of them)
+  std::vector<Tet> elements_;  // prepared: every nodal-pressure element within two rings
+  NodeElements around_;        // the prepared elements at each node (all of them)
   std::vector<double> V0_node_, lambda_node_;
   std::vector<char> moves_;  // per prepared element: holds a moved node (E1) in this apply()
-  std::vector<NodeValues> pressure_;  // per node, valid for the nodes of ring_nodes_
+  std::vector<NodeValues> pressure_;   // per node, valid for the nodes of ring_nodes_
   std::vector<ElementVolume> volume_;  // per prepared element, valid for ring_elements_
   std::vector<int> stamp_node_, stamp_element_;
   std::vector<int> ring_nodes_, ring_elements_;  // N1 and E2 of this apply(), first-seen order

@@ -46,7 +46,7 @@ ProjectionUpdate::ProjectionUpdate(const ModelMesh& mesh, std::span<const int> m
   const auto n_nodes = static_cast<size_t>(mesh.n_nodes());
   std::vector<bool> is_movable(n_nodes, false);
   for (int n : movable) is_movable[static_cast<size_t>(n)] = true;
-  std::vector<int> count(n_nodes, 0);
+  std::vector<Tet> prepared;
   for (int e = 0; e < mesh.n_elements(); ++e) {
     const Tet& t = mesh.tets[static_cast<size_t>(e)];
     bool touches = false;
@@ -57,17 +57,10 @@ ProjectionUpdate::ProjectionUpdate(const ModelMesh& mesh, std::span<const int> m
     if (!reference) throw std::invalid_argument("projection update: degenerate reference tet");
     const Body& body = mesh.bodies[static_cast<size_t>(mesh.element_body[static_cast<size_t>(e)])];
     elements_.push_back({t, *reference, body.material.model, element_lame(body)});
-    for (int n : t)
-      if (is_movable[static_cast<size_t>(n)]) ++count[static_cast<size_t>(n)];
+    prepared.push_back(t);
   }
-  first_.assign(n_nodes + 1, 0);
-  for (size_t i = 0; i < n_nodes; ++i) first_[i + 1] = first_[i] + count[i];
-  adjacent_.resize(static_cast<size_t>(first_[n_nodes]));
-  std::vector<int> next(first_.begin(), first_.end() - 1);
-  for (size_t k = 0; k < elements_.size(); ++k)
-    for (int n : elements_[k].nodes)
-      if (is_movable[static_cast<size_t>(n)])
-        adjacent_[static_cast<size_t>(next[static_cast<size_t>(n)]++)] = static_cast<int>(k);
+  around_ =
+      NodeElements(n_nodes, prepared, [&](int n) { return is_movable[static_cast<size_t>(n)]; });
   stamp_.assign(elements_.size(), -1);
   before_index_.assign(n_nodes, -1);
 }
@@ -93,8 +86,8 @@ ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> move
     before_index_[static_cast<size_t>(moved[k])] = static_cast<int>(k);
   EnergyChange dE;
   for (int n : moved)
-    for (int j = first_[static_cast<size_t>(n)]; j < first_[static_cast<size_t>(n) + 1]; ++j) {
-      const auto k = static_cast<size_t>(adjacent_[static_cast<size_t>(j)]);
+    for (int j = around_.begin(n); j < around_.end(n); ++j) {
+      const auto k = static_cast<size_t>(around_.at(j));
       if (stamp_[k] == epoch_) continue;
       stamp_[k] = epoch_;
       const Element& e = elements_[k];

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "engine/contact/dcr/nodal_pressure_update.hpp"
+#include "engine/contact/dcr/node_elements.hpp"
 #include "engine/core/state.hpp"
 #include "engine/core/types.hpp"
 #include "engine/element/tet4.hpp"
@@ -59,7 +60,7 @@ class ProjectionUpdate {
   // V0 W(F) of e, and its nodal forces added into f[4] with the given sign.
   double evaluate(const Element& e, const Vec3 (&x)[4], double sign, Vec3 (&f)[4]) const;
 
-  std::vector<int> first_, adjacent_;  // CSR: prepared elements around each node
+  NodeElements around_;  // the prepared elements at each movable node
   std::vector<Element> elements_;
   std::vector<int> stamp_;         // per prepared element: the last apply() that counted it
   std::vector<int> before_index_;  // per node: its index in `before` during apply(), else -1
