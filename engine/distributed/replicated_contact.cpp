@@ -3,21 +3,48 @@
 #include <mpi.h>
 
 #include <algorithm>
-#include <numeric>
 
 namespace ccm::distributed {
 namespace {
 
-constexpr int kWidth = 9;  // x, v, a per node; masses travel once, apart
+constexpr int kStateWidth = 10;        // x, v, a, m per node: once at the start, and the rest
+constexpr int kAccelerationWidth = 3;  // a per node: every step
+
+GatherPlan make_plan(const std::vector<int>& nodes, const Subdomain& d,
+                     const std::vector<int>& owners, const std::vector<int>& local_of) {
+  std::vector<std::vector<int>> owned_by(static_cast<size_t>(d.n_ranks));
+  for (int g : nodes) owned_by[static_cast<size_t>(owners[static_cast<size_t>(g)])].push_back(g);
+  GatherPlan plan;
+  for (int g : owned_by[static_cast<size_t>(d.rank)])
+    plan.owned_local.push_back(local_of[static_cast<size_t>(g)]);
+  for (const std::vector<int>& list : owned_by) {
+    plan.counts.push_back(static_cast<int>(list.size()));
+    plan.displs.push_back(static_cast<int>(plan.global.size()));
+    plan.global.insert(plan.global.end(), list.begin(), list.end());
+  }
+  return plan;
+}
+
+void pack_state(const State& s, size_t l, double* p) {
+  for (int c = 0; c < 3; ++c) {
+    p[c] = s.x[l][c];
+    p[3 + c] = s.v[l][c];
+    p[6 + c] = s.a[l][c];
+  }
+  p[9] = s.m_lumped[l];
+}
+
+void unpack_state(const double* p, size_t g, State& s) {
+  s.x[g] = Vec3(p[0], p[1], p[2]);
+  s.v[g] = Vec3(p[3], p[4], p[5]);
+  s.a[g] = Vec3(p[6], p[7], p[8]);
+  s.m_lumped[g] = p[9];
+  s.inv_m[g] = 1.0 / p[9];
+}
 
 }  // namespace
 
-std::vector<int> contact_region(const ModelMesh& mesh, bool whole_bodies) {
-  if (whole_bodies) {
-    std::vector<int> every(mesh.X.size());
-    std::iota(every.begin(), every.end(), 0);
-    return every;
-  }
+std::vector<int> contact_region(const ModelMesh& mesh) {
   std::vector<int> region;
   std::vector<char> on_boundary(mesh.X.size(), 0), in_region(mesh.X.size(), 0);
   for (const Body& b : mesh.bodies)
@@ -39,24 +66,21 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
                                      const std::vector<int>& owners, const ModelMesh& global_mesh,
                                      const std::vector<int>& fixed_nodes, PhaseTimes& times)
     : ContactModel(inner.name()),
-      inner_(inner), phases_(phases), times_(times), fixed_(global_mesh.X.size(), 0) {
+      inner_(inner),
+      phases_(phases),
+      times_(times),
+      local_of_(global_mesh.X.size(), -1),
+      fixed_(global_mesh.X.size(), 0) {
   for (int n : fixed_nodes) fixed_[static_cast<size_t>(n)] = 1;
-  std::vector<int> local_of(global_mesh.X.size(), -1);
   for (size_t l = 0; l < subdomain.global_node.size(); ++l)
-    local_of[static_cast<size_t>(subdomain.global_node[l])] = static_cast<int>(l);
-  std::vector<std::vector<int>> owned_by(static_cast<size_t>(subdomain.n_ranks));
-  for (int g : region) {
-    owned_by[static_cast<size_t>(owners[static_cast<size_t>(g)])].push_back(g);
-    const int l = local_of[static_cast<size_t>(g)];
-    if (l >= 0) local_copies_.push_back({l, g});
-  }
-  for (int g : owned_by[static_cast<size_t>(subdomain.rank)])
-    owned_local_.push_back(local_of[static_cast<size_t>(g)]);
-  for (const std::vector<int>& list : owned_by) {
-    counts_.push_back(kWidth * static_cast<int>(list.size()));
-    displs_.push_back(kWidth * static_cast<int>(gathered_global_.size()));
-    gathered_global_.insert(gathered_global_.end(), list.begin(), list.end());
-  }
+    local_of_[static_cast<size_t>(subdomain.global_node[l])] = static_cast<int>(l);
+  std::vector<char> in_region(global_mesh.X.size(), 0);
+  for (int g : region) in_region[static_cast<size_t>(g)] = 1;
+  std::vector<int> rest;
+  for (size_t g = 0; g < in_region.size(); ++g)
+    if (!in_region[g]) rest.push_back(static_cast<int>(g));
+  region_ = make_plan(region, subdomain, owners, local_of_);
+  rest_ = make_plan(rest, subdomain, owners, local_of_);
   const size_t n = global_mesh.X.size();
   view_.X = global_mesh.X;
   view_.x = global_mesh.X;
@@ -65,112 +89,151 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
   view_.f.assign(n, Vec3::Zero());
   view_.m_lumped.assign(n, 0.0);
   view_.inv_m.assign(n, 0.0);
+  inner_.use_whole_bodies(*this);
 }
 
-void ReplicatedContact::gather(const State& local) const {
-  view_.t = local.t;
-  if (view_current_) return;
+template <typename Pack, typename Unpack>
+void ReplicatedContact::allgather(const GatherPlan& plan, int width, Pack pack,
+                                  Unpack unpack) const {
   ScopedTimer timer(times_.communication);
-  const int n_ranks = static_cast<int>(counts_.size());
-  if (!masses_known_) {  // assembled masses: once
-    std::vector<double> mine, all(gathered_global_.size());
-    std::vector<int> counts(static_cast<size_t>(n_ranks)), displs(static_cast<size_t>(n_ranks));
-    for (int q = 0; q < n_ranks; ++q) {
-      counts[static_cast<size_t>(q)] = counts_[static_cast<size_t>(q)] / kWidth;
-      displs[static_cast<size_t>(q)] = displs_[static_cast<size_t>(q)] / kWidth;
-    }
-    for (int l : owned_local_) mine.push_back(local.m_lumped[static_cast<size_t>(l)]);
-    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(),
-                   counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
-    for (size_t k = 0; k < gathered_global_.size(); ++k) {
-      const auto g = static_cast<size_t>(gathered_global_[k]);
-      view_.m_lumped[g] = all[k];
-      view_.inv_m[g] = 1.0 / all[k];
-    }
-    masses_known_ = true;
-  }
-  std::vector<double> mine(kWidth * owned_local_.size()), all(kWidth * gathered_global_.size());
-  for (size_t k = 0; k < owned_local_.size(); ++k) {
-    const auto l = static_cast<size_t>(owned_local_[k]);
-    double* p = mine.data() + kWidth * k;
-    for (int c = 0; c < 3; ++c) {
-      p[c] = local.x[l][c];
-      p[3 + c] = local.v[l][c];
-      p[6 + c] = local.a[l][c];
-    }
-  }
+  const auto w = static_cast<size_t>(width);
+  send_.resize(w * plan.owned_local.size());
+  receive_.resize(w * plan.global.size());
+  for (size_t k = 0; k < plan.owned_local.size(); ++k)
+    pack(static_cast<size_t>(plan.owned_local[k]), send_.data() + w * k);
+  std::vector<int> counts(plan.counts), displs(plan.displs);
+  for (int& c : counts) c *= width;
+  for (int& d : displs) d *= width;
   ++times_.collectives;
+  MPI_Allgatherv(send_.data(), static_cast<int>(send_.size()), MPI_DOUBLE, receive_.data(),
+                 counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  for (size_t k = 0; k < plan.global.size(); ++k)
+    unpack(static_cast<size_t>(plan.global[k]), receive_.data() + w * k);
+}
+
+void ReplicatedContact::gather_state(const State& local) const {
   ++times_.region_gathers;
-  MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts_.data(),
-                 displs_.data(), MPI_DOUBLE, MPI_COMM_WORLD);
-  for (size_t k = 0; k < gathered_global_.size(); ++k) {
-    const auto g = static_cast<size_t>(gathered_global_[k]);
-    const double* p = all.data() + kWidth * k;
-    view_.x[g] = Vec3(p[0], p[1], p[2]);
-    view_.v[g] = Vec3(p[3], p[4], p[5]);
-    view_.a[g] = Vec3(p[6], p[7], p[8]);
-  }
-  view_current_ = true;
+  allgather(
+      region_, kStateWidth, [&](size_t l, double* p) { pack_state(local, l, p); },
+      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
 }
 
-void ReplicatedContact::scatter(State& local) const {
-  for (const auto& [l, g] : local_copies_) {
-    local.x[static_cast<size_t>(l)] = view_.x[static_cast<size_t>(g)];
-    local.v[static_cast<size_t>(l)] = view_.v[static_cast<size_t>(g)];
-    local.a[static_cast<size_t>(l)] = view_.a[static_cast<size_t>(g)];
+void ReplicatedContact::gather_accelerations(const State& local) const {
+  ++times_.region_gathers;
+  allgather(
+      region_, kAccelerationWidth,
+      [&](size_t l, double* p) {
+        for (int c = 0; c < 3; ++c) p[c] = local.a[l][c];
+      },
+      [&](size_t g, const double* p) { view_.a[g] = Vec3(p[0], p[1], p[2]); });
+}
+
+// x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28), on the region,
+// written as the integrator's predictor (engine/solver/explicit_integrator.cpp) so that the view
+// holds its result bit for bit.
+void ReplicatedContact::catch_up(double dt) const {
+  if (!predict_due_) return;
+  predict_due_ = false;
+  const double half_dt = 0.5 * dt;
+  for (int n : region_.global) {
+    const auto g = static_cast<size_t>(n);
+    view_.v[g] += half_dt * view_.a[g];
+    view_.x[g] += dt * view_.v[g];
   }
 }
 
-// Called first in a step, with the state at t_n (gathered at the last end_step, or now).
+void ReplicatedContact::scatter(const GatherPlan& plan, State& local) const {
+  for (int n : plan.global) {
+    const auto g = static_cast<size_t>(n);
+    const int l = local_of_[g];
+    if (l < 0) continue;
+    local.x[static_cast<size_t>(l)] = view_.x[g];
+    local.v[static_cast<size_t>(l)] = view_.v[g];
+    local.a[static_cast<size_t>(l)] = view_.a[g];
+  }
+}
+
+// Called first in a step, with the state at t_n (the view holds it, but at the first step).
 ContactStepBound ReplicatedContact::step_bound(const State& state) const {
-  gather(state);
+  view_.t = state.t;
+  if (!started_) {
+    gather_state(state);
+    started_ = true;
+  }
   ScopedTimer timer(times_.contact);
   return inner_.step_bound(view_);
 }
 
 void ReplicatedContact::begin_step(const State& state, double dt) {
-  gather(state);
+  view_.t = state.t;
+  if (!started_) {
+    gather_state(state);
+    started_ = true;
+  }
+  dt_ = dt;
   {
     ScopedTimer timer(times_.contact);
     inner_.begin_step(view_, dt);
   }
-  view_current_ = false;  // the predictor moves every node next
+  predict_due_ = true;  // the integrator predicts next
 }
 
 // The forces on the region nodes: each rank adds them to its own copies, after the halo
-// exchange, so they are counted once per copy, never summed across ranks.
+// exchange, so they are counted once per copy, never summed across ranks. The first call comes
+// from the initial evaluation, before any step: the view is gathered for it.
 void ReplicatedContact::add_forces(State& state) {
   if (!phases_.adds_forces) return;
-  gather(state);
+  view_.t = state.t;
+  if (started_)
+    catch_up(dt_);
+  else
+    gather_state(state);
   {
     ScopedTimer timer(times_.contact);
-    for (int g : gathered_global_) view_.f[static_cast<size_t>(g)].setZero();
+    for (int g : region_.global) view_.f[static_cast<size_t>(g)].setZero();
     inner_.add_forces(view_);
   }
-  for (const auto& [l, g] : local_copies_)
-    state.f[static_cast<size_t>(l)] += view_.f[static_cast<size_t>(g)];
-  view_current_ = false;  // the accelerations change next
+  for (int n : region_.global) {
+    const int l = local_of_[static_cast<size_t>(n)];
+    if (l >= 0) state.f[static_cast<size_t>(l)] += view_.f[static_cast<size_t>(n)];
+  }
 }
 
 void ReplicatedContact::correct(State& state, double dt) {
   if (!phases_.corrects) return;
-  view_current_ = false;  // a_{n+1} is new
-  gather(state);
+  view_.t = state.t;
+  catch_up(dt);
+  gather_accelerations(state);
+  local_ = &state;
+  rest_current_ = false;
+  const Seconds communication_before = times_.communication;
   {
     ScopedTimer timer(times_.contact);
     inner_.correct(view_, dt);
   }
-  scatter(state);
-  view_current_ = false;  // boundary conditions and the velocity correction follow
+  // A gather of whole bodies within the model's correct() is communication, not contact.
+  times_.contact.wall -= times_.communication.wall - communication_before.wall;
+  times_.contact.cpu -= times_.communication.cpu - communication_before.cpu;
+  scatter(region_, state);
+  if (rest_current_) scatter(rest_, state);
+  local_ = nullptr;
+}
+
+void ReplicatedContact::make_current() {
+  if (rest_current_ || local_ == nullptr) return;
+  allgather(
+      rest_, kStateWidth, [&](size_t l, double* p) { pack_state(*local_, l, p); },
+      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
+  rest_current_ = true;
 }
 
 // What the integrator does after the contact correction (engine/solver/explicit_integrator.cpp:
-// the fixed nodes, then v_{n+1} = v* + dt/2 a_{n+1}; a partitioned run has no kinematic
-// constraints), done on the view with the same arithmetic: the view then holds the state at
-// t_{n+1} bit for bit, without a second gather.
+// the fixed nodes, then v_{n+1} = v* + dt/2 a_{n+1}, eq. 2.31; a partitioned run has no kinematic
+// constraints), done on the region of the view with the same arithmetic: the view then holds the
+// state at t_{n+1} bit for bit.
 void ReplicatedContact::finish_step(double dt) {
   const double half_dt = 0.5 * dt;
-  for (int n : gathered_global_) {
+  for (int n : region_.global) {
     const auto g = static_cast<size_t>(n);
     if (fixed_[g]) {
       view_.x[g] = view_.X[g];
@@ -181,16 +244,14 @@ void ReplicatedContact::finish_step(double dt) {
   }
 }
 
-// The state at t_{n+1}, for end_step and the next step's limit and begin_step: a constraint-type
-// model's view is advanced in place after its correction; a penalty model's is gathered (its
-// accelerations a_{n+1} include the internal forces, known only to the owners).
+// The state at t_{n+1}, for end_step and the next step's limit and begin_step. A penalty model's
+// accelerations a_{n+1} include the internal forces, known only to the owners: gathered here; a
+// constraint model's were gathered for its correction.
 void ReplicatedContact::end_step(const State& state, double dt) {
-  view_current_ = false;
-  if (phases_.corrects && !phases_.adds_forces) {
-    finish_step(dt);
-    view_current_ = true;
-  }
-  gather(state);
+  view_.t = state.t;
+  catch_up(dt);
+  if (!phases_.corrects) gather_accelerations(state);
+  finish_step(dt);
   ScopedTimer timer(times_.contact);
   inner_.end_step(view_, dt);
   ledger_ = inner_.ledger();

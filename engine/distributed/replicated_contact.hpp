@@ -1,9 +1,14 @@
-// Contact across partitions by replication (docs/parallel.md "Distributed memory"): every rank
-// holds the whole contact region (the nodes the contact model reads or writes), gathers its
-// owners' current values (MPI_Allgatherv of the region nodes each rank owns), runs the same
-// deterministic contact model on it, and copies the result into the local copies it holds. Each
-// constraint is so solved once per rank, identically, and no rank needs to know where a contact
-// pair lies relative to the partition.
+// Contact across partitions by replication (docs/parallel.md "Contact across partitions"): every
+// rank holds a view of the contact region (the nodes the contact model reads or writes each step)
+// in global numbering, runs the same deterministic contact model on it, and copies the result
+// into the local copies it holds. Each constraint is so solved once per rank, identically, and no
+// rank needs to know where a contact pair lies relative to the partition.
+//
+// The view follows the integrator instead of being gathered: it replays the predictor and the
+// velocity correction on the region with the integrator's arithmetic (bit for bit), so a step
+// gathers only the new accelerations a_{n+1} of the region from their owners (3 doubles a node;
+// the whole state x, v, a once, at the start). The rest of the mesh is gathered only when the
+// model asks for whole bodies (whole_bodies.hpp).
 #pragma once
 
 #include <memory>
@@ -16,21 +21,28 @@
 namespace ccm::distributed {
 
 // What a contact model does to the state: penalty-type models add forces (add_forces), constraint
-// types correct positions and velocities (correct); the region is gathered only for those.
+// types correct positions and velocities (correct).
 struct ContactPhases {
   bool adds_forces = false;
   bool corrects = false;
 };
 
 // The contact region of a mesh: every boundary node and every node of an element touching one
-// (a DCR projection re-evaluates those elements), or every node when whole_bodies (a body-pair
-// restitution acts on the rigid motion of whole bodies). Sorted global ids.
-std::vector<int> contact_region(const ModelMesh& mesh, bool whole_bodies);
+// (a DCR projection re-evaluates those elements). Sorted global ids.
+std::vector<int> contact_region(const ModelMesh& mesh);
 
-class ReplicatedContact final : public ContactModel {
+// A set of nodes gathered from their owners onto every rank: this rank's part (local ids) and
+// every rank's, in rank order (global ids), with the counts and offsets per rank in nodes.
+struct GatherPlan {
+  std::vector<int> owned_local;
+  std::vector<int> global;
+  std::vector<int> counts, displs;
+};
+
+class ReplicatedContact final : public ContactModel, public WholeBodies {
  public:
   // inner: the model built on the global mesh (every rank has its own, identical one).
-  // fixed_nodes: the global model's, sorted.
+  // fixed_nodes: the global model's.
   ReplicatedContact(ContactModel& inner, ContactPhases phases, const std::vector<int>& region,
                     const Subdomain& subdomain, const std::vector<int>& owners,
                     const ModelMesh& global_mesh, const std::vector<int>& fixed_nodes,
@@ -42,25 +54,35 @@ class ReplicatedContact final : public ContactModel {
   // Takes the inner model's ledger (the monitor's checks read it).
   void end_step(const State& state, double dt) override;
   ContactStepBound step_bound(const State& state) const override;
+  // The nodes beyond the region, from their owners, for the rest of this step's correct().
+  void make_current() override;
 
-  int region_nodes() const { return static_cast<int>(gathered_global_.size()); }
+  int region_nodes() const { return static_cast<int>(region_.global.size()); }
 
  private:
-  void gather(const State& local) const;  // the region's x, v, a (and m once) from their owners
-  void scatter(State& local) const;       // the region's x, v, a into the local copies
-  void finish_step(double dt);            // the integrator's rest of the step, on the view
+  // Gathers `width` doubles a node of the plan: pack(local id, out) on this rank's nodes,
+  // unpack(global id, in) on every node.
+  template <typename Pack, typename Unpack>
+  void allgather(const GatherPlan& plan, int width, Pack pack, Unpack unpack) const;
+  void gather_state(const State& local) const;               // x, v, a and m of the region
+  void gather_accelerations(const State& local) const;       // a of the region
+  void catch_up(double dt) const;                            // replays the predictor when due
+  void scatter(const GatherPlan& plan, State& local) const;  // x, v, a into the local copies
+  void finish_step(double dt);  // the integrator's fixed nodes and velocity correction
 
   ContactModel& inner_;
   ContactPhases phases_;
   PhaseTimes& times_;
-  std::vector<int> owned_local_;                   // region nodes this rank owns: local ids
-  std::vector<int> gathered_global_;               // gathered order: global ids
-  std::vector<int> counts_, displs_;               // per rank, in doubles
-  std::vector<std::pair<int, int>> local_copies_;  // (local, global) of region nodes held here
-  std::vector<char> fixed_;                        // per global node
-  mutable State view_;                             // global numbering; the region is current
-  mutable bool view_current_ = false;              // the view holds the local state's values
-  mutable bool masses_known_ = false;
+  GatherPlan region_, rest_;      // the contact region; every other node
+  std::vector<int> local_of_;     // per global node: its local id here, or -1
+  std::vector<char> fixed_;       // per global node
+  const State* local_ = nullptr;  // the local state of the correct() under way
+  mutable std::vector<double> send_, receive_;
+  mutable State view_;                // global numbering; the region is current
+  mutable bool started_ = false;      // the view has been gathered once
+  mutable bool predict_due_ = false;  // the integrator has predicted, the view not yet
+  mutable double dt_ = 0.0;           // of the step under way
+  bool rest_current_ = false;         // the rest was gathered in this correct()
 };
 
 }  // namespace ccm::distributed

@@ -77,6 +77,7 @@ class DcrContact : public ContactModel, public HistorySource {
   void end_step(const State& state, double dt) override;
   // A kinematic bound only, per candidate pair (docs/contact-time-step.md, "DCR").
   ContactStepBound step_bound(const State& state) const override;
+  void use_whole_bodies(WholeBodies& access) override { restitution_.use_whole_bodies(access); }
   // Work on the bodies so far, but for the stored energy this step's projection put into the
   // elements: the integrator measured the stored energy before the contact moved any node, so
   // that part enters its balance with the next evaluation (the kinetic part of the projection,

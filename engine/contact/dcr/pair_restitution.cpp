@@ -49,6 +49,7 @@ void PairRestitution::before_solve(const std::vector<std::pair<int, int>>& near,
   for (const auto& [a, b] : near) {
     Episode& ep = episodes_[{a, b}];
     if (ep.started) continue;
+    need_whole_bodies();
     ep.a_in = motion_of(a, s, dt);
     ep.b_in = motion_of(b, s, dt);
   }
@@ -76,6 +77,7 @@ bool PairRestitution::close(const Episode& ep, int a, int b, State& s, double dt
                             double& energy_change) {
   if (!(ep.weight > 0.0) || !(ep.impulse.norm() > 0.0)) return true;
   const Vec3 n = ep.impulse.normalized(), P = ep.weighted_point / ep.weight;
+  need_whole_bodies();
   const RigidMotion A = motion_of(a, s, dt), B = motion_of(b, s, dt);
   const double u_out = n.dot(B.velocity_at(P) - A.velocity_at(P));
   if (u_out < 0.0) return false;  // still approaching: the episode goes on

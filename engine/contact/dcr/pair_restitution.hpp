@@ -1,11 +1,11 @@
 // Body-pair restitution (docs/contact-restitution.md): the coefficient of restitution e a user
 // knows from a drop test, applied to a contact episode between two bodies, not to a node.
 //
-// The constraint-level response is always inelastic (e = 0 per contact, docs/contact-method.md §1.5):
-// the rebound of a continuum comes from its elastic waves, and a deformable sphere so rebounds at
-// nearly its impact speed. That elastic rebound is the e = 1 result. For e < 1, when the two bodies
-// separate, Newton's law for the episode is enforced on their rigid-body motions (the mass-
-// weighted mean velocity and rotation of each body, eq. R1 of the note):
+// The constraint-level response is always inelastic (e = 0 per contact, docs/contact-method.md
+// §1.5): the rebound of a continuum comes from its elastic waves, and a deformable sphere so
+// rebounds at nearly its impact speed. That elastic rebound is the e = 1 result. For e < 1, when
+// the two bodies separate, Newton's law for the episode is enforced on their rigid-body motions
+// (the mass- weighted mean velocity and rotation of each body, eq. R1 of the note):
 //   u = n . (v_B(P) - v_A(P)),  v_X(P) = v_cm,X + omega_X x (P - c_X),
 // with P and n the impulse-weighted contact point and normal direction of the episode (an episode
 // lasts from the first step with a normal impulse between the bodies to the first step in which
@@ -26,9 +26,10 @@
 #include <utility>
 #include <vector>
 
+#include "engine/contact/whole_bodies.hpp"
+#include "engine/core/state.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/model_mesh.hpp"
-#include "engine/core/state.hpp"
 
 namespace ccm::dcr {
 
@@ -66,6 +67,10 @@ class PairRestitution {
   double after_solve(const std::vector<PairImpulse>& touching,
                      const std::vector<std::pair<int, int>>& near, State& s, double dt);
 
+  // A partitioned run's access to the nodes beyond the contact region (whole_bodies.hpp), asked
+  // for before every read of a whole body.
+  void use_whole_bodies(WholeBodies& access) { whole_bodies_ = &access; }
+
   int corrections() const { return corrections_; }  // episodes corrected so far
   // The corrections of the last after_solve: the impulse on B of each pair corrected.
   const std::vector<PairImpulse>& last_corrections() const { return last_; }
@@ -80,6 +85,9 @@ class PairRestitution {
     bool touched = false;  // touching in the current step
   };
   RigidMotion motion_of(int body, const State& s, double dt) const;
+  void need_whole_bodies() const {
+    if (whole_bodies_) whole_bodies_->make_current();
+  }
   // Ends the episode if the bodies separate; returns false while they still approach.
   bool close(const Episode& ep, int a, int b, State& s, double dt, double& energy_change);
   // Applies the impulse at `point` to body `body` as a rigid velocity change; returns the
@@ -96,6 +104,7 @@ class PairRestitution {
   std::map<std::pair<int, int>, Episode> episodes_;  // ordered: deterministic
   int corrections_ = 0;
   std::vector<PairImpulse> last_;
+  WholeBodies* whole_bodies_ = nullptr;
 };
 
 }  // namespace ccm::dcr
