@@ -6,7 +6,7 @@
 //   ->  accelerations  ->  correct (x_{n+1}, v*)  ->  boundary conditions  ->  v correction
 //   ->  end_step.
 //
-// Five pure virtual methods (and one optional hook, use_whole_bodies): a model that leaves one out
+// Five pure virtual methods (and one optional hook, use_replica_team): a model that leaves one out
 // does not compile (tests/engine/contact/test_contact_interface.cpp). The name and the ledger are
 // data of this base class that the model keeps current, so a wrapper has nothing to forward (docs/
 // architecture.md).
@@ -16,7 +16,7 @@
 #include <string>
 #include <utility>
 
-#include "engine/contact/whole_bodies.hpp"
+#include "engine/contact/replica_team.hpp"
 #include "engine/core/state.hpp"
 
 namespace ccm {
@@ -71,10 +71,10 @@ class ContactModel {
   // The bound on the next step from this state, without safety factor (eq. CT.1).
   virtual ContactStepBound step_bound(const State& state) const = 0;
 
-  // Where a model that reads whole bodies asks for them (whole_bodies.hpp); a model that reads
-  // only its contact surfaces and the elements touching them ignores it. Not pure: a partitioned
-  // run offers it to every model.
-  virtual void use_whole_bodies(WholeBodies& /*access*/) {}
+  // A partitioned run offers its team to the replicated model (replica_team.hpp): for whole
+  // bodies and for loops split among the ranks. A model that reads only its contact surfaces and
+  // the elements touching them, and splits nothing, ignores it. Not pure for that reason.
+  virtual void use_replica_team(ReplicaTeam& /*team*/) {}
 
  protected:
   ContactLedger ledger_;

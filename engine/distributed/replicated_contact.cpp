@@ -69,6 +69,8 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
       inner_(inner),
       phases_(phases),
       times_(times),
+      rank_(subdomain.rank),
+      size_(subdomain.n_ranks),
       local_of_(global_mesh.X.size(), -1),
       fixed_(global_mesh.X.size(), 0) {
   for (int n : fixed_nodes) fixed_[static_cast<size_t>(n)] = 1;
@@ -89,7 +91,7 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
   view_.f.assign(n, Vec3::Zero());
   view_.m_lumped.assign(n, 0.0);
   view_.inv_m.assign(n, 0.0);
-  inner_.use_whole_bodies(*this);
+  inner_.use_replica_team(*this);
 }
 
 template <typename Pack, typename Unpack>
@@ -109,6 +111,37 @@ void ReplicatedContact::allgather(const GatherPlan& plan, int width, Pack pack,
                  counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
   for (size_t k = 0; k < plan.global.size(); ++k)
     unpack(static_cast<size_t>(plan.global[k]), receive_.data() + w * k);
+}
+
+template <typename Hook>
+void ReplicatedContact::contact_time(Hook hook) const {
+  const Seconds communication_before = times_.communication;
+  {
+    ScopedTimer timer(times_.contact);
+    hook();
+  }
+  times_.contact.wall -= times_.communication.wall - communication_before.wall;
+  times_.contact.cpu -= times_.communication.cpu - communication_before.cpu;
+}
+
+void ReplicatedContact::max_over_ranks(std::span<double> values) const {
+  ScopedTimer timer(times_.communication);
+  ++times_.collectives;
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
+                MPI_COMM_WORLD);
+}
+
+std::vector<int> ReplicatedContact::join_over_ranks(std::span<const int> mine) const {
+  ScopedTimer timer(times_.communication);
+  times_.collectives += 2;
+  const int count = static_cast<int>(mine.size());
+  std::vector<int> counts(static_cast<size_t>(size_)), displs(static_cast<size_t>(size_), 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (size_t q = 1; q < counts.size(); ++q) displs[q] = displs[q - 1] + counts[q - 1];
+  std::vector<int> all(static_cast<size_t>(displs.back() + counts.back()));
+  MPI_Allgatherv(mine.data(), count, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT,
+                 MPI_COMM_WORLD);
+  return all;
 }
 
 void ReplicatedContact::gather_state(const State& local) const {
@@ -160,8 +193,9 @@ ContactStepBound ReplicatedContact::step_bound(const State& state) const {
     gather_state(state);
     started_ = true;
   }
-  ScopedTimer timer(times_.contact);
-  return inner_.step_bound(view_);
+  ContactStepBound bound;
+  contact_time([&] { bound = inner_.step_bound(view_); });
+  return bound;
 }
 
 void ReplicatedContact::begin_step(const State& state, double dt) {
@@ -171,10 +205,7 @@ void ReplicatedContact::begin_step(const State& state, double dt) {
     started_ = true;
   }
   dt_ = dt;
-  {
-    ScopedTimer timer(times_.contact);
-    inner_.begin_step(view_, dt);
-  }
+  contact_time([&] { inner_.begin_step(view_, dt); });
   predict_due_ = true;  // the integrator predicts next
 }
 
@@ -188,11 +219,10 @@ void ReplicatedContact::add_forces(State& state) {
     catch_up(dt_);
   else
     gather_state(state);
-  {
-    ScopedTimer timer(times_.contact);
+  contact_time([&] {
     for (int g : region_.global) view_.f[static_cast<size_t>(g)].setZero();
     inner_.add_forces(view_);
-  }
+  });
   for (int n : region_.global) {
     const int l = local_of_[static_cast<size_t>(n)];
     if (l >= 0) state.f[static_cast<size_t>(l)] += view_.f[static_cast<size_t>(n)];
@@ -206,20 +236,13 @@ void ReplicatedContact::correct(State& state, double dt) {
   gather_accelerations(state);
   local_ = &state;
   rest_current_ = false;
-  const Seconds communication_before = times_.communication;
-  {
-    ScopedTimer timer(times_.contact);
-    inner_.correct(view_, dt);
-  }
-  // A gather of whole bodies within the model's correct() is communication, not contact.
-  times_.contact.wall -= times_.communication.wall - communication_before.wall;
-  times_.contact.cpu -= times_.communication.cpu - communication_before.cpu;
+  contact_time([&] { inner_.correct(view_, dt); });
   scatter(region_, state);
   if (rest_current_) scatter(rest_, state);
   local_ = nullptr;
 }
 
-void ReplicatedContact::make_current() {
+void ReplicatedContact::make_whole_bodies_current() {
   if (rest_current_ || local_ == nullptr) return;
   allgather(
       rest_, kStateWidth, [&](size_t l, double* p) { pack_state(*local_, l, p); },
@@ -252,8 +275,7 @@ void ReplicatedContact::end_step(const State& state, double dt) {
   catch_up(dt);
   if (!phases_.corrects) gather_accelerations(state);
   finish_step(dt);
-  ScopedTimer timer(times_.contact);
-  inner_.end_step(view_, dt);
+  contact_time([&] { inner_.end_step(view_, dt); });
   ledger_ = inner_.ledger();
 }
 

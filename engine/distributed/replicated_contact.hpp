@@ -8,7 +8,8 @@
 // velocity correction on the region with the integrator's arithmetic (bit for bit), so a step
 // gathers only the new accelerations a_{n+1} of the region from their owners (3 doubles a node;
 // the whole state x, v, a once, at the start). The rest of the mesh is gathered only when the
-// model asks for whole bodies (whole_bodies.hpp).
+// model asks for whole bodies, and loops the model splits are joined by a maximum over the ranks
+// (replica_team.hpp).
 #pragma once
 
 #include <memory>
@@ -39,7 +40,7 @@ struct GatherPlan {
   std::vector<int> counts, displs;
 };
 
-class ReplicatedContact final : public ContactModel, public WholeBodies {
+class ReplicatedContact final : public ContactModel, public ReplicaTeam {
  public:
   // inner: the model built on the global mesh (every rank has its own, identical one).
   // fixed_nodes: the global model's.
@@ -55,7 +56,11 @@ class ReplicatedContact final : public ContactModel, public WholeBodies {
   void end_step(const State& state, double dt) override;
   ContactStepBound step_bound(const State& state) const override;
   // The nodes beyond the region, from their owners, for the rest of this step's correct().
-  void make_current() override;
+  void make_whole_bodies_current() override;
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  void max_over_ranks(std::span<double> values) const override;
+  std::vector<int> join_over_ranks(std::span<const int> mine) const override;
 
   int region_nodes() const { return static_cast<int>(region_.global.size()); }
 
@@ -69,10 +74,15 @@ class ReplicatedContact final : public ContactModel, public WholeBodies {
   void catch_up(double dt) const;                            // replays the predictor when due
   void scatter(const GatherPlan& plan, State& local) const;  // x, v, a into the local copies
   void finish_step(double dt);  // the integrator's fixed nodes and velocity correction
+  // Runs a hook of the inner model in the contact's time; the team's communication within it
+  // counts as communication.
+  template <typename Hook>
+  void contact_time(Hook hook) const;
 
   ContactModel& inner_;
   ContactPhases phases_;
   PhaseTimes& times_;
+  int rank_ = 0, size_ = 1;
   GatherPlan region_, rest_;      // the contact region; every other node
   std::vector<int> local_of_;     // per global node: its local id here, or -1
   std::vector<char> fixed_;       // per global node

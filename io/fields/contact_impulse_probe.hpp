@@ -29,7 +29,7 @@ class ContactImpulseProbe : public ContactModel {
     ledger_ = inner_.ledger();
   }
   ContactStepBound step_bound(const State& s) const override { return inner_.step_bound(s); }
-  void use_whole_bodies(WholeBodies& access) override { inner_.use_whole_bodies(access); }
+  void use_replica_team(ReplicaTeam& team) override { inner_.use_replica_team(team); }
 
   const std::vector<int>& nodes() const { return nodes_; }
   // The impulse on nodes()[k] since the last reset [N s].

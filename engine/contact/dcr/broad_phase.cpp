@@ -43,26 +43,59 @@ void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
 }
 
 // The swept node boxes of the step, and whether the cache holds for them: same surface,
-// inflation and self_contact, and every node's swept box inside its allowance (one loop: one
-// parallel region).
+// inflation and self_contact, and every node's swept box inside its allowance. A team's ranks
+// each sweep their share of the nodes and agree by a maximum of their verdicts (0 the cache
+// holds, 1 a rebuild, 2 a position that is not finite: every rank then sweeps every node and
+// throws alike).
 bool BroadPhase::sweep_within_cache(const SurfaceFeatures& f, std::span<const Vec3> x_start,
                                     std::span<const Vec3> x_end, double inflation,
                                     bool self_contact) {
   const bool same = features_ == &f && n_nodes_ == f.nodes.size() && n_edges_ == f.edges.size() &&
                     n_faces_ == f.faces.size() && inflation_ == inflation &&
                     self_contact_ == self_contact;
-  const size_t n = f.nodes.size();
-  node_box_.resize(n);
+  node_box_.resize(f.nodes.size());
+  if (team_ == nullptr) return sweep_nodes(f, x_start, x_end, 0, f.nodes.size(), same);
+  const ItemShare share = share_of(team_, f.nodes.size());
+  double verdict = 2.0;
+  try {
+    verdict = sweep_nodes(f, x_start, x_end, share.begin, share.end, same) ? 0.0 : 1.0;
+  } catch (const std::domain_error&) {
+  }
+  team_->max_over_ranks(std::span<double>(&verdict, 1));
+  if (verdict == 2.0) sweep_nodes(f, x_start, x_end, 0, f.nodes.size(), false);  // throws
+  complete_node_boxes(f, x_start, x_end, share, verdict != 0.0);
+  return verdict == 0.0;
+}
+
+// One loop: one parallel region.
+bool BroadPhase::sweep_nodes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                             std::span<const Vec3> x_end, size_t begin, size_t end, bool same) {
+  const size_t n = end - begin;
   chunk_inside_.assign(static_cast<size_t>(loops_->chunks(n)), 1);
-  loops_->run(n, [&](size_t begin, size_t end, int chunk) {
+  loops_->run(n, [&](size_t first, size_t last, int chunk) {
     bool inside = same;  // branch-free over the chunk's nodes
-    for (size_t i = begin; i < end; ++i) {
+    for (size_t i = begin + first; i < begin + last; ++i) {
       node_box_[i] = swept_node_box(f, x_start, x_end, i);
       if (same) inside &= contains(allowance_[i], node_box_[i]);
     }
     chunk_inside_[static_cast<size_t>(chunk)] = inside;
   });
-  return std::all_of(chunk_inside_.begin(), chunk_inside_.end(), [](char c) { return c != 0; });
+  return same &&
+         std::all_of(chunk_inside_.begin(), chunk_inside_.end(), [](char c) { return c != 0; });
+}
+
+void BroadPhase::complete_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                                     std::span<const Vec3> x_end, ItemShare share,
+                                     bool rebuilding) {
+  if (rebuilding) {
+    sweep_nodes(f, x_start, x_end, 0, share.begin, false);
+    sweep_nodes(f, x_start, x_end, share.end, f.nodes.size(), false);
+    return;
+  }
+  for (int node : boxed_nodes_) {
+    const auto i = static_cast<size_t>(node);
+    if (i < share.begin || i >= share.end) node_box_[i] = swept_node_box(f, x_start, x_end, i);
+  }
 }
 
 void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_contact) {
@@ -85,7 +118,7 @@ void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_c
       b.hi[d] += h;
     }
   feature_boxes(topology_, allowance_, inflation, cached_, *loops_);
-  hash_.find(f, cached_, self_contact, cache_, *loops_);
+  hash_.find(f, cached_, self_contact, cache_, *loops_, team_);
 
   static_cast<SearchStats&>(stats_) = hash_.stats();
   ++stats_.rebuilds;
@@ -124,6 +157,15 @@ void BroadPhase::list_active() {
         }
       },
       active_edges_);
+  mark_.assign(n_nodes_, 0);
+  for (int i : active_nodes_) mark_[static_cast<size_t>(i)] = 1;
+  for (int e : active_edges_)
+    for (int i : topology_.edges[static_cast<size_t>(e)]) mark_[static_cast<size_t>(i)] = 1;
+  for (int t : active_faces_)
+    for (int i : topology_.faces[static_cast<size_t>(t)]) mark_[static_cast<size_t>(i)] = 1;
+  boxed_nodes_.clear();
+  for (size_t i = 0; i < n_nodes_; ++i)
+    if (mark_[i]) boxed_nodes_.push_back(static_cast<int>(i));
 }
 
 // The step's boxes of the active features, by the functions the grid search used (one loop over

@@ -28,6 +28,7 @@
 #include "engine/contact/dcr/swept_box_hash.hpp"
 #include "engine/contact/dcr/swept_boxes.hpp"
 #include "engine/contact/dcr/thread_chunks.hpp"
+#include "engine/contact/replica_team.hpp"
 #include "engine/core/types.hpp"
 
 namespace ccm::dcr {
@@ -65,11 +66,22 @@ class BroadPhase {
   // `loops` must outlive this object's calls to find().
   void use_loops(const ChunkedLoops& loops) { loops_ = &loops; }
 
+  // A partitioned run's team (replica_team.hpp): the sweep over the surface nodes is split among
+  // its ranks (the result is the same). `team` must outlive this object's calls to find().
+  void use_team(const ReplicaTeam& team) { team_ = &team; }
+
   const BroadPhaseStats& stats() const { return stats_; }
 
  private:
   bool sweep_within_cache(const SurfaceFeatures& f, std::span<const Vec3> x_start,
                           std::span<const Vec3> x_end, double inflation, bool self_contact);
+  // The swept boxes of the nodes [begin, end); whether all lie in their allowance (if same).
+  bool sweep_nodes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                   std::span<const Vec3> x_end, std::size_t begin, std::size_t end, bool same);
+  // The swept boxes beyond this rank's share that the step reads: every node's for a rebuild,
+  // else those of boxed_nodes_.
+  void complete_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
+                           std::span<const Vec3> x_end, ItemShare share, bool rebuilding);
   void rebuild(const SurfaceFeatures& f, double inflation, bool self_contact);
   void list_active();
   void current_boxes(double inflation);
@@ -88,11 +100,13 @@ class BroadPhase {
   FeatureBoxes cached_;         // feature boxes of the allowance (scratch of rebuild)
   // The features that occur in the cache: only their boxes are needed at a step.
   std::vector<int> active_nodes_, active_edges_, active_faces_;
-  std::vector<char> mark_;      // scratch
-  std::vector<double> extent_;  // scratch for the median
+  std::vector<int> boxed_nodes_;  // the nodes whose boxes the active features read, sorted
+  std::vector<char> mark_;        // scratch
+  std::vector<double> extent_;    // scratch for the median
   Candidates cache_;
   SweptBoxHash hash_;
   const ChunkedLoops* loops_ = &serial_loops();
+  const ReplicaTeam* team_ = nullptr;
   std::vector<char> chunk_inside_;                // scratch of sweep_within_cache, per chunk
   ChunkLists<NodeFaceCandidate> node_face_part_;  // scratch of filter, per chunk
   ChunkLists<EdgeEdgeCandidate> edge_edge_part_;

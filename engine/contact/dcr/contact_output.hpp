@@ -28,9 +28,9 @@
 
 #include "engine/contact/dcr/contact_impulses.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
+#include "engine/core/state.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/model_mesh.hpp"
-#include "engine/core/state.hpp"
 
 namespace ccm::dcr {
 

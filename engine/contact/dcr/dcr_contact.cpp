@@ -61,6 +61,63 @@ bool projects_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
   return wb >= -tol && wc >= -tol && 1.0 - wb - wc >= -tol;
 }
 
+// What a body's surface nodes span in a step: their box, their largest |v| and |a|.
+struct BodyReach {
+  Eigen::AlignedBox3d box;
+  double v = 0.0, a = 0.0;
+  void join(const BodyReach& other) {
+    box.extend(other.box);
+    v = std::max(v, other.v);
+    a = std::max(a, other.a);
+  }
+};
+
+// The bodies' reach joined over the ranks of a team: a maximum of (-min, max, v, a), exact.
+void join_reach_over_ranks(const ReplicaTeam& team, std::vector<BodyReach>& bodies) {
+  constexpr size_t kWidth = 8;
+  std::vector<double> packed(kWidth * bodies.size());
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    double* p = packed.data() + kWidth * b;
+    for (int c = 0; c < 3; ++c) {
+      p[c] = -bodies[b].box.min()[c];
+      p[3 + c] = bodies[b].box.max()[c];
+    }
+    p[6] = bodies[b].v;
+    p[7] = bodies[b].a;
+  }
+  team.max_over_ranks(packed);
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const double* p = packed.data() + kWidth * b;
+    bodies[b].box.min() = -Vec3(p[0], p[1], p[2]);
+    bodies[b].box.max() = Vec3(p[3], p[4], p[5]);
+    bodies[b].v = p[6];
+    bodies[b].a = p[7];
+  }
+}
+
+// Per body, `visit(reach, node)` over the surface nodes: this rank's share of them in chunks
+// (each chunk its own reach, no line shared with another's), joined, then joined over the ranks.
+// Boxes and maxima are the same for any cut.
+template <typename Visit>
+std::vector<BodyReach> reach_per_body(const SurfaceFeatures& f, size_t n_bodies,
+                                      const ChunkedLoops& loops, const ReplicaTeam* team,
+                                      Visit visit) {
+  const ItemShare share = share_of(team, f.nodes.size());
+  const size_t n = share.end - share.begin;
+  std::vector<std::vector<BodyReach>> part(static_cast<size_t>(loops.chunks(n)));
+  loops.run(n, [&](size_t begin, size_t end, int chunk) {
+    std::vector<BodyReach> bodies(n_bodies);
+    for (size_t i = share.begin + begin; i < share.begin + end; ++i)
+      visit(bodies[static_cast<size_t>(f.node_body[i])], static_cast<size_t>(f.nodes[i]));
+    part[static_cast<size_t>(chunk)] = std::move(bodies);
+  });
+  std::vector<BodyReach> bodies(n_bodies);
+  for (const std::vector<BodyReach>& p : part)
+    for (size_t b = 0; b < p.size(); ++b) bodies[b].join(p[b]);
+  if (team) join_reach_over_ranks(*team, bodies);
+  return bodies;
+}
+
 // Two unit vectors completing the unit vector n to an orthonormal basis.
 std::pair<Vec3, Vec3> tangent_basis(const Vec3& n) {
   const Vec3 helper = std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
@@ -86,6 +143,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   if (!(settings_.proximity > 0.0 && settings_.proximity <= 0.5))
     throw std::invalid_argument("dcr: proximity must lie in (0, 0.5] (fraction of an edge)");
   broad_phase_.use_loops(loops_);
+  n_bodies_ = mesh.bodies.size();
   node_body_.assign(mesh.X.size(), -1);
   for (size_t b = 0; b < mesh.bodies.size(); ++b)
     for (int n = 0; n < mesh.bodies[b].n_nodes; ++n)
@@ -150,37 +208,31 @@ double DcrContact::constraint_gradient(const Constraint& c, const std::vector<Ve
 }
 
 // Without self-contact, bodies whose swept surface boxes do not overlap cannot touch: the
-// broad phase is skipped (a scene pays for the search only while bodies are close). The boxes
-// are grown over chunks of the surface nodes and joined (min and max: the same for any cut).
+// broad phase is skipped (a scene pays for the search only while bodies are close).
 bool DcrContact::bodies_may_touch(const State& s) const {
   if (settings_.self_contact) return true;
-  const size_t n = features_.nodes.size();
-  std::vector<std::vector<Eigen::AlignedBox3d>> part(static_cast<size_t>(loops_.chunks(n)));
-  loops_.run(n, [&](size_t begin, size_t end, int chunk) {
-    std::vector<Eigen::AlignedBox3d> boxes;  // the chunk's own (no line shared with another's)
-    for (size_t i = begin; i < end; ++i) {
-      const auto body = static_cast<size_t>(features_.node_body[i]);
-      if (boxes.size() <= body) boxes.resize(body + 1);
-      const auto node = static_cast<size_t>(features_.nodes[i]);
-      boxes[body].extend(x_n_[node]);
-      boxes[body].extend(s.x[node]);
+  std::vector<BodyReach> bodies =
+      reach_per_body(features_, n_bodies_, loops_, team_, [&](BodyReach& r, size_t node) {
+        r.box.extend(x_n_[node]);
+        r.box.extend(s.x[node]);
+      });
+  for (BodyReach& r : bodies)
+    if (!r.box.isEmpty()) {
+      r.box.min().array() -= proximity_;
+      r.box.max().array() += proximity_;
     }
-    part[static_cast<size_t>(chunk)] = std::move(boxes);
-  });
-  std::vector<Eigen::AlignedBox3d> boxes;
-  for (const std::vector<Eigen::AlignedBox3d>& p : part) {
-    if (boxes.size() < p.size()) boxes.resize(p.size());
-    for (size_t b = 0; b < p.size(); ++b) boxes[b].extend(p[b]);
-  }
-  for (auto& b : boxes)
-    if (!b.isEmpty()) {
-      b.min().array() -= proximity_;
-      b.max().array() += proximity_;
-    }
-  for (size_t a = 0; a < boxes.size(); ++a)
-    for (size_t b = a + 1; b < boxes.size(); ++b)
-      if (!boxes[a].isEmpty() && !boxes[b].isEmpty() && boxes[a].intersects(boxes[b])) return true;
+  for (size_t a = 0; a < bodies.size(); ++a)
+    for (size_t b = a + 1; b < bodies.size(); ++b)
+      if (!bodies[a].box.isEmpty() && !bodies[b].box.isEmpty() &&
+          bodies[a].box.intersects(bodies[b].box))
+        return true;
   return false;
+}
+
+void DcrContact::use_replica_team(ReplicaTeam& team) {
+  team_ = &team;
+  restitution_.use_replica_team(team);
+  broad_phase_.use_team(team);
 }
 
 void DcrContact::detect(const State& s) {
@@ -570,38 +622,22 @@ void DcrContact::end_step(const State& /*state*/, double /*dt*/) {
 double DcrContact::approach_limit(const State& state) const {
   double tau_min = std::numeric_limits<double>::infinity();
   if (settings_.self_contact) return tau_min;
-  struct Reach {
-    Eigen::AlignedBox3d box;
-    double v = 0.0, a = 0.0;
-  };
-  // Per body over chunks of the surface nodes, then joined (min and max: the same for any cut).
-  const size_t n = features_.nodes.size();
-  std::vector<std::vector<Reach>> part(static_cast<size_t>(loops_.chunks(n)));
-  loops_.run(n, [&](size_t begin, size_t end, int chunk) {
-    std::vector<Reach> bodies;  // the chunk's own (no line shared with another's)
-    for (size_t i = begin; i < end; ++i) {
-      const auto body = static_cast<size_t>(features_.node_body[i]);
-      if (bodies.size() <= body) bodies.resize(body + 1);
-      const auto node = static_cast<size_t>(features_.nodes[i]);
-      bodies[body].box.extend(state.x[node]);
-      bodies[body].v = std::max(bodies[body].v, state.v[node].norm());
-      bodies[body].a = std::max(bodies[body].a, state.a[node].norm());
-    }
-    part[static_cast<size_t>(chunk)] = std::move(bodies);
-  });
-  std::vector<Reach> bodies;
-  for (const std::vector<Reach>& p : part) {
-    if (bodies.size() < p.size()) bodies.resize(p.size());
-    for (size_t b = 0; b < p.size(); ++b) {
-      bodies[b].box.extend(p[b].box);
-      bodies[b].v = std::max(bodies[b].v, p[b].v);
-      bodies[b].a = std::max(bodies[b].a, p[b].a);
-    }
+  // The largest squared |v| and |a| first, their roots after: the same (the root is monotone and
+  // correctly rounded, and norm() is the root of squaredNorm()), at one root per body.
+  std::vector<BodyReach> bodies =
+      reach_per_body(features_, n_bodies_, loops_, team_, [&](BodyReach& r, size_t node) {
+        r.box.extend(state.x[node]);
+        r.v = std::max(r.v, state.v[node].squaredNorm());
+        r.a = std::max(r.a, state.a[node].squaredNorm());
+      });
+  for (BodyReach& r : bodies) {
+    r.v = std::sqrt(r.v);
+    r.a = std::sqrt(r.a);
   }
   for (size_t i = 0; i < bodies.size(); ++i)
     for (size_t j = i + 1; j < bodies.size(); ++j) {
-      const Reach& A = bodies[i];
-      const Reach& B = bodies[j];
+      const BodyReach& A = bodies[i];
+      const BodyReach& B = bodies[j];
       if (A.box.isEmpty() || B.box.isEmpty()) continue;
       const Eigen::Vector3d gaps = (A.box.min() - B.box.max()).cwiseMax(B.box.min() - A.box.max());
       const double G = gaps.maxCoeff();

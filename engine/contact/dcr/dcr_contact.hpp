@@ -77,7 +77,9 @@ class DcrContact : public ContactModel, public HistorySource {
   void end_step(const State& state, double dt) override;
   // A kinematic bound only, per candidate pair (docs/contact-time-step.md, "DCR").
   ContactStepBound step_bound(const State& state) const override;
-  void use_whole_bodies(WholeBodies& access) override { restitution_.use_whole_bodies(access); }
+  // A partitioned run's team: whole bodies for the restitution; the loops over the surface nodes
+  // (the bodies' boxes and reach, the broad phase's sweep) split among the ranks.
+  void use_replica_team(ReplicaTeam& team) override;
   // Work on the bodies so far, but for the stored energy this step's projection put into the
   // elements: the integrator measured the stored energy before the contact moved any node, so
   // that part enters its balance with the next evaluation (the kinetic part of the projection,
@@ -160,10 +162,12 @@ class DcrContact : public ContactModel, public HistorySource {
   ChunkLists<Constraint> found_;               // scratch: new constraints per chunk of candidates
   std::vector<double> inv_m_;                  // 1/m of every node; 0 for fixed nodes
   std::vector<int> node_body_;                 // body of every node
-  std::vector<Vec3> x_n_;                      // positions at the start of the step
-  double min_edge_ = 0.0;    // shortest surface edge in the reference configuration
-  double separation_ = 0.0;  // distance kept between a node and a face after projection
-  double proximity_ = 0.0;   // distance within which a node-face contact persists
+  size_t n_bodies_ = 0;
+  ReplicaTeam* team_ = nullptr;  // of a partitioned run; null in a serial one
+  std::vector<Vec3> x_n_;        // positions at the start of the step
+  double min_edge_ = 0.0;        // shortest surface edge in the reference configuration
+  double separation_ = 0.0;      // distance kept between a node and a face after projection
+  double proximity_ = 0.0;       // distance within which a node-face contact persists
   std::vector<Constraint> constraints_;
   std::vector<ContactRow> rows_;
   ContactImpulses impulses_;

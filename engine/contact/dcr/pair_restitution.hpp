@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/contact/whole_bodies.hpp"
+#include "engine/contact/replica_team.hpp"
 #include "engine/core/state.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/model_mesh.hpp"
@@ -67,9 +67,9 @@ class PairRestitution {
   double after_solve(const std::vector<PairImpulse>& touching,
                      const std::vector<std::pair<int, int>>& near, State& s, double dt);
 
-  // A partitioned run's access to the nodes beyond the contact region (whole_bodies.hpp), asked
-  // for before every read of a whole body.
-  void use_whole_bodies(WholeBodies& access) { whole_bodies_ = &access; }
+  // A partitioned run's team (replica_team.hpp), asked for the nodes beyond the contact region
+  // before every read of a whole body.
+  void use_replica_team(ReplicaTeam& team) { team_ = &team; }
 
   int corrections() const { return corrections_; }  // episodes corrected so far
   // The corrections of the last after_solve: the impulse on B of each pair corrected.
@@ -86,7 +86,7 @@ class PairRestitution {
   };
   RigidMotion motion_of(int body, const State& s, double dt) const;
   void need_whole_bodies() const {
-    if (whole_bodies_) whole_bodies_->make_current();
+    if (team_) team_->make_whole_bodies_current();
   }
   // Ends the episode if the bodies separate; returns false while they still approach.
   bool close(const Episode& ep, int a, int b, State& s, double dt, double& energy_change);
@@ -104,7 +104,7 @@ class PairRestitution {
   std::map<std::pair<int, int>, Episode> episodes_;  // ordered: deterministic
   int corrections_ = 0;
   std::vector<PairImpulse> last_;
-  WholeBodies* whole_bodies_ = nullptr;
+  ReplicaTeam* team_ = nullptr;
 };
 
 }  // namespace ccm::dcr

@@ -20,6 +20,26 @@ void sort_unique(std::vector<int>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
+// The candidates of every rank's share of the queries, joined in rank order: each rank's
+// node-face pairs come from a run of node queries and its edge-edge pairs from a run of edge
+// queries, so the ranks' lists joined in order are the lists of all queries in order. A rank's
+// part travels as (node-face count, edge-edge count, the pairs).
+void join_candidates_over_ranks(const ReplicaTeam& team, Candidates& out) {
+  std::vector<int> mine = {static_cast<int>(out.node_face.size()),
+                           static_cast<int>(out.edge_edge.size())};
+  for (const NodeFaceCandidate& c : out.node_face) mine.insert(mine.end(), {c.node, c.face});
+  for (const EdgeEdgeCandidate& c : out.edge_edge) mine.insert(mine.end(), {c.edge_a, c.edge_b});
+  const std::vector<int> all = team.join_over_ranks(mine);
+  out.node_face.clear();
+  out.edge_edge.clear();
+  for (size_t k = 0; k < all.size();) {
+    const auto n_nf = static_cast<size_t>(all[k]), n_ee = static_cast<size_t>(all[k + 1]);
+    k += 2;
+    for (size_t j = 0; j < n_nf; ++j, k += 2) out.node_face.push_back({all[k], all[k + 1]});
+    for (size_t j = 0; j < n_ee; ++j, k += 2) out.edge_edge.push_back({all[k], all[k + 1]});
+  }
+}
+
 }  // namespace
 
 bool SweptBoxHash::cells_of(const Box& b, CellRange& r) const {
@@ -152,7 +172,7 @@ void SweptBoxHash::choose_grid(const FeatureBoxes& boxes) {
 }
 
 void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact,
-                        Candidates& out, const ChunkedLoops& loops) {
+                        Candidates& out, const ChunkedLoops& loops, const ReplicaTeam* team) {
   out.node_face.clear();
   out.edge_edge.clear();
   stats_ = {};
@@ -167,14 +187,17 @@ void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, boo
   build(face_, faces_);
   build(edge_, edges_);
   // One loop over the queries: the nodes (against the faces), then the edges (against the edges).
-  const size_t n_nodes = f.nodes.size(), n = n_nodes + f.edges.size();
+  const size_t n_nodes = f.nodes.size();
+  const ItemShare share = share_of(team, n_nodes + f.edges.size());
+  const size_t n = share.end - share.begin;
   const int chunks = loops.chunks(n, ChunkedLoops::kHeavyItem);
   scratch_.resize(std::max(scratch_.size(), static_cast<size_t>(chunks)));
   node_face_part_.reset(chunks);
   edge_edge_part_.reset(chunks);
   loops.run(
       n,
-      [&](size_t begin, size_t end, int chunk) {
+      [&](size_t first, size_t last, int chunk) {
+        const size_t begin = share.begin + first, end = share.begin + last;
         QueryScratch& scratch = scratch_[static_cast<size_t>(chunk)];
         scratch.stats = {};
         if (begin < n_nodes)
@@ -187,6 +210,7 @@ void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, boo
       ChunkedLoops::kHeavyItem);
   node_face_part_.append_to(out.node_face);
   edge_edge_part_.append_to(out.edge_edge);
+  if (team) join_candidates_over_ranks(*team, out);
   for (int c = 0; c < chunks; ++c) {  // integer counters: the sum does not depend on the order
     const SearchStats& s = scratch_[static_cast<size_t>(c)].stats;
     stats_.cell_visits += s.cell_visits;

@@ -24,6 +24,7 @@
 #include "engine/contact/dcr/contact_surface.hpp"
 #include "engine/contact/dcr/swept_boxes.hpp"
 #include "engine/contact/dcr/thread_chunks.hpp"
+#include "engine/contact/replica_team.hpp"
 
 namespace ccm::dcr {
 
@@ -63,9 +64,11 @@ class SweptBoxHash {
   // the result depends only on the input. Buffers are reused (no allocation after warm-up).
   // The queries (one per node, one per edge) may be shared among threads by `loops`: each chunk
   // of queries lists its pairs in query order and the chunks are joined in order, so the list
-  // is the same for any thread count; the table is built on the calling thread.
+  // is the same for any thread count; the table is built on the calling thread. With a team
+  // (replica_team.hpp) each rank runs its share of the queries and the ranks join their lists:
+  // the same list again; the counters of stats() are then this rank's share.
   void find(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact, Candidates& out,
-            const ChunkedLoops& loops = serial_loops());
+            const ChunkedLoops& loops = serial_loops(), const ReplicaTeam* team = nullptr);
 
   const SearchStats& stats() const { return stats_; }
 
