@@ -307,17 +307,20 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
   threads = std::max(1, threads);
   const ElementSchedule& schedule = elements.schedule;
   std::vector<SlabTotals> totals(schedule.slabs.size());
-  update_nodal_pressures(elements, xp, threads);  // nodal_pressure.hpp; none: nothing
-  // The slabs of one phase share no node; the barrier at the end of each `omp for` keeps the
-  // phases in order (element_schedule.hpp).
+  // One parallel region for the whole evaluation: the nodal passes of the nodal-pressure blocks
+  // (nodal_pressure.hpp; none: nothing), then the slabs. The slabs of one phase share no node;
+  // the barrier at the end of each `omp for` keeps the phases in order (element_schedule.hpp).
 #pragma omp parallel num_threads(threads) if (threads > 1)
-  for (const std::vector<int>& phase : schedule.phases) {
+  {
+    update_nodal_pressures(elements, xp);
+    for (const std::vector<int>& phase : schedule.phases) {
 #pragma omp for schedule(dynamic, 1)
-    for (size_t k = 0; k < phase.size(); ++k) {
-      const auto s = static_cast<size_t>(phase[k]);
-      const Slab& slab = schedule.slabs[s];
-      totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp, fp,
-                           with_energy);
+      for (size_t k = 0; k < phase.size(); ++k) {
+        const auto s = static_cast<size_t>(phase[k]);
+        const Slab& slab = schedule.slabs[s];
+        totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp,
+                             fp, with_energy);
+      }
     }
   }
   // Fixed-order combination: slab order, whatever thread ran which slab.

@@ -54,8 +54,12 @@ CCM_NP_INLINE Lanes det_of(const Lanes (&e)[3][3], const Lanes (&n)[3][3]) {
 }
 
 // Pass 1 for one slab: V_n += V_e / 4 at the four nodes of each element (eq. NP.2), lane by
-// lane, nodes 0..3: the fixed order every thread count shares.
-void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedVec3* x, double* V) {
+// lane, nodes 0..3: the fixed order every thread count shares. V_n is summed in the fourth slot
+// of the node's row (rows[n].v[3]): 32 bytes per node as the forces have, so that two threads
+// scattering into the nodes of two slabs of one phase seldom write one cache line (with V_n
+// packed 8 to a line they did, on most lines, and pass 1 scaled poorly on two threads).
+void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedVec3* x,
+                          PaddedVec3* rows) {
   const int end = slab.first_pack + slab.n_packs;
   for (int i = slab.first_pack; i < end; ++i) {
     const NeoHookeanPack& p = b.neo_hookean_packs[static_cast<size_t>(i)];
@@ -65,27 +69,34 @@ void scatter_slab_volumes(const ElementBlock& b, const Slab& slab, const PaddedV
     face_normals(e, n);
     const Lanes quarter_volume = det_of(e, n) * (1.0 / 24.0);  // det(Ds) / 6 / 4
     for (int l = 0; l < lanes; ++l)
-      for (int a = 0; a < 4; ++a) V[p.node[a][l]] += quarter_volume[l];
+      for (int a = 0; a < 4; ++a) rows[p.node[a][l]].v[3] += quarter_volume[l];
   }
 }
 
-// Pass 2 for nodes [first, first + count) of a block, kLanes at a time: J_n = V_n / V0_n,
-// p_n = U'(J_n) = lambda ln(J_n) / J_n (eq. NP.3), stored with the node's position as
-// (x, y, z, p_n); returns the largest |ln J_n| (eq. NP.6). A node with J_n <= 0 (only next to an
-// inverted element, which the element pass reports) gets p_n = 0.
+// Pass 2 for nodes [first, first + count) of a block, kLanes at a time: J_n = V_n / V0_n with
+// V_n from the fourth slot of the row (pass 1), kept in d.V for the energy; p_n = U'(J_n) =
+// lambda ln(J_n) / J_n (eq. NP.3), stored with the node's position as the row (x, y, z, p_n);
+// returns the largest |ln J_n| (eq. NP.6). A node with J_n <= 0 (only next to an inverted
+// element, which the element pass reports) gets p_n = 0.
 double nodal_pressures(const NodalPressureData& d, const PaddedVec3* x, double lambda, int first,
                        int count) {
+  PaddedVec3* rows = d.position_pressure.data();
+  const int lanes = std::min(count, kLanes);
   Lanes J{};
   for (int l = 0; l < kLanes; ++l) {
     const auto n = static_cast<size_t>(first + std::min(l, count - 1));
-    J[l] = d.V0[n] > 0.0 ? d.V[n] / d.V0[n] : 1.0;  // V0_n = 0: a node of no element
+    J[l] = d.V0[n] > 0.0 ? rows[n].v[3] / d.V0[n] : 1.0;  // V0_n = 0: a node of no element
+  }
+  for (int l = 0; l < lanes; ++l) {
+    const auto n = static_cast<size_t>(first + l);
+    d.V[n] = rows[n].v[3];
   }
   const Lanes log_J = vector_log(J > 0.0 ? J : np_broadcast(1.0));
   const Lanes p = lambda * log_J / J;
   double max_abs_log_J = 0.0;
-  for (int l = 0; l < std::min(count, kLanes); ++l) {
+  for (int l = 0; l < lanes; ++l) {
     const auto n = static_cast<size_t>(first + l);
-    d.position_pressure[n] = {{x[n].v[0], x[n].v[1], x[n].v[2], p[l]}};
+    rows[n] = {{x[n].v[0], x[n].v[1], x[n].v[2], p[l]}};
     max_abs_log_J = std::max(max_abs_log_J, std::abs(log_J[l]));
   }
   return max_abs_log_J;
@@ -237,45 +248,45 @@ void prepare_nodal_pressure(ElementSet& es, const ModelMesh& mesh) {
   }
 }
 
-void update_nodal_pressures(const ElementSet& es, const PaddedVec3* x, int threads) {
+void update_nodal_pressures(const ElementSet& es, const PaddedVec3* x) {
   if (es.nodal.empty()) return;
   const NodalPressureData& d = es.nodal;
-  double* V = d.V.data();
+  PaddedVec3* rows = d.position_pressure.data();
   const ElementSchedule& schedule = es.schedule;
+#pragma omp single nowait
   std::fill(d.max_abs_log_J.begin(), d.max_abs_log_J.end(), 0.0);
-#pragma omp parallel num_threads(threads) if (threads > 1)
-  {
-    for (const ElementBlock& b : es.blocks) {
-      if (!is_nodal_pressure(b)) continue;
+  for (const ElementBlock& b : es.blocks) {
+    if (!is_nodal_pressure(b)) continue;
 #pragma omp for schedule(static) nowait
-      for (int n = b.first_node; n < b.first_node + b.n_nodes; ++n) V[n] = 0.0;
-    }
+    for (int n = b.first_node; n < b.first_node + b.n_nodes; ++n) rows[n].v[3] = 0.0;
+  }
 #pragma omp barrier
-    // Pass 1 in the phases of the force loop: the slabs of one phase share no node.
-    for (const std::vector<int>& phase : schedule.phases) {
+  // Pass 1 in the phases of the force loop: the slabs of one phase share no node.
+  for (const std::vector<int>& phase : schedule.phases) {
 #pragma omp for schedule(dynamic, 1)
-      for (size_t k = 0; k < phase.size(); ++k) {
-        const Slab& slab = schedule.slabs[static_cast<size_t>(phase[k])];
-        const ElementBlock& b = es.blocks[static_cast<size_t>(slab.block)];
-        if (is_nodal_pressure(b)) scatter_slab_volumes(b, slab, x, V);
-      }
-    }
-    // Pass 2: the blocks' node ranges are disjoint, so no barrier between them; a maximum is
-    // exact, so the order in which the threads' maxima combine does not matter.
-    for (size_t k = 0; k < es.blocks.size(); ++k) {
-      const ElementBlock& b = es.blocks[k];
-      if (!is_nodal_pressure(b)) continue;
-      const int chunks = (b.n_nodes + kLanes - 1) / kLanes;
-      double thread_max = 0.0;
-#pragma omp for schedule(static) nowait
-      for (int c = 0; c < chunks; ++c)
-        thread_max =
-            std::max(thread_max, nodal_pressures(d, x, b.lame.lambda, b.first_node + c * kLanes,
-                                                 b.n_nodes - c * kLanes));
-#pragma omp critical(ccm_nodal_pressure_max)
-      d.max_abs_log_J[k] = std::max(d.max_abs_log_J[k], thread_max);
+    for (size_t k = 0; k < phase.size(); ++k) {
+      const Slab& slab = schedule.slabs[static_cast<size_t>(phase[k])];
+      const ElementBlock& b = es.blocks[static_cast<size_t>(slab.block)];
+      if (is_nodal_pressure(b)) scatter_slab_volumes(b, slab, x, rows);
     }
   }
+  // Pass 2: the blocks' node ranges are disjoint, so no barrier between them; a maximum is
+  // exact, so the order in which the threads' maxima combine does not matter.
+  for (size_t k = 0; k < es.blocks.size(); ++k) {
+    const ElementBlock& b = es.blocks[k];
+    if (!is_nodal_pressure(b)) continue;
+    const int chunks = (b.n_nodes + kLanes - 1) / kLanes;
+    double thread_max = 0.0;
+#pragma omp for schedule(static) nowait
+    for (int c = 0; c < chunks; ++c)
+      thread_max = std::max(
+          thread_max,
+          nodal_pressures(d, x, b.lame.lambda, b.first_node + c * kLanes, b.n_nodes - c * kLanes));
+#pragma omp critical(ccm_nodal_pressure_max)
+    d.max_abs_log_J[k] = std::max(d.max_abs_log_J[k], thread_max);
+  }
+  // Pass 3 reads every row and maximum.
+#pragma omp barrier
 }
 
 SlabTotals run_nodal_pressure_slab(const ElementSet& es, const ElementBlock& block,

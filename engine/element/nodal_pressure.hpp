@@ -8,7 +8,7 @@
 //   1. element volumes scattered to the nodes (the slab/phase schedule: fixed order),
 //   2. nodal pressures p_n = U'(J_n) (a node loop),
 //   3. element forces with the element's mean nodal pressure (run_nodal_pressure_slab).
-// add_internal_forces (internal_force.hpp) calls them for the blocks of this element.
+// add_internal_forces (internal_force.hpp) runs all three in its one parallel region.
 #pragma once
 
 #include <span>
@@ -25,9 +25,11 @@ namespace ccm {
 void prepare_nodal_pressure(ElementSet& elements, const ModelMesh& mesh);
 
 // Passes 1 and 2: V_n, then the rows (x, y, z, p_n) and each block's largest |ln J_n| into
-// elements.nodal, on up to `threads` threads (bitwise the same for any count). Does nothing when
-// no block uses the element.
-void update_nodal_pressures(const ElementSet& elements, const PaddedVec3* x, int threads);
+// elements.nodal (bitwise the same for any thread count). Called by every thread of the force
+// loop's parallel region (its loops are orphaned `omp for`s; outside a region, one thread runs
+// them all), so the nodal passes add no fork-join of their own; ends with a barrier, after which
+// pass 3 may read every row. Does nothing when no block uses the element.
+void update_nodal_pressures(const ElementSet& elements, const PaddedVec3* x);
 
 // Pass 3 for one slab of a nodal-pressure block: adds the forces into f and reports the slab as
 // the plain kernel does; energy (with_energy) is the elements' part sum_e V0_e W_e only. Reads the

@@ -16,7 +16,8 @@ struct NodalPressureData {
   // is run by one run at a time, as every caller does): the current nodal volume V_n, each node's
   // current position with its pressure p_n (eq. NP.2-NP.3) in the fourth slot (x, y, z, p_n), so
   // the element pass loads both in one move, and per block the largest |ln J_n| of its nodes,
-  // which sets the stable step (eq. NP.6).
+  // which sets the stable step (eq. NP.6). While the volumes are summed (pass 1) the fourth slot
+  // holds the partial V_n: one node per 32 bytes, as the forces, so threads seldom share a line.
   mutable std::vector<double> V;
   mutable PaddedNodes position_pressure;
   mutable std::vector<double> max_abs_log_J;
