@@ -97,18 +97,20 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
 template <typename Pack, typename Unpack>
 void ReplicatedContact::allgather(const GatherPlan& plan, int width, Pack pack,
                                   Unpack unpack) const {
-  ScopedTimer timer(times_.communication);
   const auto w = static_cast<size_t>(width);
   send_.resize(w * plan.owned_local.size());
   receive_.resize(w * plan.global.size());
   for (size_t k = 0; k < plan.owned_local.size(); ++k)
     pack(static_cast<size_t>(plan.owned_local[k]), send_.data() + w * k);
-  std::vector<int> counts(plan.counts), displs(plan.displs);
-  for (int& c : counts) c *= width;
-  for (int& d : displs) d *= width;
-  ++times_.collectives;
-  MPI_Allgatherv(send_.data(), static_cast<int>(send_.size()), MPI_DOUBLE, receive_.data(),
-                 counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  {
+    ScopedTimer timer(times_.communication);
+    std::vector<int> counts(plan.counts), displs(plan.displs);
+    for (int& c : counts) c *= width;
+    for (int& d : displs) d *= width;
+    ++times_.collectives;
+    MPI_Allgatherv(send_.data(), static_cast<int>(send_.size()), MPI_DOUBLE, receive_.data(),
+                   counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  }
   for (size_t k = 0; k < plan.global.size(); ++k)
     unpack(static_cast<size_t>(plan.global[k]), receive_.data() + w * k);
 }
@@ -151,14 +153,25 @@ void ReplicatedContact::gather_state(const State& local) const {
       [&](size_t g, const double* p) { unpack_state(p, g, view_); });
 }
 
-void ReplicatedContact::gather_accelerations(const State& local) const {
+// The region's a_{n+1} from their owners. When the predictor is still due, it is replayed in the
+// same pass, node by node before the node's new acceleration is written (catch_up's arithmetic).
+void ReplicatedContact::gather_accelerations(const State& local, double dt) const {
   ++times_.region_gathers;
+  const bool predict = predict_due_;
+  predict_due_ = false;
+  const double half_dt = 0.5 * dt;
   allgather(
       region_, kAccelerationWidth,
       [&](size_t l, double* p) {
         for (int c = 0; c < 3; ++c) p[c] = local.a[l][c];
       },
-      [&](size_t g, const double* p) { view_.a[g] = Vec3(p[0], p[1], p[2]); });
+      [&](size_t g, const double* p) {
+        if (predict) {
+          view_.v[g] += half_dt * view_.a[g];
+          view_.x[g] += dt * view_.v[g];
+        }
+        view_.a[g] = Vec3(p[0], p[1], p[2]);
+      });
 }
 
 // x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28), on the region,
@@ -184,6 +197,22 @@ void ReplicatedContact::scatter(const GatherPlan& plan, State& local) const {
     local.v[static_cast<size_t>(l)] = view_.v[g];
     local.a[static_cast<size_t>(l)] = view_.a[g];
   }
+}
+
+// scatter(region_) and finish_step() in one pass over the region: each node is copied to its
+// local copy, then finished in the view.
+void ReplicatedContact::scatter_and_finish(State& local, double dt) {
+  const double half_dt = 0.5 * dt;
+  for (int n : region_.global) {
+    const auto g = static_cast<size_t>(n);
+    if (const int l = local_of_[g]; l >= 0) {
+      local.x[static_cast<size_t>(l)] = view_.x[g];
+      local.v[static_cast<size_t>(l)] = view_.v[g];
+      local.a[static_cast<size_t>(l)] = view_.a[g];
+    }
+    finish_node(g, half_dt);
+  }
+  finished_ = true;
 }
 
 // Called first in a step, with the state at t_n (the view holds it, but at the first step).
@@ -232,13 +261,14 @@ void ReplicatedContact::add_forces(State& state) {
 void ReplicatedContact::correct(State& state, double dt) {
   if (!phases_.corrects) return;
   view_.t = state.t;
-  catch_up(dt);
-  gather_accelerations(state);
   local_ = &state;
   rest_current_ = false;
-  contact_time([&] { inner_.correct(view_, dt); });
-  scatter(region_, state);
-  if (rest_current_) scatter(rest_, state);
+  contact_time([&] {
+    gather_accelerations(state, dt);
+    inner_.correct(view_, dt);
+    if (rest_current_) scatter(rest_, state);
+    scatter_and_finish(state, dt);
+  });
   local_ = nullptr;
 }
 
@@ -254,17 +284,18 @@ void ReplicatedContact::make_whole_bodies_current() {
 // the fixed nodes, then v_{n+1} = v* + dt/2 a_{n+1}, eq. 2.31; a partitioned run has no kinematic
 // constraints), done on the region of the view with the same arithmetic: the view then holds the
 // state at t_{n+1} bit for bit.
+void ReplicatedContact::finish_node(size_t g, double half_dt) {
+  if (fixed_[g]) {
+    view_.x[g] = view_.X[g];
+    view_.v[g].setZero();
+    view_.a[g].setZero();
+  }
+  view_.v[g] += half_dt * view_.a[g];
+}
+
 void ReplicatedContact::finish_step(double dt) {
   const double half_dt = 0.5 * dt;
-  for (int n : region_.global) {
-    const auto g = static_cast<size_t>(n);
-    if (fixed_[g]) {
-      view_.x[g] = view_.X[g];
-      view_.v[g].setZero();
-      view_.a[g].setZero();
-    }
-    view_.v[g] += half_dt * view_.a[g];
-  }
+  for (int n : region_.global) finish_node(static_cast<size_t>(n), half_dt);
 }
 
 // The state at t_{n+1}, for end_step and the next step's limit and begin_step. A penalty model's
@@ -272,9 +303,14 @@ void ReplicatedContact::finish_step(double dt) {
 // constraint model's were gathered for its correction.
 void ReplicatedContact::end_step(const State& state, double dt) {
   view_.t = state.t;
-  catch_up(dt);
-  if (!phases_.corrects) gather_accelerations(state);
-  finish_step(dt);
+  if (!finished_) {  // a constraint model's correct() has finished the view already
+    contact_time([&] {
+      catch_up(dt);
+      gather_accelerations(state, dt);
+      finish_step(dt);
+    });
+  }
+  finished_ = false;
   contact_time([&] { inner_.end_step(view_, dt); });
   ledger_ = inner_.ledger();
 }

@@ -69,11 +69,13 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   // unpack(global id, in) on every node.
   template <typename Pack, typename Unpack>
   void allgather(const GatherPlan& plan, int width, Pack pack, Unpack unpack) const;
-  void gather_state(const State& local) const;               // x, v, a and m of the region
-  void gather_accelerations(const State& local) const;       // a of the region
-  void catch_up(double dt) const;                            // replays the predictor when due
-  void scatter(const GatherPlan& plan, State& local) const;  // x, v, a into the local copies
+  void gather_state(const State& local) const;                     // x, v, a and m of the region
+  void gather_accelerations(const State& local, double dt) const;  // a of the region
+  void catch_up(double dt) const;                                  // replays the predictor when due
+  void scatter(const GatherPlan& plan, State& local) const;        // x, v, a into the local copies
   void finish_step(double dt);  // the integrator's fixed nodes and velocity correction
+  void finish_node(size_t g, double half_dt);
+  void scatter_and_finish(State& local, double dt);
   // Runs a hook of the inner model in the contact's time; the team's communication within it
   // counts as communication.
   template <typename Hook>
@@ -93,6 +95,7 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   mutable bool predict_due_ = false;  // the integrator has predicted, the view not yet
   mutable double dt_ = 0.0;           // of the step under way
   bool rest_current_ = false;         // the rest was gathered in this correct()
+  bool finished_ = false;             // correct() has finished the step in the view
 };
 
 }  // namespace ccm::distributed
