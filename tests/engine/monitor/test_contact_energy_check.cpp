@@ -19,7 +19,9 @@ class Accelerator : public ContactModel {
   void begin_step(const State& /*s*/, double /*dt*/) override {}
   void add_forces(State& /*s*/) override {}
   void end_step(const State& /*s*/, double /*dt*/) override {
-    ledger_ = {.work = work_, .injected_energy = counts_ ? std::max(0.0, work_) : 0.0};
+    ledger_ = {};
+    ledger_.work = work_;
+    ledger_.injected_energy = counts_ ? std::max(0.0, work_) : 0.0;
   }
   ContactStepBound step_bound(const State& /*s*/) const override { return {}; }
   void correct(State& s, double dt) override {
