@@ -77,7 +77,8 @@ RunSummary run_partitioned(const Model& global, const RunOptions& options,
   const Subdomain d = make_subdomain(global, part, size, rank);
   PhaseTimes times;
   HaloCoupling coupling(d, owners, global.mesh, rank == 0 ? options.history : nullptr,
-                        rank == 0 ? options.on_sample : SampleFn{}, times);
+                        rank == 0 ? options.on_sample : SampleFn{},
+                        options.history != nullptr || static_cast<bool>(options.on_sample), times);
   std::unique_ptr<ReplicatedContact> replicated;
   if (options.contact)
     replicated =

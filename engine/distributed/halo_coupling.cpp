@@ -21,8 +21,12 @@ int communicator_size() {
 
 HaloCoupling::HaloCoupling(const Subdomain& subdomain, const std::vector<int>& owners,
                            const ModelMesh& global_mesh, HistoryRecorder* history,
-                           SampleFn on_sample, PhaseTimes& times)
-    : d_(subdomain), history_(history), on_sample_(std::move(on_sample)), times_(times) {
+                           SampleFn on_sample, bool samples_wanted, PhaseTimes& times)
+    : d_(subdomain),
+      history_(history),
+      on_sample_(std::move(on_sample)),
+      times_(times),
+      samples_wanted_(samples_wanted) {
   if (communicator_size() != d_.n_ranks)
     throw std::logic_error("HaloCoupling: the subdomain was made for another number of ranks");
   send_.resize(d_.neighbours.size());
@@ -147,6 +151,7 @@ void HaloCoupling::sample(const State& local, std::span<const double> body_inter
     times_ = PhaseTimes{};
     first_sample_ = false;
   }
+  if (!samples_wanted_) return;
   std::vector<double> mine(kSampleWidth * static_cast<size_t>(d_.owned_nodes));
   for (size_t l = 0; l < static_cast<size_t>(d_.owned_nodes); ++l) {
     double* p = mine.data() + kSampleWidth * l;

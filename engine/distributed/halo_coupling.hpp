@@ -15,10 +15,12 @@ namespace ccm::distributed {
 class HaloCoupling final : public DomainCoupling {
  public:
   // owners: the owner rank of every global node. history / on_sample: rank 0's recorders (may be
-  // null/empty), fed with the global state.
+  // null/empty), fed with the global state. samples_wanted: whether rank 0 has any recorder, the
+  // same on every rank; without one, a sample gathers nothing (the serial run's sample does
+  // nothing then either).
   HaloCoupling(const Subdomain& subdomain, const std::vector<int>& owners,
                const ModelMesh& global_mesh, HistoryRecorder* history, SampleFn on_sample,
-               PhaseTimes& times);
+               bool samples_wanted, PhaseTimes& times);
 
   int owned_nodes() const override { return d_.owned_nodes; }
   void assemble(std::span<double> per_node, int width) override;
@@ -38,6 +40,7 @@ class HaloCoupling final : public DomainCoupling {
   std::vector<int> gather_counts_, gather_displs_;  // owned nodes per rank (rank 0's gather)
   std::vector<int> gathered_global_;  // rank order of the gathered owned nodes: global ids
   State global_;                      // rank 0: the gathered state
+  bool samples_wanted_ = true;
   bool first_sample_ = true;
 };
 
