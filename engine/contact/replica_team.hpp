@@ -7,6 +7,8 @@
 //  - whole bodies on demand: DCR's body-pair restitution (docs/contact-restitution.md) takes the
 //    rigid motion of whole bodies when an episode begins and changes it when it ends; the nodes
 //    beyond the region are gathered only in those steps, never every step;
+//  - listed nodes on demand: DCR's projection update (projection_update.hpp) re-evaluates the
+//    elements around the nodes it moved, whose other nodes lie inside the bodies;
 //  - a split of the loops whose result is a maximum (or a minimum, as the maximum of its
 //    negative) or a list in item order: each rank takes its share of the items, and the ranks
 //    take the maximum of their results, which is exact, or join their lists in rank order, which
@@ -26,6 +28,9 @@ class ReplicaTeam {
   // holds x_{n+1}, v*, a_{n+1} and its mass, and the model's changes to them are kept. Every rank
   // calls it at the same point (the replicated model decides alike).
   virtual void make_whole_bodies_current() = 0;
+  // The same for the listed nodes only (global ids, any order, repeats allowed). Every rank calls
+  // it at the same point with the same list.
+  virtual void make_nodes_current(std::span<const int> nodes) = 0;
   virtual int rank() const = 0;
   virtual int size() const = 0;
   // values[i] = the maximum of values[i] over the ranks, on every rank.

@@ -46,18 +46,12 @@ void unpack_state(const double* p, size_t g, State& s) {
 
 std::vector<int> contact_region(const ModelMesh& mesh) {
   std::vector<int> region;
-  std::vector<char> on_boundary(mesh.X.size(), 0), in_region(mesh.X.size(), 0);
+  std::vector<char> on_boundary(mesh.X.size(), 0);
   for (const Body& b : mesh.bodies)
     for (const Triangle& t : b.boundary)
       for (int n : t) on_boundary[static_cast<size_t>(n)] = 1;
-  for (const Tet& t : mesh.tets) {
-    const bool touches =
-        std::any_of(t.begin(), t.end(), [&](int n) { return on_boundary[static_cast<size_t>(n)]; });
-    if (touches)
-      for (int n : t) in_region[static_cast<size_t>(n)] = 1;
-  }
-  for (size_t n = 0; n < in_region.size(); ++n)
-    if (in_region[n] || on_boundary[n]) region.push_back(static_cast<int>(n));
+  for (size_t n = 0; n < on_boundary.size(); ++n)
+    if (on_boundary[n]) region.push_back(static_cast<int>(n));
   return region;
 }
 
@@ -72,12 +66,14 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
       rank_(subdomain.rank),
       size_(subdomain.n_ranks),
       local_of_(global_mesh.X.size(), -1),
+      owner_(owners),
+      current_(global_mesh.X.size(), 0),
       fixed_(global_mesh.X.size(), 0) {
   for (int n : fixed_nodes) fixed_[static_cast<size_t>(n)] = 1;
   for (size_t l = 0; l < subdomain.global_node.size(); ++l)
     local_of_[static_cast<size_t>(subdomain.global_node[l])] = static_cast<int>(l);
   std::vector<char> in_region(global_mesh.X.size(), 0);
-  for (int g : region) in_region[static_cast<size_t>(g)] = 1;
+  for (int g : region) in_region[static_cast<size_t>(g)] = current_[static_cast<size_t>(g)] = 1;
   std::vector<int> rest;
   for (size_t g = 0; g < in_region.size(); ++g)
     if (!in_region[g]) rest.push_back(static_cast<int>(g));
@@ -146,11 +142,14 @@ std::vector<int> ReplicatedContact::join_over_ranks(std::span<const int> mine) c
   return all;
 }
 
+// Once, at the start: every node, so that the model knows every mass (it takes them at its first
+// step, DCR's projection update included, which reaches into the bodies).
 void ReplicatedContact::gather_state(const State& local) const {
   ++times_.region_gathers;
-  allgather(
-      region_, kStateWidth, [&](size_t l, double* p) { pack_state(local, l, p); },
-      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
+  for (const GatherPlan* plan : {&region_, &rest_})
+    allgather(
+        *plan, kStateWidth, [&](size_t l, double* p) { pack_state(local, l, p); },
+        [&](size_t g, const double* p) { unpack_state(p, g, view_); });
 }
 
 // The region's a_{n+1} from their owners. When the predictor is still due, it is replayed in the
@@ -188,8 +187,8 @@ void ReplicatedContact::catch_up(double dt) const {
   }
 }
 
-void ReplicatedContact::scatter(const GatherPlan& plan, State& local) const {
-  for (int n : plan.global) {
+void ReplicatedContact::scatter(std::span<const int> nodes, State& local) const {
+  for (int n : nodes) {
     const auto g = static_cast<size_t>(n);
     const int l = local_of_[g];
     if (l < 0) continue;
@@ -266,18 +265,56 @@ void ReplicatedContact::correct(State& state, double dt) {
   contact_time([&] {
     gather_accelerations(state, dt);
     inner_.correct(view_, dt);
-    if (rest_current_) scatter(rest_, state);
+    if (rest_current_) scatter(rest_.global, state);
+    scatter(fetched_, state);
     scatter_and_finish(state, dt);
   });
+  for (int g : fetched_) current_[static_cast<size_t>(g)] = 0;
+  fetched_.clear();
   local_ = nullptr;
 }
 
 void ReplicatedContact::make_whole_bodies_current() {
   if (rest_current_ || local_ == nullptr) return;
-  allgather(
+  allgather(  // a node fetched before keeps what the model did to it since
       rest_, kStateWidth, [&](size_t l, double* p) { pack_state(*local_, l, p); },
-      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
+      [&](size_t g, const double* p) {
+        if (!current_[g]) unpack_state(p, g, view_);
+      });
   rest_current_ = true;
+}
+
+// Each listed node that is not current yet comes from its owner: rank q sends the ones it owns,
+// in list order, so every rank knows where each node's values are in the joined buffer.
+void ReplicatedContact::make_nodes_current(std::span<const int> nodes) {
+  if (rest_current_ || local_ == nullptr) return;
+  const size_t first = fetched_.size();
+  for (int n : nodes)
+    if (!current_[static_cast<size_t>(n)]) {
+      current_[static_cast<size_t>(n)] = 1;
+      fetched_.push_back(n);
+    }
+  const std::span<const int> wanted(fetched_.data() + first, fetched_.size() - first);
+  if (wanted.empty()) return;  // the same on every rank: the lists and flags are replicated
+  GatherPlan plan;
+  plan.counts.assign(static_cast<size_t>(size_), 0);
+  for (int g : wanted) {
+    const int q = owner_[static_cast<size_t>(g)];
+    ++plan.counts[static_cast<size_t>(q)];
+    if (q == rank_) plan.owned_local.push_back(local_of_[static_cast<size_t>(g)]);
+  }
+  plan.displs.assign(static_cast<size_t>(size_), 0);
+  for (size_t q = 1; q < plan.displs.size(); ++q)
+    plan.displs[q] = plan.displs[q - 1] + plan.counts[q - 1];
+  plan.global.resize(wanted.size());  // the wanted nodes in the joined (rank) order
+  std::vector<int> next(plan.displs);
+  for (int g : wanted) {
+    const auto q = static_cast<size_t>(owner_[static_cast<size_t>(g)]);
+    plan.global[static_cast<size_t>(next[q]++)] = g;
+  }
+  allgather(
+      plan, kStateWidth, [&](size_t l, double* p) { pack_state(*local_, l, p); },
+      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
 }
 
 // What the integrator does after the contact correction (engine/solver/explicit_integrator.cpp:

@@ -28,8 +28,9 @@ struct ContactPhases {
   bool corrects = false;
 };
 
-// The contact region of a mesh: every boundary node and every node of an element touching one
-// (a DCR projection re-evaluates those elements). Sorted global ids.
+// The contact region of a mesh: every boundary node, the nodes a contact model reads every step
+// (the other nodes of the elements a DCR projection re-evaluates are fetched when it does).
+// Sorted global ids.
 std::vector<int> contact_region(const ModelMesh& mesh);
 
 // A set of nodes gathered from their owners onto every rank: this rank's part (local ids) and
@@ -57,6 +58,8 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   ContactStepBound step_bound(const State& state) const override;
   // The nodes beyond the region, from their owners, for the rest of this step's correct().
   void make_whole_bodies_current() override;
+  // The listed nodes beyond the region, from their owners, for the rest of this step's correct().
+  void make_nodes_current(std::span<const int> nodes) override;
   int rank() const override { return rank_; }
   int size() const override { return size_; }
   void max_over_ranks(std::span<double> values) const override;
@@ -69,10 +72,10 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   // unpack(global id, in) on every node.
   template <typename Pack, typename Unpack>
   void allgather(const GatherPlan& plan, int width, Pack pack, Unpack unpack) const;
-  void gather_state(const State& local) const;                     // x, v, a and m of the region
+  void gather_state(const State& local) const;                     // x, v, a and m of all nodes
   void gather_accelerations(const State& local, double dt) const;  // a of the region
   void catch_up(double dt) const;                                  // replays the predictor when due
-  void scatter(const GatherPlan& plan, State& local) const;        // x, v, a into the local copies
+  void scatter(std::span<const int> nodes, State& local) const;    // x, v, a into the local copies
   void finish_step(double dt);  // the integrator's fixed nodes and velocity correction
   void finish_node(size_t g, double half_dt);
   void scatter_and_finish(State& local, double dt);
@@ -87,6 +90,9 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   int rank_ = 0, size_ = 1;
   GatherPlan region_, rest_;      // the contact region; every other node
   std::vector<int> local_of_;     // per global node: its local id here, or -1
+  std::vector<int> owner_;        // per global node: its owner rank
+  std::vector<char> current_;     // per global node: in the region, or fetched in this correct()
+  std::vector<int> fetched_;      // the nodes make_nodes_current() fetched in this correct()
   std::vector<char> fixed_;       // per global node
   const State* local_ = nullptr;  // the local state of the correct() under way
   mutable std::vector<double> send_, receive_;

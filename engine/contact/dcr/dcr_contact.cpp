@@ -469,6 +469,8 @@ void DcrContact::enforce_positions(State& s, double dt) {
   moved_.resize(kept);
   x_start_.resize(kept);
   if (kept > 0) {
+    // A partitioned run's view holds the surfaces; the elements' other nodes come now.
+    if (team_) team_->make_nodes_current(projection_update_.element_nodes(moved_));
     const ProjectionUpdate::EnergyChange dE =
         projection_update_.apply(moved_, x_start_, s, inv_m_, dt);
     projection_stored_ = dE.stored;

@@ -77,6 +77,16 @@ double ProjectionUpdate::evaluate(const Element& e, const Vec3 (&x)[4], double s
   return e.reference.V0 * energy_density(e.model, F, e.lame);
 }
 
+std::vector<int> ProjectionUpdate::element_nodes(std::span<const int> moved) const {
+  std::vector<int> nodes;
+  for (int n : moved)
+    for (int j = around_.begin(n); j < around_.end(n); ++j) {
+      const Tet& t = elements_[static_cast<size_t>(around_.at(j))].nodes;
+      nodes.insert(nodes.end(), t.begin(), t.end());
+    }
+  return nodes;
+}
+
 ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> moved,
                                                        std::span<const Vec3> before, State& s,
                                                        std::span<const double> inv_m, double dt) {

@@ -49,6 +49,10 @@ class ProjectionUpdate {
   // returns dQ and dK for the step dt.
   EnergyChange apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
                      std::span<const double> inv_m, double dt);
+  // The nodes of the plain-tet elements apply() re-evaluates for `moved` (repeats possible): what
+  // it reads and writes besides the moved nodes. (A nodal-pressure body's update reaches one ring
+  // further; a partitioned run, the only user, refuses such bodies.)
+  std::vector<int> element_nodes(std::span<const int> moved) const;
 
  private:
   struct Element {
