@@ -10,18 +10,18 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "engine/distributed/distributed_run.hpp"
 #include "app/output_file.hpp"
 #include "app/partitioned_contact.hpp"
 #include "app/progress_line.hpp"
 #include "config/text_file.hpp"
+#include "engine/distributed/distributed_run.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
 #include "engine/solver/thread_count.hpp"
@@ -72,8 +72,10 @@ fs::path read_scene(const RunArgs& args, std::string& text) {
     text = read_config_text(args.scene);
     return args.scene;
   }
-  text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+  std::ostringstream all;  // (istreambuf_iterator here draws a GCC 12 -Wnull-dereference)
+  all << std::cin.rdbuf();
   if (std::cin.bad()) throw UsageError("cannot read the scene from stdin");
+  text = all.str();
   return kStdinSceneName;
 }
 
@@ -281,8 +283,9 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
   Prepared p;
   prepare(args, p);
   if (ranks.size() > 1 && !p.scene.output.fields.empty())
-    throw UsageError("field output (--fields, [output] fields) is not available in a run "
-                     "partitioned over MPI ranks: run it on one rank");
+    throw UsageError(
+        "field output (--fields, [output] fields) is not available in a run "
+        "partitioned over MPI ranks: run it on one rank");
   if (ranks.is_root()) {
     fs::create_directories(args.out);
     write_atomic(args.out / "scene.toml", p.text);
@@ -300,8 +303,10 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
       summary.verdict == Verdict::completed ? exit_code::completed : exit_code::unstable;
   if (!ranks.is_root()) return code;
   write_history_csv(args.out / "history.csv", history);
-  const RunRecord record{args,    p,    summary, partition, started, utc_timestamp(SystemClock::now()),
-                         code, fields.frames_written()};
+  const RunRecord record{args,    p,
+                         summary, partition,
+                         started, utc_timestamp(SystemClock::now()),
+                         code,    fields.frames_written()};
   write_atomic(args.out / "summary.toml", summary_toml(record));
   if (!args.quiet) print_summary_table(record);
   return code;

@@ -32,6 +32,13 @@ T largest(const std::vector<T>& v) {
   return v.empty() ? T{} : *std::max_element(v.begin(), v.end());
 }
 
+// "a,b,..." with 4 decimals: a quantity per rank.
+std::string per_rank(const std::vector<double>& v) {
+  std::string s;
+  for (size_t q = 0; q < v.size(); ++q) s += fmt::format("{}{:.4f}", q ? "," : "", v[q]);
+  return s;
+}
+
 void print_partitions(const Model& model, const std::vector<int>& contact_region,
                       const std::string& list) {
   std::istringstream in(list);
@@ -106,7 +113,9 @@ int main(int argc, char** argv) {
       "structure_s={:.4f} contact_s={:.4f} communication_s={:.4f} structure_cpu_s={:.4f} "
       "contact_cpu_s={:.4f} imbalance={:.4f} cut_faces={} halo_nodes_max={} neighbours_max={} "
       "contact_region={} messages_per_step={:.2f} doubles_per_step={:.1f} "
-      "collectives_per_step={:.2f} region_gathers_per_step={:.2f}\n",
+      "collectives_per_step={:.2f} region_gathers_per_step={:.2f} structure_by_rank={} "
+      "contact_by_rank={} halo_by_rank={} contact_communication_by_rank={} "
+      "communication_by_rank={}\n",
       r.ranks, s.n_elements, s.steps, to_string(s.verdict), s.step_wall_seconds, largest(structure),
       largest(r.contact_seconds), largest(r.communication_seconds), largest(structure_cpu),
       largest(r.contact_cpu_seconds), r.imbalance, r.cut_faces, largest(r.halo_nodes),
@@ -114,6 +123,8 @@ int main(int argc, char** argv) {
       static_cast<double>(largest(r.messages)) / steps,
       static_cast<double>(largest(r.message_doubles)) / steps,
       static_cast<double>(largest(r.collectives)) / steps,
-      static_cast<double>(r.region_gathers) / steps);
+      static_cast<double>(r.region_gathers) / steps, per_rank(structure),
+      per_rank(r.contact_seconds), per_rank(r.halo_seconds),
+      per_rank(r.contact_communication_seconds), per_rank(r.communication_seconds));
   return 0;
 }

@@ -50,6 +50,8 @@ void fill_report(const Subdomain& d, const std::vector<int>& part, const ModelMe
   r.step_seconds = gather_all(local.step_wall_seconds, MPI_DOUBLE);
   r.communication_seconds = gather_all(times.communication.wall, MPI_DOUBLE);
   r.contact_seconds = gather_all(times.contact.wall, MPI_DOUBLE);
+  r.halo_seconds = gather_all(times.halo.wall, MPI_DOUBLE);
+  r.contact_communication_seconds = gather_all(times.contact_communication.wall, MPI_DOUBLE);
   r.step_cpu_seconds = gather_all(local.step_cpu_seconds, MPI_DOUBLE);
   r.communication_cpu_seconds = gather_all(times.communication.cpu, MPI_DOUBLE);
   r.contact_cpu_seconds = gather_all(times.contact.cpu, MPI_DOUBLE);

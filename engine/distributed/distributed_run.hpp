@@ -34,6 +34,9 @@ struct PartitionReport {
   // same in thread CPU time.
   std::vector<double> step_seconds, communication_seconds, contact_seconds;
   std::vector<double> step_cpu_seconds, communication_cpu_seconds, contact_cpu_seconds;
+  // Per rank, parts of the communication's wall time: halo exchanges, the contact's gathers and
+  // joins.
+  std::vector<double> halo_seconds, contact_communication_seconds;
   std::vector<long> messages, message_doubles, collectives;  // per rank, whole run
   long region_gathers = 0;                                   // contact region gathers, whole run
 };

@@ -80,7 +80,7 @@ HaloCoupling::HaloCoupling(const Subdomain& subdomain, const std::vector<int>& o
 // f_i = sum over the ranks touching i, in ascending rank, of their partial sums: every rank
 // evaluates the same expression, so every copy of a node holds the same bits.
 void HaloCoupling::assemble(std::span<double> per_node, int width) {
-  ScopedTimer timer(times_.communication);
+  ScopedTimer timer(times_.communication), halo_timer(times_.halo);
   const auto w = static_cast<size_t>(width);
   std::vector<MPI_Request> requests;
   requests.reserve(2 * d_.neighbours.size());

@@ -18,6 +18,9 @@ struct Seconds {
 
 struct PhaseTimes {
   Seconds communication;  // includes the waiting for the peers' messages
+  // Of the communication: the halo exchanges, and the contact's gathers and joins (the rest are
+  // the reductions of the step, the energies and the samples).
+  Seconds halo, contact_communication;
   Seconds contact;
   long messages = 0;         // point-to-point messages sent by this rank
   long message_doubles = 0;  // doubles in them

@@ -99,7 +99,7 @@ void ReplicatedContact::allgather(const GatherPlan& plan, int width, Pack pack,
   for (size_t k = 0; k < plan.owned_local.size(); ++k)
     pack(static_cast<size_t>(plan.owned_local[k]), send_.data() + w * k);
   {
-    ScopedTimer timer(times_.communication);
+    ScopedTimer timer(times_.communication), contact_timer(times_.contact_communication);
     std::vector<int> counts(plan.counts), displs(plan.displs);
     for (int& c : counts) c *= width;
     for (int& d : displs) d *= width;
@@ -123,14 +123,14 @@ void ReplicatedContact::contact_time(Hook hook) const {
 }
 
 void ReplicatedContact::max_over_ranks(std::span<double> values) const {
-  ScopedTimer timer(times_.communication);
+  ScopedTimer timer(times_.communication), contact_timer(times_.contact_communication);
   ++times_.collectives;
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
                 MPI_COMM_WORLD);
 }
 
 std::vector<int> ReplicatedContact::join_over_ranks(std::span<const int> mine) const {
-  ScopedTimer timer(times_.communication);
+  ScopedTimer timer(times_.communication), contact_timer(times_.contact_communication);
   times_.collectives += 2;
   const int count = static_cast<int>(mine.size());
   std::vector<int> counts(static_cast<size_t>(size_)), displs(static_cast<size_t>(size_), 0);

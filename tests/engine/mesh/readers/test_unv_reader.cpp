@@ -1,6 +1,8 @@
 // The I-DEAS universal reader on files written by ElmerGrid's test suite and by Salome (through
 // unv2ccx's examples): counts, volumes and group surfaces against closed forms and the files'
 // own statements, then truncated and garbled copies.
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -54,7 +56,7 @@ TEST_CASE("unv and inp: Salome's one-tet file and unv2ccx's conversion of it agr
     CHECK(m->report.inverted_labels == std::vector<long>{1});
     // Groups N1..N4 (UNV 2467) / NSETs N1..N4 hold node k alone.
     for (int k = 1; k <= 4; ++k)
-      CHECK(m->mesh.named_node_sets.at("N" + std::to_string(k)) == std::vector<int>{k - 1});
+      CHECK(m->mesh.named_node_sets.at(fmt::format("N{}", k)) == std::vector<int>{k - 1});
   }
   CHECK(unv.mesh.nodes == inp.mesh.nodes);
   CHECK(unv.mesh.tets == inp.mesh.tets);
