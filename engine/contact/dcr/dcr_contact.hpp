@@ -34,6 +34,7 @@
 #include "engine/contact/dcr/contact_output.hpp"
 #include "engine/contact/dcr/contact_surface.hpp"
 #include "engine/contact/dcr/edge_orientation.hpp"
+#include "engine/contact/dcr/pair_distance_cache.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/contact/dcr/projection_update.hpp"
 #include "engine/contact/dcr/thread_chunks.hpp"
@@ -132,14 +133,19 @@ class DcrContact : public ContactModel, public HistorySource {
  private:
   void detect(const State& s);
   int test_candidates(const State& s, bool only_touched);
-  std::optional<Constraint> candidate_contact(const State& s, size_t k) const;
+  // cache: the pair distances kept over steps (null: test in full).
+  std::optional<Constraint> candidate_contact(const State& s, size_t k,
+                                              PairDistanceCache* cache) const;
   bool candidate_touched(size_t k) const;
   int redetect(const State& s);
   void remember_start(const State& s, size_t first);
   void enforce_positions(State& s, double dt);
-  std::optional<Constraint> node_face_contact(const State& s, int p, const Triangle& t) const;
+  // k: the candidate's index, for the cache (may be null).
+  std::optional<Constraint> node_face_contact(const State& s, int p, const Triangle& t, size_t k,
+                                              PairDistanceCache* cache) const;
   // edge_a, edge_b: indices into features_.edges.
-  std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b) const;
+  std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b, size_t k,
+                                              PairDistanceCache* cache) const;
   bool bodies_may_touch(const State& s) const;
   double approach_limit(const State& state) const;
   bool project_positions(State& s);
@@ -158,6 +164,7 @@ class DcrContact : public ContactModel, public HistorySource {
   EdgeOrientation edge_orientation_;  // the admissible side of edges that start in one plane
   BroadPhase broad_phase_;
   Candidates candidates_;
+  PairDistanceCache distances_;                // the candidates' start distances kept over steps
   std::vector<char> candidate_is_constraint_;  // per candidate (node-face, then edge-edge)
   ChunkLists<Constraint> found_;               // scratch: new constraints per chunk of candidates
   std::vector<double> inv_m_;                  // 1/m of every node; 0 for fixed nodes
