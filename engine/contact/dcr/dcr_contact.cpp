@@ -27,6 +27,11 @@ constexpr double kVelocityTolerance = 1e-6;
 // (pair_distance_cache.hpp): far above a resting contact's motion, far below an element.
 constexpr double kReanchorFraction = 0.1;
 
+// A pressed contact's velocity target aims the next predicted position at this x the kept
+// separation (make_row): above it, so that the predictor's rounding and the constraint's
+// curvature leave nothing for the projection; far below the proximity distance.
+constexpr double kRestingAim = 1.001;
+
 // Tolerance of the "projection inside the face" test of a persistent contact (barycentric).
 constexpr double kPersistentTolerance = 1e-6;
 
@@ -337,7 +342,7 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p, c
   const std::array<int, 4> nodes{p, t[0], t[1], t[2]};
   if (cache && cache->proves_apart(k, nodes, 1, proximity_)) return std::nullopt;
   const double d0 = point_triangle_distance(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]);
-  if (cache) cache->record(k, nodes, d0, face_slack(x0[t[0]], x0[t[1]], x0[t[2]]));
+  if (cache) cache->record(k, nodes, 1, d0, face_slack(x0[t[0]], x0[t[1]], x0[t[2]]));
   if (!node_face_may_touch_from(d0, x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
                                 x1[t[2]], proximity_))
     return std::nullopt;
@@ -368,7 +373,7 @@ std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge
   if (cache && cache->proves_apart(k, nodes, 2, 0.0)) return std::nullopt;
   const double d0 = segment_distance(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]);
   if (cache)
-    cache->record(k, nodes, d0, edge_pair_slack(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]));
+    cache->record(k, nodes, 2, d0, edge_pair_slack(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]));
   if (!edges_may_cross_from(d0, x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]],
                             x1[eb[0]], x1[eb[1]]))
     return std::nullopt;
@@ -534,11 +539,29 @@ void DcrContact::correct(State& s, double dt) {
 
 // The velocity row of a contact (contact_impulses.hpp): the approach it may still make in the
 // next step without closing the kept separation, its contact-point weights and tangents.
-ContactRow DcrContact::make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const {
+//
+// Resting contact (docs/hard-scenes.md): the next step's predictor moves the nodes by
+// dt (v_{n+1} + dt/2 a_{n+1}), so a contact whose acceleration presses it shut (grad g . a < 0:
+// gravity, or the body behind it) and whose rate is held at -(g - g_sep)/dt would land below
+// the kept separation by dt^2/2 |grad g . a| every step, to be projected back (and the elements
+// around it re-evaluated). The target then also takes in that known acceleration and aims the
+// next predicted position at kRestingAim x the separation:
+//     rate_n >= -(g - kRestingAim g_sep)/dt - dt/2 grad g . a_{n+1}
+// whenever that is the stricter bound. A resting node thus stays above the kept separation
+// and the projection has nothing to do; the bound only ever asks for more separation (never
+// less than the kept one), and an impulse still only pushes (lambda_n >= 0).
+ContactRow DcrContact::make_row(const Constraint& c, const std::vector<Vec3>& x,
+                                const std::vector<Vec3>& acc, double dt) const {
   ContactRow r;
   r.nodes = c.nodes;
   const double scale = constraint_gradient(c, x, r.grad.data());
-  r.target = -std::max(0.0, constraint_value(c, x) - separation_ * scale) / dt;
+  const double g = constraint_value(c, x);
+  r.target = -std::max(0.0, g - separation_ * scale) / dt;
+  double pressing = 0.0;  // grad g . a
+  for (int j = 0; j < 4; ++j) pressing += r.grad[j].dot(acc[static_cast<size_t>(c.nodes[j])]);
+  if (pressing < 0.0 && -0.5 * dt * dt * pressing <= separation_ * scale)
+    r.target =
+        std::max(r.target, -(g - kRestingAim * separation_ * scale) / dt - 0.5 * dt * pressing);
   // All four gradients are parallel to the contact normal n at g = 0. The contact points are
   // sum beta_a x_a with beta_a = grad_a g . n / S, S normalising the first side's weights to 1
   // (node-face: the node; edge-edge: the first edge); the normal impulse is S lambda_n.
@@ -571,7 +594,7 @@ void DcrContact::exchange_momentum(State& s, double dt) {
       v_end[i] = s.v[i] + 0.5 * dt * s.a[i];
       v_before_.push_back(v_end[i]);
     }
-    rows_.push_back(make_row(c, s.x, dt));
+    rows_.push_back(make_row(c, s.x, s.a, dt));
     const int a = body_of(c.nodes[0]), b = body_of(c.nodes[3]);
     if (a != b) near_.emplace_back(std::min(a, b), std::max(a, b));
   }

@@ -16,7 +16,9 @@
 //   3. momentum decomposition (contact_impulses.hpp): on the end-of-step velocity v* + dt/2 a,
 //      each contact may approach at most by its remaining gap in the next step
 //      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, docs/contact-method.md
-//      §1.5), with Coulomb friction iterated together with the normal impulses;
+//      §1.5), with Coulomb friction iterated together with the normal impulses; a contact that
+//      the known acceleration a_{n+1} presses shut is held so that the next predictor lands it
+//      above the kept separation (make_row; docs/hard-scenes.md, "Resting contact");
 //   4. restitution (pair_restitution.hpp): the user's coefficient e acts on the rigid motions
 //      of the two bodies when a contact episode ends.
 // The velocity change is applied to v* so that v_{n+1} = v* + dt/2 a_{n+1} satisfies it.
@@ -150,7 +152,8 @@ class DcrContact : public ContactModel, public HistorySource {
   double approach_limit(const State& state) const;
   bool project_positions(State& s);
   void exchange_momentum(State& s, double dt);
-  ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const;
+  ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, const std::vector<Vec3>& acc,
+                      double dt) const;
   void collect_pair_impulses(const std::vector<Vec3>& x);
   void order_constraints();
   double mobility(const Constraint& c, const std::array<Vec3, 4>& grad) const;

@@ -36,9 +36,9 @@ void PairDistanceCache::prepare(const Candidates& candidates, std::span<const in
   bool reanchor = !anchored_;
   for (int n : nodes) {
     const auto i = static_cast<std::size_t>(n);
-    reach_[i] = (x1[i] - x0[i]).norm();
-    offset_[i] = (x0[i] - anchor_[i]).norm();
-    reanchor = reanchor || !(offset_[i] <= reanchor_);
+    motion_[i].reach = (x1[i] - x0[i]).norm();
+    motion_[i].offset = (x0[i] - anchor_[i]).norm();
+    reanchor = reanchor || !(motion_[i].offset <= reanchor_);
   }
   std::swap(records_, previous_);
   records_.resize(candidates.node_face.size() + candidates.edge_edge.size());
@@ -46,7 +46,7 @@ void PairDistanceCache::prepare(const Candidates& candidates, std::span<const in
     for (int n : nodes) {
       const auto i = static_cast<std::size_t>(n);
       anchor_[i] = x0[i];
-      offset_[i] = 0.0;
+      motion_[i].offset = 0.0;
     }
     anchored_ = true;
     ++reanchorings_;
@@ -64,35 +64,36 @@ void PairDistanceCache::update_reach(std::span<const int> nodes, const std::vect
                                      const std::vector<Vec3>& x1) {
   for (int n : nodes) {
     const auto i = static_cast<std::size_t>(n);
-    reach_[i] = (x1[i] - x0[i]).norm();
+    motion_[i].reach = (x1[i] - x0[i]).norm();
   }
 }
 
 bool PairDistanceCache::proves_apart(std::size_t k, const std::array<int, 4>& nodes, int first_side,
                                      double extra) const {
   const Record& r = records_[k];
-  if (!(r.distance >= 0.0)) return false;
   double drift[2] = {0.0, 0.0}, reach[2] = {0.0, 0.0};
   for (int j = 0; j < 4; ++j) {
-    const auto i = static_cast<std::size_t>(nodes[static_cast<std::size_t>(j)]);
+    const Motion& m = motion_[static_cast<std::size_t>(nodes[static_cast<std::size_t>(j)])];
     const int side = j < first_side ? 0 : 1;
-    drift[side] = std::max(drift[side], offset_[i] + r.offset[static_cast<std::size_t>(j)]);
-    reach[side] = std::max(reach[side], reach_[i]);
+    drift[side] = std::max(drift[side], m.offset);
+    reach[side] = std::max(reach[side], m.reach);
   }
-  const double drifts = drift[0] + drift[1];
-  const double margin = 1e-4 * r.slack + 1e-12 * drifts;
-  return r.distance - drifts >
-         reach[0] + reach[1] + extra + r.slack + 6.0 * kPrefilterSlack * drifts + margin;
+  // D_A + D_B, and the slack's growth and the rounding margin on it (header).
+  const double drifts = drift[0] + r.offset[0] + drift[1] + r.offset[1];
+  return r.budget - (1.0 + 6.0 * kPrefilterSlack + 1e-12) * drifts > reach[0] + reach[1] + extra;
 }
 
-void PairDistanceCache::record(std::size_t k, const std::array<int, 4>& nodes, double distance,
-                               double slack) {
+void PairDistanceCache::record(std::size_t k, const std::array<int, 4>& nodes, int first_side,
+                               double distance, double slack) {
   Record& r = records_[k];
-  r.distance = distance;
-  r.slack = slack;
-  for (int j = 0; j < 4; ++j)
-    r.offset[static_cast<std::size_t>(j)] =
-        offset_[static_cast<std::size_t>(nodes[static_cast<std::size_t>(j)])];
+  r.budget = distance - (1.0 + 1e-4) * slack;
+  r.offset = {0.0, 0.0};
+  for (int j = 0; j < 4; ++j) {
+    const int side = j < first_side ? 0 : 1;
+    r.offset[static_cast<std::size_t>(side)] =
+        std::max(r.offset[static_cast<std::size_t>(side)],
+                 motion_[static_cast<std::size_t>(nodes[static_cast<std::size_t>(j)])].offset);
+  }
 }
 
 }  // namespace ccm::dcr

@@ -11,8 +11,9 @@
 // from below: every node moved from x_ref by at most |x0 - anchor| + |x_ref - anchor| (the second
 // term stored with the record), so every point of a side moved by at most the side's largest
 // such sum D_X, and d0 >= d_ref - D_A - D_B (the distance of two sets is 1-Lipschitz in each).
-// The edge lengths change by at most 2 D per edge, so the slack now is at most slack_ref +
-// 6 kPrefilterSlack (D_A + D_B). Hence
+// (The record keeps, per side, the largest |x_ref - anchor| of its nodes: D_X is bounded by the
+// side's largest |x0 - anchor| plus that.) The edge lengths change by at most 2 D per edge, so the
+// slack now is at most slack_ref + 6 kPrefilterSlack (D_A + D_B). Hence
 //     d_ref - D_A - D_B > R_A + R_B + extra + slack_ref + 6 kPrefilterSlack (D_A + D_B) + margin
 // implies the prefilter at this step would reject the pair: the pair is no contact, and nothing
 // is computed for it. (margin, 1e-4 of the slack plus 1e-12 of the distances to the anchors,
@@ -28,6 +29,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -39,17 +41,14 @@ namespace ccm::dcr {
 class PairDistanceCache {
  public:
   struct Record {
-    double distance = -1.0;          // at the reference start positions; < 0: no record
-    double slack = 0.0;              // the prefilter's slack there
-    std::array<double, 4> offset{};  // the four nodes' distances to their anchors there
+    // distance - (1 + 1e-4) slack at the reference start positions; -infinity: no record.
+    double budget = -std::numeric_limits<double>::infinity();
+    std::array<double, 2> offset{};  // per side, its nodes' largest distance to their anchors
   };
 
   // reanchor: the re-anchoring distance [m] (> 0).
   PairDistanceCache(std::size_t n_nodes = 0, double reanchor = 0.0)
-      : anchor_(n_nodes, Vec3::Zero()),
-        offset_(n_nodes, 0.0),
-        reach_(n_nodes, 0.0),
-        reanchor_(reanchor) {}
+      : anchor_(n_nodes, Vec3::Zero()), motion_(n_nodes), reanchor_(reanchor) {}
 
   // Before the step's tests: each node's distance to its anchor (re-anchoring all when one is
   // farther than the re-anchoring distance) and reach |x1 - x0| of the step; the records follow
@@ -67,16 +66,21 @@ class PairDistanceCache {
   // node-face pair, 0 for an edge pair.
   bool proves_apart(std::size_t k, const std::array<int, 4>& nodes, int first_side,
                     double extra) const;
-  // The start distance and slack of candidate k at this step's start positions.
-  void record(std::size_t k, const std::array<int, 4>& nodes, double distance, double slack);
+  // The start distance and slack of candidate k at this step's start positions (nodes and
+  // first_side as for proves_apart).
+  void record(std::size_t k, const std::array<int, 4>& nodes, int first_side, double distance,
+              double slack);
   // The candidates of the step (records held or not), and the re-anchorings so far.
   std::size_t size() const { return records_.size(); }
   long reanchorings() const { return reanchorings_; }
 
  private:
-  std::vector<Vec3> anchor_;    // per global node
-  std::vector<double> offset_;  // per global node: |x0 - anchor| at this step's start
-  std::vector<double> reach_;   // per global node: |x1 - x0| of the step
+  std::vector<Vec3> anchor_;  // per global node
+  struct Motion {
+    double offset = 0.0;  // |x0 - anchor| at this step's start
+    double reach = 0.0;   // |x1 - x0| of the step
+  };
+  std::vector<Motion> motion_;  // per global node
   double reanchor_ = 0.0;
   bool anchored_ = false;
   long reanchorings_ = 0;

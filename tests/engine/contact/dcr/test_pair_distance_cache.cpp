@@ -166,7 +166,7 @@ TEST_CASE("DCR resting contact: the pair distance cache only skips what the pref
       }
       if (!may) ++rejected;
       ++recorded;
-      cache.record(k, ids, d, slack);
+      cache.record(k, ids, k < n_nf ? 1 : 2, d, slack);
     }
     x0 = x1;
   }
