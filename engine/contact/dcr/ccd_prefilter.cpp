@@ -6,8 +6,8 @@
 namespace ccm::dcr {
 namespace {
 
-// The prefilter's margin, a fraction of the two edges' lengths (header).
-constexpr double kSlack = 1e-5;
+// The prefilter's margin, a fraction of the edges' lengths (header).
+constexpr double kSlack = kPrefilterSlack;
 
 // Clamp to [0, 1].
 double unit_clamp(double s) { return std::clamp(s, 0.0, 1.0); }
@@ -43,12 +43,76 @@ double segment_distance(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
   return ((a + s * e1) - (c + t * e2)).norm();
 }
 
-bool edges_may_cross(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0, const Vec3& a1,
-                     const Vec3& b1, const Vec3& c1, const Vec3& d1) {
+double edge_pair_slack(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0) {
+  return kSlack * ((b0 - a0).norm() + (d0 - c0).norm());
+}
+
+double face_slack(const Vec3& a0, const Vec3& b0, const Vec3& c0) {
+  return kSlack * ((b0 - a0).norm() + (c0 - b0).norm() + (a0 - c0).norm());
+}
+
+bool edges_may_cross_from(double distance, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                          const Vec3& d0, const Vec3& a1, const Vec3& b1, const Vec3& c1,
+                          const Vec3& d1) {
   const double reach_ab = std::max((a1 - a0).norm(), (b1 - b0).norm());
   const double reach_cd = std::max((c1 - c0).norm(), (d1 - d0).norm());
-  const double slack = kSlack * ((b0 - a0).norm() + (d0 - c0).norm());
-  return !(segment_distance(a0, b0, c0, d0) > reach_ab + reach_cd + slack);
+  return !(distance > reach_ab + reach_cd + edge_pair_slack(a0, b0, c0, d0));
+}
+
+bool edges_may_cross(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0, const Vec3& a1,
+                     const Vec3& b1, const Vec3& c1, const Vec3& d1) {
+  return edges_may_cross_from(segment_distance(a0, b0, c0, d0), a0, b0, c0, d0, a1, b1, c1, d1);
+}
+
+// Ericson, Real-Time Collision Detection, 5.1.5: the Voronoi regions of the triangle's vertices,
+// edges and face, in that order.
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return ap.norm();
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return bp.norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return (p - (a + v * ab)).norm();
+  }
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return cp.norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return (p - (a + w * ac)).norm();
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return (p - (b + w * (c - b))).norm();
+  }
+  const double denom = va + vb + vc;
+  if (!(denom > 0.0)) {  // degenerate triangle: the nearest of its three edges
+    return std::min(
+        {segment_distance(p, p, a, b), segment_distance(p, p, b, c), segment_distance(p, p, c, a)});
+  }
+  const double v = vb / denom, w = vc / denom;
+  return (p - (a + v * ab + w * ac)).norm();
+}
+
+bool node_face_may_touch_from(double distance, const Vec3& p0, const Vec3& a0, const Vec3& b0,
+                              const Vec3& c0, const Vec3& p1, const Vec3& a1, const Vec3& b1,
+                              const Vec3& c1, double proximity) {
+  const double reach_p = (p1 - p0).norm();
+  const double reach_f = std::max({(a1 - a0).norm(), (b1 - b0).norm(), (c1 - c0).norm()});
+  return !(distance > reach_p + reach_f + proximity + face_slack(a0, b0, c0));
+}
+
+bool node_face_may_touch(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                         const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1,
+                         double proximity) {
+  return node_face_may_touch_from(point_triangle_distance(p0, a0, b0, c0), p0, a0, b0, c0, p1, a1,
+                                  b1, c1, proximity);
 }
 
 }  // namespace ccm::dcr

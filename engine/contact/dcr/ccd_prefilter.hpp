@@ -30,4 +30,35 @@ double segment_distance(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
 bool edges_may_cross(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0, const Vec3& a1,
                      const Vec3& b1, const Vec3& c1, const Vec3& d1);
 
+// The margin of the prefilters, a fraction of the features' edge lengths (see above).
+inline constexpr double kPrefilterSlack = 1e-5;
+
+// Distance from p to the triangle (a, b, c) (closest point on the triangle, Ericson 5.1.5).
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+// The node-face counterpart of edges_may_cross, for the DCR's node-face test (a CCD hit, or a
+// persistent contact: at the end of the step within `proximity` of the face's plane with its
+// projection inside the face, barycentric tolerance 1e-6). A point of the face moves by at most
+// D_f = max(|da|, |db|, |dc|) over the step and the node by D_p = |dp|, so with d0 the distance
+// of the node to the triangle at the start,
+//
+//     d0 > D_p + D_f + proximity + kPrefilterSlack (|b - a| + |c - b| + |a - c|)
+//
+// means the node is farther than proximity (plus the inclusion allowances) from the triangle at
+// every time of the step: no CCD hit and no persistent contact. Returns false then.
+bool node_face_may_touch(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                         const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1,
+                         double proximity);
+
+// The same two tests from a start distance d0 computed by the caller (segment_distance,
+// point_triangle_distance at the start positions), and their slack terms.
+double edge_pair_slack(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0);
+double face_slack(const Vec3& a0, const Vec3& b0, const Vec3& c0);
+bool edges_may_cross_from(double distance, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                          const Vec3& d0, const Vec3& a1, const Vec3& b1, const Vec3& c1,
+                          const Vec3& d1);
+bool node_face_may_touch_from(double distance, const Vec3& p0, const Vec3& a0, const Vec3& b0,
+                              const Vec3& c0, const Vec3& p1, const Vec3& a1, const Vec3& b1,
+                              const Vec3& c1, double proximity);
+
 }  // namespace ccm::dcr

@@ -109,6 +109,15 @@ void ContactImpulses::remember(const std::vector<ContactRow>& rows) {
 // The rows that share a node with each row (itself included), as a list per node: entries_ holds
 // (node, row) sorted by node, and a row's neighbours are the entries of its four nodes.
 void ContactImpulses::link_rows(const std::vector<ContactRow>& rows) {
+  // The same rows on the same nodes as the last solve (a resting contact): the same links.
+  const bool same = linked_.size() == rows.size() &&
+                    std::equal(rows.begin(), rows.end(), linked_.begin(),
+                               [](const ContactRow& r, const std::array<int, 4>& nodes) {
+                                 return r.nodes == nodes;
+                               });
+  if (same) return;
+  linked_.resize(rows.size());
+  for (size_t k = 0; k < rows.size(); ++k) linked_[k] = rows[k].nodes;
   entries_.clear();
   for (size_t k = 0; k < rows.size(); ++k)
     for (int n : rows[k].nodes) entries_.push_back({n, static_cast<int>(k)});

@@ -87,6 +87,7 @@ class ContactImpulses {
   std::vector<std::pair<int, Vec3>> start_;  // (node, velocity at the start of the sweep)
   std::vector<std::pair<int, int>> entries_;  // (node, row), sorted
   std::vector<std::pair<int, int>> ranges_;   // per row and node: its entries [first, last)
+  std::vector<std::array<int, 4>> linked_;    // the rows' nodes that entries_ and ranges_ are of
   std::vector<char> dirty_;                   // per row: a neighbour changed since its last visit
   long visits_ = 0;                           // row updates made by the last solve
   std::vector<Remembered> last_;              // sorted by nodes

@@ -23,6 +23,17 @@ constexpr double kInclusionTolerance = 1e-6;
 // contact node.
 constexpr double kVelocityTolerance = 1e-6;
 
+// The pair distance cache re-anchors when a node moved this x the shortest edge from its anchor
+// (pair_distance_cache.hpp): far above a resting contact's motion, far below an element.
+constexpr double kReanchorFraction = 0.1;
+
+// A resting contact's velocity target aims the next predicted position at this x the kept
+// separation (make_row): a little above it, so that the solve's tolerance, the predictor's
+// rounding and the constraint's curvature leave nothing for the projection, and so little above
+// that the work of lifting a body onto it is negligible (2 x, tried first, lifted the stacked
+// blocks of the [hard] test by one separation more: +7 % of that small scene's energy scale).
+constexpr double kRestingAim = 1.001;
+
 // Tolerance of the "projection inside the face" test of a persistent contact (barycentric).
 constexpr double kPersistentTolerance = 1e-6;
 
@@ -159,6 +170,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   v_end_.assign(mesh.X.size(), Vec3::Zero());
   count_.assign(mesh.X.size(), 0);
   touched_.assign(mesh.X.size(), 0);
+  distances_ = PairDistanceCache(mesh.X.size(), kReanchorFraction * min_edge_);
 }
 
 std::string DcrContact::failure() const {
@@ -244,6 +256,7 @@ void DcrContact::detect(const State& s) {
     return;
   }
   broad_phase_.find(features_, x_n_, s.x, proximity_, settings_.self_contact, candidates_);
+  distances_.prepare(candidates_, features_.nodes, x_n_, s.x);
   candidate_is_constraint_.assign(candidates_.node_face.size() + candidates_.edge_edge.size(), 0);
   test_candidates(s, false);
 }
@@ -255,13 +268,14 @@ void DcrContact::detect(const State& s) {
 // in the same order, as one thread's.
 int DcrContact::test_candidates(const State& s, bool only_touched) {
   const size_t n = candidate_is_constraint_.size();
+  PairDistanceCache* cache = &distances_;
   found_.reset(loops_.chunks(n, ChunkedLoops::kHeavyItem));
   loops_.run(
       n,
       [&](size_t begin, size_t end, int chunk) {
         for (size_t k = begin; k < end; ++k) {
           if (candidate_is_constraint_[k] || (only_touched && !candidate_touched(k))) continue;
-          if (const std::optional<Constraint> c = candidate_contact(s, k)) {
+          if (const std::optional<Constraint> c = candidate_contact(s, k, cache)) {
             found_[chunk].push_back(*c);
             candidate_is_constraint_[k] = 1;  // one byte per candidate: no two chunks share one
           }
@@ -275,15 +289,16 @@ int DcrContact::test_candidates(const State& s, bool only_touched) {
 
 // Candidate k (node-face pairs first, then edge-edge pairs) as a contact at the current
 // positions, if it is one.
-std::optional<Constraint> DcrContact::candidate_contact(const State& s, size_t k) const {
+std::optional<Constraint> DcrContact::candidate_contact(const State& s, size_t k,
+                                                        PairDistanceCache* cache) const {
   const size_t n_nf = candidates_.node_face.size();
   if (k < n_nf) {
     const NodeFaceCandidate& nf = candidates_.node_face[k];
     return node_face_contact(s, features_.nodes[static_cast<size_t>(nf.node)],
-                             features_.faces[static_cast<size_t>(nf.face)]);
+                             features_.faces[static_cast<size_t>(nf.face)], k, cache);
   }
   const EdgeEdgeCandidate& ee = candidates_.edge_edge[k - n_nf];
-  return edge_edge_contact(s, ee.edge_a, ee.edge_b);
+  return edge_edge_contact(s, ee.edge_a, ee.edge_b, k, cache);
 }
 
 // Whether candidate k has a node that the projection moved (touched_).
@@ -311,6 +326,7 @@ int DcrContact::redetect(const State& s) {
   for (size_t k = 0; k < moved_.size(); ++k)
     if (s.x[static_cast<size_t>(moved_[k])] != x_start_[k])
       touched_[static_cast<size_t>(moved_[k])] = 1;
+  distances_.update_reach(moved_, x_n_, s.x);
   const int added = test_candidates(s, true);
   for (int n : moved_) touched_[static_cast<size_t>(n)] = 0;
   return added;
@@ -318,11 +334,20 @@ int DcrContact::redetect(const State& s) {
 
 // A node and a face are a contact when the node, arriving from the outward side (g(x_n) >= 0),
 // crosses the face during the step (CCD), or stays outward within the proximity distance of it
-// with its projection inside the face (persistent contact).
-std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p,
-                                                        const Triangle& t) const {
+// with its projection inside the face (persistent contact). A pair that provably stays farther
+// than the proximity distance from the face is neither (ccd_prefilter.hpp); the cache may prove
+// it from an earlier step's distance (pair_distance_cache.hpp).
+std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p, const Triangle& t,
+                                                        size_t k, PairDistanceCache* cache) const {
   const std::vector<Vec3>& x0 = x_n_;
   const std::vector<Vec3>& x1 = s.x;
+  const std::array<int, 4> nodes{p, t[0], t[1], t[2]};
+  if (cache && cache->proves_apart(k, nodes, 1, proximity_)) return std::nullopt;
+  const double d0 = point_triangle_distance(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]);
+  if (cache) cache->record(k, nodes, 1, d0, face_slack(x0[t[0]], x0[t[1]], x0[t[2]]));
+  if (!node_face_may_touch_from(d0, x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
+                                x1[t[2]], proximity_))
+    return std::nullopt;
   if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return std::nullopt;
   const bool crossed = node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
                                      x1[t[2]], kInclusionTolerance)
@@ -334,19 +359,25 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p,
     if (!projects_inside(x1[p], x1[t[0]], x1[t[1]], x1[t[2]], kPersistentTolerance))
       return std::nullopt;
   }
-  return Constraint{{p, t[0], t[1], t[2]}, true, 1.0, false};
+  return Constraint{nodes, true, 1.0, false};
 }
 
 // Two edges are a contact when they cross during the step (CCD); the admissible side is the one
-// they started on (the thesis's orientation tag).
-std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge_a,
-                                                        int edge_b) const {
+// they started on (the thesis's orientation tag). Pairs that provably stay apart are decided by
+// the prefilter (ccd_prefilter.hpp), or by the cache from an earlier step's distance.
+std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge_a, int edge_b,
+                                                        size_t k, PairDistanceCache* cache) const {
   const std::vector<Vec3>& x0 = x_n_;
   const std::vector<Vec3>& x1 = s.x;
   const auto& ea = features_.edges[static_cast<size_t>(edge_a)];
   const auto& eb = features_.edges[static_cast<size_t>(edge_b)];
-  if (!edges_may_cross(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
-                       x1[eb[1]]))
+  const std::array<int, 4> nodes{ea[0], ea[1], eb[0], eb[1]};
+  if (cache && cache->proves_apart(k, nodes, 2, 0.0)) return std::nullopt;
+  const double d0 = segment_distance(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]);
+  if (cache)
+    cache->record(k, nodes, 2, d0, edge_pair_slack(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]));
+  if (!edges_may_cross_from(d0, x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]],
+                            x1[eb[0]], x1[eb[1]]))
     return std::nullopt;
   if (!edge_edge_ccd(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]], x1[eb[0]],
                      x1[eb[1]], kInclusionTolerance))
@@ -354,7 +385,7 @@ std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge
   // The side the edges start on; where they start in one plane, the side the surfaces face
   // (edge_orientation.hpp).
   const double sign = edge_orientation_.sign(features_, edge_a, edge_b, x0, separation_);
-  return Constraint{{ea[0], ea[1], eb[0], eb[1]}, false, sign, false};
+  return Constraint{nodes, false, sign, false};
 }
 
 // The order in which the solves visit the constraints: by a key from the reference positions
@@ -512,11 +543,32 @@ void DcrContact::correct(State& s, double dt) {
 
 // The velocity row of a contact (contact_impulses.hpp): the approach it may still make in the
 // next step without closing the kept separation, its contact-point weights and tangents.
-ContactRow DcrContact::make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const {
+//
+// Resting contact (docs/hard-scenes.md): the next step's predictor moves the nodes by
+// dt (v_{n+1} + dt/2 a_{n+1}), so a contact whose acceleration presses it shut (grad g . a < 0:
+// gravity, or the body behind it) and whose rate is held at -(g - g_sep)/dt would land below
+// the kept separation by dt^2/2 |grad g . a| every step, to be projected back (and the elements
+// around it re-evaluated). The target then also takes in that known acceleration and aims the
+// next predicted position at kRestingAim x the separation:
+//     rate_n >= -(g - kRestingAim g_sep)/dt - dt/2 grad g . a_{n+1}
+// whenever that is the stricter bound. A resting node thus stays above the kept separation
+// and the projection has nothing to do; the bound only ever asks for more separation (never
+// less than the kept one), and an impulse still only pushes (lambda_n >= 0). It is applied only
+// to resting contacts, where that push over one step, dt^2/2 |grad g . a| / k, is at most the
+// separation: an impact is left as it was (applied to every pressed contact, the clapping fork
+// of the [no_penetration] test left a node inside a foreign tet).
+ContactRow DcrContact::make_row(const Constraint& c, const std::vector<Vec3>& x,
+                                const std::vector<Vec3>& acc, double dt) const {
   ContactRow r;
   r.nodes = c.nodes;
   const double scale = constraint_gradient(c, x, r.grad.data());
-  r.target = -std::max(0.0, constraint_value(c, x) - separation_ * scale) / dt;
+  const double g = constraint_value(c, x);
+  r.target = -std::max(0.0, g - separation_ * scale) / dt;
+  double pressing = 0.0;  // grad g . a
+  for (int j = 0; j < 4; ++j) pressing += r.grad[j].dot(acc[static_cast<size_t>(c.nodes[j])]);
+  if (pressing < 0.0 && -0.5 * dt * dt * pressing <= separation_ * scale)
+    r.target =
+        std::max(r.target, -(g - kRestingAim * separation_ * scale) / dt - 0.5 * dt * pressing);
   // All four gradients are parallel to the contact normal n at g = 0. The contact points are
   // sum beta_a x_a with beta_a = grad_a g . n / S, S normalising the first side's weights to 1
   // (node-face: the node; edge-edge: the first edge); the normal impulse is S lambda_n.
@@ -549,7 +601,7 @@ void DcrContact::exchange_momentum(State& s, double dt) {
       v_end[i] = s.v[i] + 0.5 * dt * s.a[i];
       v_before_.push_back(v_end[i]);
     }
-    rows_.push_back(make_row(c, s.x, dt));
+    rows_.push_back(make_row(c, s.x, s.a, dt));
     const int a = body_of(c.nodes[0]), b = body_of(c.nodes[3]);
     if (a != b) near_.emplace_back(std::min(a, b), std::max(a, b));
   }

@@ -16,7 +16,9 @@
 //   3. momentum decomposition (contact_impulses.hpp): on the end-of-step velocity v* + dt/2 a,
 //      each contact may approach at most by its remaining gap in the next step
 //      (dg/dt >= -(g - g_sep)/dt; 0 once closed: e = 0 per constraint, docs/contact-method.md
-//      §1.5), with Coulomb friction iterated together with the normal impulses;
+//      §1.5), with Coulomb friction iterated together with the normal impulses; a contact that
+//      the known acceleration a_{n+1} presses shut is held so that the next predictor lands it
+//      above the kept separation (make_row; docs/hard-scenes.md, "Resting contact");
 //   4. restitution (pair_restitution.hpp): the user's coefficient e acts on the rigid motions
 //      of the two bodies when a contact episode ends.
 // The velocity change is applied to v* so that v_{n+1} = v* + dt/2 a_{n+1} satisfies it.
@@ -34,6 +36,7 @@
 #include "engine/contact/dcr/contact_output.hpp"
 #include "engine/contact/dcr/contact_surface.hpp"
 #include "engine/contact/dcr/edge_orientation.hpp"
+#include "engine/contact/dcr/pair_distance_cache.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/contact/dcr/projection_update.hpp"
 #include "engine/contact/dcr/thread_chunks.hpp"
@@ -132,19 +135,25 @@ class DcrContact : public ContactModel, public HistorySource {
  private:
   void detect(const State& s);
   int test_candidates(const State& s, bool only_touched);
-  std::optional<Constraint> candidate_contact(const State& s, size_t k) const;
+  // cache: the pair distances kept over steps (null: test in full).
+  std::optional<Constraint> candidate_contact(const State& s, size_t k,
+                                              PairDistanceCache* cache) const;
   bool candidate_touched(size_t k) const;
   int redetect(const State& s);
   void remember_start(const State& s, size_t first);
   void enforce_positions(State& s, double dt);
-  std::optional<Constraint> node_face_contact(const State& s, int p, const Triangle& t) const;
+  // k: the candidate's index, for the cache (may be null).
+  std::optional<Constraint> node_face_contact(const State& s, int p, const Triangle& t, size_t k,
+                                              PairDistanceCache* cache) const;
   // edge_a, edge_b: indices into features_.edges.
-  std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b) const;
+  std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b, size_t k,
+                                              PairDistanceCache* cache) const;
   bool bodies_may_touch(const State& s) const;
   double approach_limit(const State& state) const;
   bool project_positions(State& s);
   void exchange_momentum(State& s, double dt);
-  ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, double dt) const;
+  ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, const std::vector<Vec3>& acc,
+                      double dt) const;
   void collect_pair_impulses(const std::vector<Vec3>& x);
   void order_constraints();
   double mobility(const Constraint& c, const std::array<Vec3, 4>& grad) const;
@@ -158,6 +167,7 @@ class DcrContact : public ContactModel, public HistorySource {
   EdgeOrientation edge_orientation_;  // the admissible side of edges that start in one plane
   BroadPhase broad_phase_;
   Candidates candidates_;
+  PairDistanceCache distances_;                // the candidates' start distances kept over steps
   std::vector<char> candidate_is_constraint_;  // per candidate (node-face, then edge-edge)
   ChunkLists<Constraint> found_;               // scratch: new constraints per chunk of candidates
   std::vector<double> inv_m_;                  // 1/m of every node; 0 for fixed nodes
