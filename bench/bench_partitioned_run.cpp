@@ -7,6 +7,7 @@
 //                                                 inputs)
 // Rank 0 prints one line of key=value pairs per run or partition.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -115,7 +116,7 @@ int main(int argc, char** argv) {
       "contact_region={} messages_per_step={:.2f} doubles_per_step={:.1f} "
       "collectives_per_step={:.2f} region_gathers_per_step={:.2f} structure_by_rank={} "
       "contact_by_rank={} halo_by_rank={} contact_communication_by_rank={} "
-      "communication_by_rank={}\n",
+      "communication_by_rank={} elements_by_rank={} owned_nodes_by_rank={}\n",
       r.ranks, s.n_elements, s.steps, to_string(s.verdict), s.step_wall_seconds, largest(structure),
       largest(r.contact_seconds), largest(r.communication_seconds), largest(structure_cpu),
       largest(r.contact_cpu_seconds), r.imbalance, r.cut_faces, largest(r.halo_nodes),
@@ -125,6 +126,7 @@ int main(int argc, char** argv) {
       static_cast<double>(largest(r.collectives)) / steps,
       static_cast<double>(r.region_gathers) / steps, per_rank(structure),
       per_rank(r.contact_seconds), per_rank(r.halo_seconds),
-      per_rank(r.contact_communication_seconds), per_rank(r.communication_seconds));
+      per_rank(r.contact_communication_seconds), per_rank(r.communication_seconds),
+      fmt::join(r.elements, ","), fmt::join(r.owned_nodes, ","));
   return 0;
 }
