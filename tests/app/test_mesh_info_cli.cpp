@@ -67,8 +67,10 @@ TEST_CASE("ccm mesh info: bad files exit 2 naming the file, line and dataset", "
 
   const std::string text = ccm::test::file_text(ccm::test::mesh_data("abaqusreader_cube_tet4.inp"));
   const std::string element_12 = "        12,         1,";  // cut inside element 12
-  const auto cut = dir.write("cut.inp", text.substr(0, text.find(element_12) + element_12.size()));
-  const MeshInfoOutput truncated = mesh_info(dir, "'" + cut.string() + "'");
+  const size_t at = text.find(element_12);
+  REQUIRE(at != std::string::npos);
+  const auto cut = dir.write("cut.inp", text.substr(0, at + element_12.size()));
+  const MeshInfoOutput truncated = mesh_info(dir, fmt::format("'{}'", cut.string()));
   CHECK(truncated.exit_code == 2);
   CHECK(truncated.err == "ccm: error: " + cut.string() +
                              ":24: *ELEMENT: element data ends after 2 of the 5 fields of a "
