@@ -165,10 +165,7 @@ void ReplicatedContact::gather_accelerations(const State& local, double dt) cons
         for (int c = 0; c < 3; ++c) p[c] = local.a[l][c];
       },
       [&](size_t g, const double* p) {
-        if (predict) {
-          view_.v[g] += half_dt * view_.a[g];
-          view_.x[g] += dt * view_.v[g];
-        }
+        if (predict) predict_node(g, dt, half_dt);
         view_.a[g] = Vec3(p[0], p[1], p[2]);
       });
 }
@@ -176,26 +173,28 @@ void ReplicatedContact::gather_accelerations(const State& local, double dt) cons
 // x_{n+1} = x_n + dt v_n + dt^2/2 a_n ;  v* = v_n + dt/2 a_n   (eq. 2.27-2.28), on the region,
 // written as the integrator's predictor (engine/solver/explicit_integrator.cpp) so that the view
 // holds its result bit for bit.
+void ReplicatedContact::predict_node(size_t g, double dt, double half_dt) const {
+  view_.v[g] += half_dt * view_.a[g];
+  view_.x[g] += dt * view_.v[g];
+}
+
 void ReplicatedContact::catch_up(double dt) const {
   if (!predict_due_) return;
   predict_due_ = false;
   const double half_dt = 0.5 * dt;
-  for (int n : region_.global) {
-    const auto g = static_cast<size_t>(n);
-    view_.v[g] += half_dt * view_.a[g];
-    view_.x[g] += dt * view_.v[g];
-  }
+  for (int n : region_.global) predict_node(static_cast<size_t>(n), dt, half_dt);
+}
+
+void ReplicatedContact::copy_to_local(size_t g, State& local) const {
+  const int l = local_of_[g];
+  if (l < 0) return;
+  local.x[static_cast<size_t>(l)] = view_.x[g];
+  local.v[static_cast<size_t>(l)] = view_.v[g];
+  local.a[static_cast<size_t>(l)] = view_.a[g];
 }
 
 void ReplicatedContact::scatter(std::span<const int> nodes, State& local) const {
-  for (int n : nodes) {
-    const auto g = static_cast<size_t>(n);
-    const int l = local_of_[g];
-    if (l < 0) continue;
-    local.x[static_cast<size_t>(l)] = view_.x[g];
-    local.v[static_cast<size_t>(l)] = view_.v[g];
-    local.a[static_cast<size_t>(l)] = view_.a[g];
-  }
+  for (int n : nodes) copy_to_local(static_cast<size_t>(n), local);
 }
 
 // scatter(region_) and finish_step() in one pass over the region: each node is copied to its
@@ -204,11 +203,7 @@ void ReplicatedContact::scatter_and_finish(State& local, double dt) {
   const double half_dt = 0.5 * dt;
   for (int n : region_.global) {
     const auto g = static_cast<size_t>(n);
-    if (const int l = local_of_[g]; l >= 0) {
-      local.x[static_cast<size_t>(l)] = view_.x[g];
-      local.v[static_cast<size_t>(l)] = view_.v[g];
-      local.a[static_cast<size_t>(l)] = view_.a[g];
-    }
+    copy_to_local(g, local);
     finish_node(g, half_dt);
   }
   finished_ = true;
@@ -342,8 +337,7 @@ void ReplicatedContact::end_step(const State& state, double dt) {
   view_.t = state.t;
   if (!finished_) {  // a constraint model's correct() has finished the view already
     contact_time([&] {
-      catch_up(dt);
-      gather_accelerations(state, dt);
+      gather_accelerations(state, dt);  // replays the predictor too if add_forces did not
       finish_step(dt);
     });
   }

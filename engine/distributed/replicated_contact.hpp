@@ -74,8 +74,10 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   void allgather(const GatherPlan& plan, int width, Pack pack, Unpack unpack) const;
   void gather_state(const State& local) const;                     // x, v, a and m of all nodes
   void gather_accelerations(const State& local, double dt) const;  // a of the region
+  void predict_node(size_t g, double dt, double half_dt) const;    // eq. 2.27-2.28 on node g
   void catch_up(double dt) const;                                  // replays the predictor when due
-  void scatter(std::span<const int> nodes, State& local) const;    // x, v, a into the local copies
+  void copy_to_local(size_t g, State& local) const;  // x, v, a of g into its local copy, if any
+  void scatter(std::span<const int> nodes, State& local) const;  // x, v, a into the local copies
   void finish_step(double dt);  // the integrator's fixed nodes and velocity correction
   void finish_node(size_t g, double half_dt);
   void scatter_and_finish(State& local, double dt);
