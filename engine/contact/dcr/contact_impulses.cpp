@@ -169,7 +169,8 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
   double v_ref = 0.0;
   for (const ContactRow& r : rows)
     for (int n : r.nodes) v_ref = std::max(v_ref, v[static_cast<size_t>(n)].norm());
-  const double limit = settings.tolerance * std::max(v_ref, 1e-300);
+  const double limit =
+      std::max(settings.tolerance * std::max(v_ref, 1e-300), settings.velocity_floor);
   if (settings.warm_start) warm_start(rows, inv_m, v, settings.friction);
   link_rows(rows);
   dirty_.assign(rows.size(), 1);

@@ -46,10 +46,11 @@ struct ContactRow {
 };
 
 struct ImpulseSettings {
-  double friction = 0.0;     // Coulomb mu
-  int max_iterations = 100;  // Gauss-Seidel sweeps
-  double tolerance = 1e-9;   // stop when no row changes a velocity by more than this x v_ref
-  bool warm_start = true;    // start held contacts from the last step's impulses
+  double friction = 0.0;        // Coulomb mu
+  int max_iterations = 100;     // Gauss-Seidel sweeps
+  double tolerance = 1e-9;      // stop when no row changes a velocity by more than this x v_ref
+  bool warm_start = true;       // start held contacts from the last step's impulses
+  double velocity_floor = 0.0;  // ... or by more than this [m/s], whichever limit is larger
 };
 
 struct ImpulseSolve {

@@ -19,8 +19,15 @@ namespace {
 // Tolerance of the barycentric / edge-parameter inclusion tests in the CCD.
 constexpr double kInclusionTolerance = 1e-6;
 
+// The position projection's dead band: a constraint within this x the kept separation of it
+// is met (project_positions).
+constexpr double kDeadBand = 1e-3;
+
 // Velocity solve converged when no contact changes a velocity by more than this x the fastest
-// contact node.
+// contact node, or by more than kDeadBand x the kept separation per step (velocity_floor), a
+// change that moves a node over the step by less than the projection's dead band. A resting
+// contact's fastest node moves at about g dt, and the relative limit alone then asks the sweeps
+// for changes far below anything the positions show (docs/hard-scenes.md).
 constexpr double kVelocityTolerance = 1e-6;
 
 // The pair distance cache re-anchors when a node moved this x the shortest edge from its anchor
@@ -167,6 +174,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   // Persistent contacts: far below an element, far above the kept separation.
   proximity_ = settings_.proximity * min_edge_;
   X_ = mesh.X;
+  lengths_ = reference_lengths(features_, X_);
   v_end_.assign(mesh.X.size(), Vec3::Zero());
   count_.assign(mesh.X.size(), 0);
   touched_.assign(mesh.X.size(), 0);
@@ -472,7 +480,7 @@ bool DcrContact::project_positions(State& s) {
       }
       c.projected = true;
     }
-    if (worst <= 1e-3 * separation_) return true;
+    if (worst <= kDeadBand * separation_) return true;
   }
   return constraints_.empty();
 }
@@ -608,9 +616,11 @@ void DcrContact::exchange_momentum(State& s, double dt) {
   std::sort(near_.begin(), near_.end());
   near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
   restitution_.before_solve(near_, s, dt);
-  const ImpulseSolve solve =
-      impulses_.solve(rows_, order_, inv_m_, v_end,
-                      {settings_.friction, settings_.max_iterations, kVelocityTolerance});
+  const ImpulseSolve solve = impulses_.solve(rows_, order_, inv_m_, v_end,
+                                             {.friction = settings_.friction,
+                                              .max_iterations = settings_.max_iterations,
+                                              .tolerance = kVelocityTolerance,
+                                              .velocity_floor = kDeadBand * separation_ / dt});
   sweeps_ = solve.sweeps;
   if (!solve.converged) ++unconverged_velocity_;
 
@@ -658,7 +668,7 @@ void DcrContact::collect_pair_impulses(const std::vector<Vec3>& x) {
 // path the CCD assumed.
 ContactStepBound DcrContact::step_bound(const State& state) const {
   const PairStepLimit local =
-      pair_step_limit(features_, candidates_, X_, state.x, state.v, settings_.step_fraction);
+      pair_step_limit(features_, candidates_, lengths_, state.x, state.v, settings_.step_fraction);
   return {.kinematic_dt = std::min(local.dt, approach_limit(state))};
 }
 

@@ -39,6 +39,7 @@
 #include "engine/contact/dcr/pair_distance_cache.hpp"
 #include "engine/contact/dcr/pair_restitution.hpp"
 #include "engine/contact/dcr/projection_update.hpp"
+#include "engine/contact/dcr/step_limit.hpp"
 #include "engine/contact/dcr/thread_chunks.hpp"
 #include "engine/observe/history.hpp"
 
@@ -191,6 +192,7 @@ class DcrContact : public ContactModel, public HistorySource {
   std::vector<ConstraintKey> keys_;       // scratch: geometric key per constraint
   std::vector<int> order_;                // the constraints in the order of their keys
   std::vector<Vec3> X_;                   // reference positions
+  ReferenceLengths lengths_;              // of the surface's faces and edges (step limit)
   std::vector<Vec3> x_start_, v_before_;  // scratch: state before the correction
   std::vector<int> moved_;                // scratch: nodes of the constraints of the step
   std::vector<char> touched_;             // scratch: per node, moved by the projection

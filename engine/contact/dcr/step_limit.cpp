@@ -49,8 +49,19 @@ double allowed(double gap, double L, double u, double step_fraction) {
 
 }  // namespace
 
+ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<Vec3>& X) {
+  ReferenceLengths out;
+  out.face_shortest_edge.reserve(f.faces.size());
+  for (const Triangle& t : f.faces)
+    out.face_shortest_edge.push_back(std::min(
+        {edge_length(X, t[0], t[1]), edge_length(X, t[1], t[2]), edge_length(X, t[2], t[0])}));
+  out.edge.reserve(f.edges.size());
+  for (const auto& e : f.edges) out.edge.push_back(edge_length(X, e[0], e[1]));
+  return out;
+}
+
 PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
-                              const std::vector<Vec3>& X, const std::vector<Vec3>& x,
+                              const ReferenceLengths& lengths, const std::vector<Vec3>& x,
                               const std::vector<Vec3>& v, double step_fraction) {
   PairStepLimit out{std::numeric_limits<double>::infinity(), -1};
   auto keep = [&](double dt, size_t k) {
@@ -58,9 +69,9 @@ PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
   };
   for (size_t k = 0; k < c.node_face.size(); ++k) {
     const int p = f.nodes[static_cast<size_t>(c.node_face[k].node)];
-    const Triangle& t = f.faces[static_cast<size_t>(c.node_face[k].face)];
-    const double L = std::min(
-        {edge_length(X, t[0], t[1]), edge_length(X, t[1], t[2]), edge_length(X, t[2], t[0])});
+    const auto face = static_cast<size_t>(c.node_face[k].face);
+    const Triangle& t = f.faces[face];
+    const double L = lengths.face_shortest_edge[face];
     if (!may_bind(L, relative_speed(t, std::array<int, 1>{p}, v), step_fraction, out.dt)) continue;
     const Vec3& a = x[t[0]];
     Vec3 n = (x[t[1]] - a).cross(x[t[2]] - a);
@@ -75,9 +86,11 @@ PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
   }
   const size_t n_nf = c.node_face.size();
   for (size_t k = 0; k < c.edge_edge.size(); ++k) {
-    const auto& ea = f.edges[static_cast<size_t>(c.edge_edge[k].edge_a)];
-    const auto& eb = f.edges[static_cast<size_t>(c.edge_edge[k].edge_b)];
-    const double L = std::min(edge_length(X, ea[0], ea[1]), edge_length(X, eb[0], eb[1]));
+    const auto edge_a = static_cast<size_t>(c.edge_edge[k].edge_a);
+    const auto edge_b = static_cast<size_t>(c.edge_edge[k].edge_b);
+    const auto& ea = f.edges[edge_a];
+    const auto& eb = f.edges[edge_b];
+    const double L = std::min(lengths.edge[edge_a], lengths.edge[edge_b]);
     if (!may_bind(L, relative_speed(ea, eb, v), step_fraction, out.dt)) continue;
     const Vec3 da = x[ea[1]] - x[ea[0]], db = x[eb[1]] - x[eb[0]];
     const Vec3 between = 0.5 * (x[eb[0]] + x[eb[1]] - x[ea[0]] - x[ea[1]]);

@@ -23,9 +23,17 @@ struct PairStepLimit {
   int pair = -1;    // candidate index that set it (node-face first, then edge-edge), -1: none
 };
 
-// X: reference positions; x, v: current positions and velocities (all indexed by global node id).
+// The reference lengths L a pair takes its shortest edge from, computed once per surface: per
+// face its shortest edge, per edge its length (X: reference positions).
+struct ReferenceLengths {
+  std::vector<double> face_shortest_edge;
+  std::vector<double> edge;
+};
+ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<Vec3>& X);
+
+// x, v: current positions and velocities (indexed by global node id).
 PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
-                              const std::vector<Vec3>& X, const std::vector<Vec3>& x,
+                              const ReferenceLengths& lengths, const std::vector<Vec3>& x,
                               const std::vector<Vec3>& v, double step_fraction);
 
 }  // namespace ccm::dcr

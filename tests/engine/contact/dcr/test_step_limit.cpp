@@ -27,7 +27,7 @@ struct NodeAboveFace {
 NodeAboveFace node_above_face(double d) {
   NodeAboveFace s;
   const double h = 1e-3;
-  s.X = {Vec3(0, 0, 0), Vec3(h, 0, 0), Vec3(0, h, 0), Vec3(0.2 * h, 0.2 * h, d),
+  s.X = {Vec3(0, 0, 0), Vec3(h, 0, 0),       Vec3(0, h, 0), Vec3(0.2 * h, 0.2 * h, d),
          Vec3(1, 1, 1), Vec3(1 + 1e-6, 1, 1)};
   s.x = s.X;
   s.v.assign(s.X.size(), Vec3::Zero());
@@ -45,12 +45,13 @@ TEST_CASE("DCR step limit: a node approaching a face may close its gap plus half
   const double d = 2e-4, u = 3.0, fraction = 0.5;
   NodeAboveFace s = node_above_face(d);
   s.v[3] = Vec3(0.7, -0.4, -u);  // the tangential part does not count
-  const PairStepLimit r = pair_step_limit(s.f, s.c, s.X, s.x, s.v, fraction);
+  const PairStepLimit r =
+      pair_step_limit(s.f, s.c, reference_lengths(s.f, s.X), s.x, s.v, fraction);
   CHECK(r.pair == 0);
   CHECK(r.dt == Approx((d + fraction * 1e-3) / u).epsilon(1e-12));
   // The face moving up at the same speed as the node: the pair approaches at 2u.
   for (int a = 0; a < 3; ++a) s.v[static_cast<size_t>(a)] = Vec3(0, 0, u);
-  CHECK(pair_step_limit(s.f, s.c, s.X, s.x, s.v, fraction).dt ==
+  CHECK(pair_step_limit(s.f, s.c, reference_lengths(s.f, s.X), s.x, s.v, fraction).dt ==
         Approx((d + fraction * 1e-3) / (2 * u)).epsilon(1e-12));
 }
 
@@ -58,17 +59,18 @@ TEST_CASE("DCR step limit: translation, separation and a short edge elsewhere do
           "[dcr][step_limit]") {
   NodeAboveFace s = node_above_face(2e-4);
   for (Vec3& v : s.v) v = Vec3(-50.0, 20.0, -300.0);  // everything translates together
-  CHECK(pair_step_limit(s.f, s.c, s.X, s.x, s.v, 0.5).dt == kNoLimit);
+  CHECK(pair_step_limit(s.f, s.c, reference_lengths(s.f, s.X), s.x, s.v, 0.5).dt == kNoLimit);
   s.v[3] += Vec3(0, 0, 1.0);  // the node leaves the face
-  CHECK(pair_step_limit(s.f, s.c, s.X, s.x, s.v, 0.5).dt == kNoLimit);
+  CHECK(pair_step_limit(s.f, s.c, reference_lengths(s.f, s.X), s.x, s.v, 0.5).dt == kNoLimit);
   s.v[3] += Vec3(0, 0, -2.0);  // approaches at 1 m/s: the 1 um edge (4, 5) plays no part
-  CHECK(pair_step_limit(s.f, s.c, s.X, s.x, s.v, 0.5).dt ==
+  CHECK(pair_step_limit(s.f, s.c, reference_lengths(s.f, s.X), s.x, s.v, 0.5).dt ==
         Approx((2e-4 + 0.5e-3) / 1.0).epsilon(1e-12));
   // A node below the face (penetrated, or on the other side) approaching it from there.
   NodeAboveFace below = node_above_face(-2e-4);
   below.v[3] = Vec3(0, 0, 4.0);
-  CHECK(pair_step_limit(below.f, below.c, below.X, below.x, below.v, 0.5).dt ==
-        Approx((2e-4 + 0.5e-3) / 4.0).epsilon(1e-12));
+  CHECK(
+      pair_step_limit(below.f, below.c, reference_lengths(below.f, below.X), below.x, below.v, 0.5)
+          .dt == Approx((2e-4 + 0.5e-3) / 4.0).epsilon(1e-12));
 }
 
 TEST_CASE("DCR step limit: two crossing edges, the shorter edge and the fastest node pair",
@@ -86,7 +88,7 @@ TEST_CASE("DCR step limit: two crossing edges, the shorter edge and the fastest 
   v[2] = Vec3(0, 0, -1.0);
   v[3] = Vec3(0, 0, -2.0);  // the edge also rotates: its faster end counts
   v[0] = Vec3(0, 0, 0.5);
-  const PairStepLimit r = pair_step_limit(f, c, X, X, v, 0.5);
+  const PairStepLimit r = pair_step_limit(f, c, reference_lengths(f, X), X, v, 0.5);
   CHECK(r.pair == 0);
   CHECK(r.dt == Approx((d + 0.5 * 0.5e-3) / 2.5).epsilon(1e-12));
 }
