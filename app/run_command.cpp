@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <ctime>
+#include <exception>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -39,6 +40,12 @@ namespace {
 namespace fs = std::filesystem;
 using SystemClock = std::chrono::system_clock;
 
+// An error met by every rank is told by rank 0 alone; the other ranks are quiet.
+bool g_quiet_rank = false;
+// Set once the ranks have agreed that each prepared the scene: an error after that may be one
+// rank's alone, and ends the whole job (run_command).
+bool g_stepping = false;
+
 // Bad command-line input that is not about the scene file.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -67,25 +74,38 @@ void check_out_dir(const fs::path& out) {
 
 // The scene's text and the name it goes by: a file, or stdin for "-" (`ccm study scene ... |
 // ccm run - --out DIR`; a relative mesh path is then taken from the working directory).
-fs::path read_scene(const RunArgs& args, std::string& text) {
+fs::path read_scene(const RunArgs& args, const std::string& piped, std::string& text) {
   if (args.scene != "-") {
     text = read_config_text(args.scene);
     return args.scene;
   }
-  std::ostringstream all;  // (istreambuf_iterator here draws a GCC 12 -Wnull-dereference)
-  all << std::cin.rdbuf();
-  if (std::cin.bad()) throw UsageError("cannot read the scene from stdin");
-  text = all.str();
+  text = piped;
   return kStdinSceneName;
 }
 
-void prepare(const RunArgs& args, Prepared& p) {
+// The standard input, for a scene given as "-". Under mpirun only rank 0 has it: rank 0 reads
+// it and passes it on, so that every rank prepares the same scene. A read that fails leaves
+// rank 0's text empty and is reported by read_failed (rank 0's preparation then fails).
+std::string piped_scene(const RunArgs& args, const study::RankContext& ranks, bool& read_failed) {
+  std::string text;
+  read_failed = false;
+  if (args.scene != "-") return text;
+  if (ranks.is_root()) {
+    std::ostringstream all;  // (istreambuf_iterator here draws a GCC 12 -Wnull-dereference)
+    all << std::cin.rdbuf();
+    read_failed = std::cin.bad();
+    text = all.str();
+  }
+  return ranks.broadcast_text(text);
+}
+
+void prepare(const RunArgs& args, const std::string& piped, Prepared& p) {
   try {
     set_default_threads(resolve_threads(args.threads, available_cores()));
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  const fs::path source = read_scene(args, p.text);
+  const fs::path source = read_scene(args, piped, p.text);
   p.scene = parse_scene(p.text, source);
   if (args.fields) p.scene.output.fields = fields::all_fields();
   for (const std::string& w : p.scene.warnings) fmt::print(stderr, "ccm: warning: {}\n", w);
@@ -276,16 +296,42 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   return summary;
 }
 
+// Every rank prepares the scene alone. One that fails where the others do not (a file missing on
+// one machine) would leave them waiting in the run's first collective, so the ranks agree
+// first: a rank that failed rethrows its error (told by rank 0 if it failed too, else by the
+// failing ranks themselves), and the others end with a usage error naming how many failed.
+void agree_on_preparation(const study::RankContext& ranks, const std::exception_ptr& failure) {
+  if (ranks.size() > 1) {
+    const bool root_failed = ranks.broadcast_flag(failure != nullptr);
+    const long failed = ranks.sum(failure ? 1 : 0);
+    if (failure && !root_failed) g_quiet_rank = false;
+    if (!failure && failed > 0)
+      throw UsageError(
+          fmt::format("{} of the {} MPI ranks could not prepare the scene", failed, ranks.size()));
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
 // Under mpirun with more than one rank, the scene's mesh is partitioned over the ranks (every
 // rank prepares the whole scene, steps its subdomain); rank 0 alone writes and prints.
 int run(const RunArgs& args, const study::RankContext& ranks) {
   const std::string started = utc_timestamp(SystemClock::now());
+  bool read_failed = false;
+  const std::string piped = piped_scene(args, ranks, read_failed);
   Prepared p;
-  prepare(args, p);
-  if (ranks.size() > 1 && !p.scene.output.fields.empty())
-    throw UsageError(
-        "field output (--fields, [output] fields) is not available in a run "
-        "partitioned over MPI ranks: run it on one rank");
+  std::exception_ptr failure;
+  try {
+    if (read_failed) throw UsageError("cannot read the scene from stdin");
+    prepare(args, piped, p);
+    if (ranks.size() > 1 && !p.scene.output.fields.empty())
+      throw UsageError(
+          "field output (--fields, [output] fields) is not available in a run "
+          "partitioned over MPI ranks: run it on one rank");
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  agree_on_preparation(ranks, failure);
+  g_stepping = true;
   if (ranks.is_root()) {
     fs::create_directories(args.out);
     write_atomic(args.out / "scene.toml", p.text);
@@ -312,13 +358,24 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
   return code;
 }
 
-// Every rank meets the same error; rank 0 tells it.
-bool g_quiet_rank = false;
-
 void report(std::string_view kind, std::string_view message) {
   if (g_quiet_rank) return;
   std::fflush(stdout);
   fmt::print(stderr, "ccm: {}: {}\n", kind, message);
+}
+
+// Reports an error and returns its exit code. Once the ranks have agreed on the preparation
+// (g_stepping), an error may be one rank's alone while the others wait in a collective: that
+// rank tells it with its number and ends the whole job with the code.
+int fail(const study::RankContext& ranks, std::string_view kind, std::string_view message,
+         int code) {
+  if (g_stepping && ranks.size() > 1) {
+    g_quiet_rank = false;
+    report(kind, fmt::format("rank {}: {}", ranks.rank(), message));
+    ranks.abort_all(code);
+  }
+  report(kind, message);
+  return code;
 }
 
 }  // namespace
@@ -338,19 +395,16 @@ int run_command(const RunArgs& args) {
   try {
     return run(args, ranks);
   } catch (const ConfigError& e) {
-    report("error", e.what());
-    return exit_code::bad_input;
+    return fail(ranks, "error", e.what(), exit_code::bad_input);
   } catch (const UsageError& e) {
-    report("error", e.what());
-    return exit_code::bad_input;
+    return fail(ranks, "error", e.what(), exit_code::bad_input);
   } catch (const std::exception& e) {
-    report("internal error", e.what());
+    return fail(ranks, "internal error", e.what(), exit_code::internal_error);
   } catch (const std::string& e) {  // Gmsh throws its messages as strings
-    report("internal error", e);
+    return fail(ranks, "internal error", e, exit_code::internal_error);
   } catch (...) {
-    report("internal error", "unknown exception");
+    return fail(ranks, "internal error", "unknown exception", exit_code::internal_error);
   }
-  return exit_code::internal_error;
 }
 
 }  // namespace ccm

@@ -48,4 +48,17 @@ bool RankContext::broadcast_flag(bool flag) const {
   return value != 0;
 }
 
+std::string RankContext::broadcast_text(std::string text) const {
+  if (!mpi_) return text;
+  unsigned long long length = text.size();
+  MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+  return text;
+}
+
+void RankContext::abort_all(int code) const {
+  if (mpi_) MPI_Abort(MPI_COMM_WORLD, code);
+}
+
 }  // namespace ccm::study

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 namespace ccm::study {
 
@@ -29,6 +30,11 @@ class RankContext {
   long sum(long value) const;
   // Rank 0's flag, on every rank (identity without MPI).
   bool broadcast_flag(bool flag) const;
+  // Rank 0's text, on every rank (identity without MPI).
+  std::string broadcast_text(std::string text) const;
+  // Ends every rank of the job with `code` (MPI_Abort), for a failure met by some ranks only,
+  // which would leave the others waiting in a collective; returns without MPI.
+  void abort_all(int code) const;
 
  private:
   bool mpi_ = false;

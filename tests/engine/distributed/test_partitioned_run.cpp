@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "tests/support/temp_dir.hpp"
 
@@ -168,6 +169,51 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR with a body-pair rest
 TEST_CASE("mpiexec -n 2 ccm run equals the serial run: rigid sphere (penalty) on a plate",
           "[distributed][mpi][cli]") {
   require_same_run("sphere_on_plate.toml", 8e-4, 5e-5);
+}
+
+// Under mpiexec only rank 0 has the standard input: a scene piped to `ccm run -` is read by rank
+// 0 and passed on, so the ranks prepare the same scene (before, rank 1 met an empty scene, rank 0
+// went on into the run's first collective and the job hung). The run equals the same scene read
+// from its file by two ranks.
+TEST_CASE("mpiexec -n 2 ccm run - reads the scene from stdin on every rank",
+          "[distributed][mpi][cli]") {
+  REQUIRE(shell("command -v mpiexec > /dev/null 2>&1") == 0);
+  test::TempDir tmp;
+  const fs::path scene = short_scene(tmp, "ball_on_plate_dcr.toml", 3e-4, 5e-5, "");
+  const fs::path piped = tmp.path / "piped", named = tmp.path / "named";
+  const std::string mpi =
+      "ASAN_OPTIONS=detect_leaks=0 timeout 300 mpiexec --allow-run-as-root --oversubscribe -n 2";
+  REQUIRE(shell(fmt::format("{} '{}' run - --out '{}' --quiet < '{}' > '{}' 2>&1", mpi, CCM_BINARY,
+                            piped.string(), scene.string(), (tmp.path / "piped.log").string())) ==
+          0);
+  REQUIRE(shell(fmt::format("{} '{}' run '{}' --out '{}' --quiet > /dev/null 2>&1", mpi, CCM_BINARY,
+                            scene.string(), named.string())) == 0);
+  CHECK(file_text(piped / "summary.toml").find("ranks = 2") != std::string::npos);
+  CHECK(file_text(piped / "history.csv") == file_text(named / "history.csv"));
+}
+
+// A rank that cannot prepare the scene while the others can (here, by mpiexec's one-program-per-
+// rank form, a file that exists for rank 0 and not for rank 1; on a cluster, a file missing on one
+// machine) ends the whole job with the bad-input code and that rank's message, before anything
+// is written; the ranks that could prepare it do not wait for it in a collective.
+TEST_CASE("mpiexec: a scene one rank cannot prepare ends every rank and writes nothing",
+          "[distributed][mpi][cli]") {
+  REQUIRE(shell("command -v mpiexec > /dev/null 2>&1") == 0);
+  test::TempDir tmp;
+  const fs::path scene = short_scene(tmp, "ball_on_plate_dcr.toml", 3e-4, 5e-5, "");
+  const fs::path missing = tmp.path / "missing.toml", out = tmp.path / "out";
+  const fs::path log = tmp.path / "mpi.log";
+  for (const auto& [first, second] : {std::pair{scene, missing}, std::pair{missing, scene}}) {
+    const int code = shell(fmt::format(
+        "ASAN_OPTIONS=detect_leaks=0 timeout 300 mpiexec --allow-run-as-root --oversubscribe "
+        "-n 1 '{0}' run '{1}' --out '{3}' --quiet : -n 1 '{0}' run '{2}' --out '{3}' --quiet "
+        "> '{4}' 2>&1",
+        CCM_BINARY, first.string(), second.string(), out.string(), log.string()));
+    INFO(file_text(log));
+    CHECK(code == 2);  // exit_code::bad_input (124 would be the timeout: a hang)
+    CHECK(file_text(log).find("missing.toml") != std::string::npos);
+    CHECK(!fs::exists(out));
+  }
 }
 
 }  // namespace ccm
