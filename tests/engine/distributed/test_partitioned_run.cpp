@@ -32,6 +32,14 @@ int shell(const std::string& command) {
   return WEXITSTATUS(status);
 }
 
+// The start of an mpiexec command line, bounded in time (a hang ends as exit 124). The project's
+// set-up installs mpiexec (scripts/install-deps.sh): its absence is a failure. Open MPI's own
+// allocations are not ours to leak-check under the sanitizer build.
+std::string mpiexec() {
+  REQUIRE(shell("command -v mpiexec > /dev/null 2>&1") == 0);
+  return "ASAN_OPTIONS=detect_leaks=0 timeout 600 mpiexec --allow-run-as-root --oversubscribe";
+}
+
 struct History {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
@@ -75,21 +83,22 @@ fs::path short_scene(const test::TempDir& tmp, const std::string& example, doubl
   return tmp.write(example, text);
 }
 
+// The DCR example cut to 0.3 ms (past the first contact), in tmp.
+fs::path short_dcr_scene(const test::TempDir& tmp) {
+  return short_scene(tmp, "ball_on_plate_dcr.toml", 3e-4, 5e-5, "");
+}
+
 // Returns the serial run's history.
 History require_same_run(const std::string& example, double end, double interval,
                          const std::string& restitution = "") {
-  // The project's set-up installs mpiexec (scripts/install-deps.sh): its absence is a failure.
-  REQUIRE(shell("command -v mpiexec > /dev/null 2>&1") == 0);
+  const std::string mpi = mpiexec();
   test::TempDir tmp;
   const fs::path scene = short_scene(tmp, example, end, interval, restitution);
   const fs::path serial = tmp.path / "serial", ranks = tmp.path / "ranks";
   REQUIRE(shell(fmt::format("'{}' run '{}' --out '{}' --quiet", CCM_BINARY, scene.string(),
                             serial.string())) == 0);
-  // Open MPI's own allocations are not ours to leak-check under the sanitizer build.
-  REQUIRE(shell(fmt::format("ASAN_OPTIONS=detect_leaks=0 mpiexec --allow-run-as-root "
-                            "--oversubscribe -n 2 '{}' run '{}' --out '{}' --quiet > '{}' 2>&1",
-                            CCM_BINARY, scene.string(), ranks.string(),
-                            (tmp.path / "mpi.log").string())) == 0);
+  REQUIRE(shell(fmt::format("{} -n 2 '{}' run '{}' --out '{}' --quiet > '{}' 2>&1", mpi, CCM_BINARY,
+                            scene.string(), ranks.string(), (tmp.path / "mpi.log").string())) == 0);
   INFO(file_text(tmp.path / "mpi.log"));
   // Written once, by rank 0: the same three files as a serial run, and it was partitioned.
   int files = 0;
@@ -177,12 +186,10 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: rigid sphere (penalty) on
 // from its file by two ranks.
 TEST_CASE("mpiexec -n 2 ccm run - reads the scene from stdin on every rank",
           "[distributed][mpi][cli]") {
-  REQUIRE(shell("command -v mpiexec > /dev/null 2>&1") == 0);
+  const std::string mpi = mpiexec() + " -n 2";
   test::TempDir tmp;
-  const fs::path scene = short_scene(tmp, "ball_on_plate_dcr.toml", 3e-4, 5e-5, "");
+  const fs::path scene = short_dcr_scene(tmp);
   const fs::path piped = tmp.path / "piped", named = tmp.path / "named";
-  const std::string mpi =
-      "ASAN_OPTIONS=detect_leaks=0 timeout 300 mpiexec --allow-run-as-root --oversubscribe -n 2";
   REQUIRE(shell(fmt::format("{} '{}' run - --out '{}' --quiet < '{}' > '{}' 2>&1", mpi, CCM_BINARY,
                             piped.string(), scene.string(), (tmp.path / "piped.log").string())) ==
           0);
@@ -198,17 +205,16 @@ TEST_CASE("mpiexec -n 2 ccm run - reads the scene from stdin on every rank",
 // is written; the ranks that could prepare it do not wait for it in a collective.
 TEST_CASE("mpiexec: a scene one rank cannot prepare ends every rank and writes nothing",
           "[distributed][mpi][cli]") {
-  REQUIRE(shell("command -v mpiexec > /dev/null 2>&1") == 0);
+  const std::string mpi = mpiexec();
   test::TempDir tmp;
-  const fs::path scene = short_scene(tmp, "ball_on_plate_dcr.toml", 3e-4, 5e-5, "");
+  const fs::path scene = short_dcr_scene(tmp);
   const fs::path missing = tmp.path / "missing.toml", out = tmp.path / "out";
   const fs::path log = tmp.path / "mpi.log";
   for (const auto& [first, second] : {std::pair{scene, missing}, std::pair{missing, scene}}) {
     const int code = shell(fmt::format(
-        "ASAN_OPTIONS=detect_leaks=0 timeout 300 mpiexec --allow-run-as-root --oversubscribe "
-        "-n 1 '{0}' run '{1}' --out '{3}' --quiet : -n 1 '{0}' run '{2}' --out '{3}' --quiet "
+        "{5} -n 1 '{0}' run '{1}' --out '{3}' --quiet : -n 1 '{0}' run '{2}' --out '{3}' --quiet "
         "> '{4}' 2>&1",
-        CCM_BINARY, first.string(), second.string(), out.string(), log.string()));
+        CCM_BINARY, first.string(), second.string(), out.string(), log.string(), mpi));
     INFO(file_text(log));
     CHECK(code == 2);  // exit_code::bad_input (124 would be the timeout: a hang)
     CHECK(file_text(log).find("missing.toml") != std::string::npos);
