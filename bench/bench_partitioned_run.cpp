@@ -5,6 +5,10 @@
 //   bench_partitioned_run SCENE --partitions 2,4,..,64   no run: METIS cut, halo sizes and
 //                                                 neighbour counts per rank count (the model's
 //                                                 inputs)
+//   mpirun -np N bench_partitioned_run SCENE --alternate R
+//                                                 R rounds, each the serial run on rank 0 (the
+//                                                 other ranks asleep) then the partitioned run,
+//                                                 back to back in one process
 // Rank 0 prints one line of key=value pairs per run or partition.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -65,23 +69,73 @@ void print_partitions(const Model& model, const std::vector<int>& contact_region
   }
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The machine's speed drifts between minutes (docs/parallel.md, "Measured"), more than the
+// effect measured; a round puts the serial reference and the partitioned run seconds apart, in
+// one process, so that each round's ratio T_serial / (P T_P) compares runs on the same machine.
+void alternate(const Scene& scene, const Model& model, const study::RankContext& ranks,
+               int rounds) {
+  const distributed::PartitionedContact replicated = partitioned_contact(scene, model);
+  std::vector<double> efficiency;
+  for (int round = 1; round <= rounds; ++round) {
+    RunOptions options;
+    options.time = time_control(scene.time);
+    options.monitor = scene.monitor;
+    double serial = 0.0;
+    if (ranks.is_root()) {
+      ContactSetup contact = build_contact(scene, model);
+      options.contact = contact.model.get();
+      serial = run_explicit(model, options).step_wall_seconds;
+    }
+    ranks.barrier_asleep();  // the waiting ranks leave the machine to rank 0
+    ContactSetup contact = build_contact(scene, model);
+    options.contact = contact.model.get();
+    const RunSummary s = distributed::run_partitioned(model, options, replicated, nullptr);
+    if (!ranks.is_root()) continue;
+    const double e = serial / (ranks.size() * s.step_wall_seconds);
+    efficiency.push_back(e);
+    fmt::print(
+        "round={} ranks={} serial_step_s={:.4f} partitioned_step_s={:.4f} "
+        "efficiency={:.1f}%\n",
+        round, ranks.size(), serial, s.step_wall_seconds, 100.0 * e);
+    std::fflush(stdout);
+  }
+  if (ranks.is_root())
+    fmt::print("rounds={} median_efficiency={:.1f}% lowest={:.1f}% highest={:.1f}%\n", rounds,
+               100.0 * median(efficiency),
+               100.0 * *std::min_element(efficiency.begin(), efficiency.end()),
+               100.0 * *std::max_element(efficiency.begin(), efficiency.end()));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: [mpirun -np N] %s SCENE [--serial | --partitions P,P,...]\n",
+    std::fprintf(stderr,
+                 "usage: [mpirun -np N] %s SCENE [--serial | --partitions P,P,... | "
+                 "--alternate ROUNDS]\n",
                  argv[0]);
     return 2;
   }
   const study::RankContext ranks;
   const bool serial = argc > 2 && !std::strcmp(argv[2], "--serial");
   const bool partitions = argc > 3 && !std::strcmp(argv[2], "--partitions");
+  const bool alternating = argc > 3 && !std::strcmp(argv[2], "--alternate");
   const Scene scene = parse_scene_file(argv[1]);
   const Model model = build_model(scene);
   ContactSetup contact = build_contact(scene, model);
   const distributed::PartitionedContact replicated = partitioned_contact(scene, model);
   if (partitions) {
     if (ranks.is_root()) print_partitions(model, replicated.region, argv[3]);
+    return 0;
+  }
+  if (alternating) {
+    alternate(scene, model, ranks, std::max(1, std::atoi(argv[3])));
     return 0;
   }
   RunOptions options;

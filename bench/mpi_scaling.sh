@@ -7,6 +7,9 @@
 # and on 2 ranks; then the efficiencies of the repeat: whole step T_serial / (2 T_2) and, per
 # phase, T_1,phase / (2 T_2,phase), in wall time (slowest rank) and in thread CPU time (which
 # leaves out the time a rank waits, descheduled, for its peer on a shared machine).
+# Then, per scene, REPEATS alternating rounds in one mpirun job (bench_partitioned_run
+# --alternate): the serial run on rank 0 while rank 1 sleeps, then the 2-rank run, seconds apart,
+# each round's efficiency and their median (the machine's speed drifts between minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeats="${1:-3}"
@@ -35,5 +38,6 @@ for scene in ${SCENES:-bench/scenes/plate_200k.toml bench/scenes/ball_on_plate_d
           100 * s1c / (2 * s2c), (c2c > 0 ? sprintf("%.1f %%", 100 * c1c / (2 * c2c)) : "none"),
           100 * (s1c + c1c) / (2 * (s2c + c2c)) }'
   done
+  "${mpi[@]}" -np 2 ./build/bench_partitioned_run "$scene" --alternate "$repeats"
   ./build/bench_partitioned_run "$scene" --partitions 2,4,8,16,32,64
 done

@@ -2,8 +2,10 @@
 
 #include <mpi.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <initializer_list>
+#include <thread>
 
 namespace ccm::study {
 
@@ -32,6 +34,17 @@ RankContext::~RankContext() {
 
 void RankContext::barrier() const {
   if (mpi_) MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void RankContext::barrier_asleep() const {
+  if (!mpi_) return;
+  MPI_Request request;
+  MPI_Ibarrier(MPI_COMM_WORLD, &request);
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
 }
 
 long RankContext::sum(long value) const {

@@ -26,6 +26,9 @@ class RankContext {
   }
   // Waits for every rank (no-op without MPI).
   void barrier() const;
+  // The same, asleep between polls (1 ms) instead of spinning: ranks that wait for a long
+  // computation on another leave the cores to it.
+  void barrier_asleep() const;
   // Sum of a count over all ranks (identity without MPI).
   long sum(long value) const;
   // Rank 0's flag, on every rank (identity without MPI).
