@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_statistics.hpp"
 #include "engine/bc/node_selection.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
@@ -165,12 +166,6 @@ std::string load_average() {
   return one + " " + five + " " + fifteen;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
 // Least-squares slope of log(y) against log(x).
 double fitted_exponent(const std::vector<double>& x, const std::vector<double>& y) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -246,8 +241,8 @@ int main(int argc, char** argv) {
       ratio.push_back(res.ratio());
       if (r == 0) triangles.push_back(res.surface_triangles);
     }
-    contact_ms.push_back(median(contact));
-    ratios.push_back(median(ratio));
+    contact_ms.push_back(bench::median(contact));
+    ratios.push_back(bench::median(ratio));
     worst_ratio = std::max(worst_ratio, *std::max_element(ratio.begin(), ratio.end()));
     std::printf("level %d: median contact %.4f ms/step, median ratio %.3f (range %.3f - %.3f)\n",
                 level, contact_ms.back(), ratios.back(),

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/partitioned_contact.hpp"
+#include "bench/bench_statistics.hpp"
 #include "engine/distributed/distributed_run.hpp"
 #include "engine/distributed/partition.hpp"
 #include "engine/distributed/subdomain.hpp"
@@ -69,12 +70,6 @@ void print_partitions(const Model& model, const std::vector<int>& contact_region
   }
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // The machine's speed drifts between minutes (docs/parallel.md, "Measured"), more than the
 // effect measured; a round puts the serial reference and the partitioned run seconds apart, in
 // one process, so that each round's ratio T_serial / (P T_P) compares runs on the same machine.
@@ -107,7 +102,7 @@ void alternate(const Scene& scene, const Model& model, const study::RankContext&
   }
   if (ranks.is_root())
     fmt::print("rounds={} median_efficiency={:.1f}% lowest={:.1f}% highest={:.1f}%\n", rounds,
-               100.0 * median(efficiency),
+               100.0 * bench::median(efficiency),
                100.0 * *std::min_element(efficiency.begin(), efficiency.end()),
                100.0 * *std::max_element(efficiency.begin(), efficiency.end()));
 }

@@ -44,12 +44,6 @@ constexpr double kRestingAim = 1.001;
 // Tolerance of the "projection inside the face" test of a persistent contact (barycentric).
 constexpr double kPersistentTolerance = 1e-6;
 
-double shortest_edge(const SurfaceFeatures& f, const std::vector<Vec3>& X) {
-  double h = std::numeric_limits<double>::infinity();
-  for (const auto& e : f.edges) h = std::min(h, (X[e[1]] - X[e[0]]).norm());
-  return h;
-}
-
 // The bodies that own a feature of the contact surfaces, sorted.
 std::vector<int> contact_bodies(const SurfaceFeatures& f) {
   std::vector<int> bodies(f.node_body.begin(), f.node_body.end());
@@ -168,13 +162,14 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
       node_body_[static_cast<size_t>(mesh.bodies[b].first_node + n)] = static_cast<int>(b);
   inv_m_.assign(mesh.X.size(), 0.0);  // filled from the state's masses at the first step
   for (int n : fixed_nodes) inv_m_[static_cast<size_t>(n)] = -1.0;  // marker: never moves
-  min_edge_ = shortest_edge(features_, mesh.X);
+  X_ = mesh.X;
+  lengths_ = reference_lengths(features_, X_);
+  min_edge_ = std::numeric_limits<double>::infinity();  // the shortest surface edge
+  for (double h : lengths_.edge) min_edge_ = std::min(min_edge_, h);
   // Kept gap after projection: far below the mesh size, far above round-off.
   separation_ = 1e-4 * min_edge_;
   // Persistent contacts: far below an element, far above the kept separation.
   proximity_ = settings_.proximity * min_edge_;
-  X_ = mesh.X;
-  lengths_ = reference_lengths(features_, X_);
   v_end_.assign(mesh.X.size(), Vec3::Zero());
   count_.assign(mesh.X.size(), 0);
   touched_.assign(mesh.X.size(), 0);
