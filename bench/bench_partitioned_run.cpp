@@ -73,9 +73,9 @@ void print_partitions(const Model& model, const std::vector<int>& contact_region
 // The machine's speed drifts between minutes (docs/parallel.md, "Measured"), more than the
 // effect measured; a round puts the serial reference and the partitioned run seconds apart, in
 // one process, so that each round's ratio T_serial / (P T_P) compares runs on the same machine.
-void alternate(const Scene& scene, const Model& model, const study::RankContext& ranks,
+void alternate(const Scene& scene, const Model& model,
+               const distributed::PartitionedContact& replicated, const study::RankContext& ranks,
                int rounds) {
-  const distributed::PartitionedContact replicated = partitioned_contact(scene, model);
   std::vector<double> efficiency;
   for (int round = 1; round <= rounds; ++round) {
     RunOptions options;
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (alternating) {
-    alternate(scene, model, ranks, std::max(1, std::atoi(argv[3])));
+    alternate(scene, model, replicated, ranks, std::max(1, std::atoi(argv[3])));
     return 0;
   }
   RunOptions options;
