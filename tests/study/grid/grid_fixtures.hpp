@@ -52,6 +52,13 @@ mesh_size_ratio = 0.5
 penalty = 1.0e6
 )";
 
+// kSmallGrid with `tail` (further tables) appended after its last line.
+inline std::string small_grid_plus(std::string_view tail) {
+  std::string text(kSmallGrid);
+  text.append(tail);
+  return text;
+}
+
 // The message of the ConfigError that parsing `text` as "g.toml" throws ("" when it parses).
 inline std::string grid_error_of(std::string_view text) {
   try {

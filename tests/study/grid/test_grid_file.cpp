@@ -9,6 +9,7 @@
 using Catch::Contains;
 using ccm::test::grid_error_of;
 using ccm::test::kSmallGrid;
+using ccm::test::small_grid_plus;
 using ccm::test::small_grid_with;
 using namespace ccm::study;
 
@@ -78,7 +79,7 @@ TEST_CASE("grid file errors name the file, the line and the key", "[grid]") {
     CHECK_THAT(grid_error_of(small_grid_with("output_interval = 1e-3",
                                              "output_interval = 1e-3\ndt_safety = 0.0")),
                Contains("g.toml:10: time.dt_safety: must lie in (0, 1] (got 0)"));
-    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\nrestitution = 2.0\n"),
+    CHECK_THAT(grid_error_of(small_grid_plus("\n[contact]\nrestitution = 2.0\n")),
                Contains("g.toml:25: contact.restitution: must lie in [0, 1] (got 2)"));
     CHECK_THAT(
         grid_error_of(small_grid_with("KE = [10.0, 100.0]", "KE = [10.0]\nfriction = [-0.1]")),
@@ -94,15 +95,13 @@ TEST_CASE("grid file errors name the file, the line and the key", "[grid]") {
     CHECK_THAT(
         grid_error_of(small_grid_with("mesh_size = 0.1", "mesh_size = 0.1\nsupport = \"wall\"")),
         Contains("g.toml:18: artifact.support: must be \"base\" or \"edges\""));
-    const std::string four_scales =
-        std::string(kSmallGrid) +
+    const std::string four_scales = small_grid_plus(
         "\n[convergence]\npoints = [{ ER = 1.0, RLS = 0.5, KE = 10.0 }]\n"
-        "mesh_scales = [1.0, 0.8, 0.6, 0.4]\n";
+        "mesh_scales = [1.0, 0.8, 0.6, 0.4]\n");
     CHECK_THAT(grid_error_of(four_scales),
                Contains("g.toml:26: convergence.mesh_scales: needs 2 or 3 mesh scales (got 4)"));
-    const std::string bad_point = std::string(kSmallGrid) +
-                                  "\n[convergence]\npoints = [{ ER = 1.0, RLS = 0.5 }]\n"
-                                  "mesh_scales = [1.0, 0.5]\n";
+    const std::string bad_point = small_grid_plus(
+        "\n[convergence]\npoints = [{ ER = 1.0, RLS = 0.5 }]\nmesh_scales = [1.0, 0.5]\n");
     CHECK_THAT(grid_error_of(bad_point),
                Contains("g.toml:25: convergence.points[0].KE: required key is missing"));
   }
