@@ -3,7 +3,7 @@
 // artifact kinetic energy at t_f for both models). It asserts only what must hold whatever the
 // physics shows: every grid run completes (a convergence run may end unstable, with a reason),
 // both models of a point share the sample times, and the artifact is at rest (to round-off)
-// before the first touch at t_c.
+// before the step in which the sphere reaches it at t_c.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -70,12 +70,16 @@ void run_and_check(const GridSpec& g, const std::vector<GridPoint>& points,
     }
     if (!c.completed() || !r.completed()) continue;
     CHECK(c.artifact.time == r.artifact.time);
-    for (size_t i = 0; i < c.artifact.time.size(); ++i)
-      if (c.artifact.time[i] < g.time.contact_time - 1e-9) {
-        // At rest up to the round-off of the internal forces at F = I (~1e-28 J measured).
-        CHECK(c.artifact.kinetic_energy[i] < 1e-12 * p.kinetic_energy);
-        CHECK(r.artifact.kinetic_energy[i] < 1e-12 * p.kinetic_energy);
-      }
+    // At rest up to the round-off of the internal forces at F = I (~1e-27 J measured) before the
+    // step in which the sphere reaches the plate. DCR exchanges momentum at the start of that
+    // step (the velocity row lets a contact close only what is left of its gap, less the kept
+    // separation, over the next step: docs/contact-method.md, "velocity row"), so with a 1 ms step
+    // (ER = 1) the sample at t_c - 1 ms already holds that impulse (1.4e-8 J for ER 1, RLS 0.5, KE
+    // 10). Every model's step before the touch is at most its initial stable step.
+    for (const RunRecord* run : {&c, &r})
+      for (size_t i = 0; i < run->artifact.time.size(); ++i)
+        if (run->artifact.time[i] < g.time.contact_time - run->initial_stable_dt - 1e-9)
+          CHECK(run->artifact.kinetic_energy[i] < 1e-12 * p.kinetic_energy);
   }
   fmt::print("total run wall time (set-up excluded): {:.1f} s\n", wall);
 }
