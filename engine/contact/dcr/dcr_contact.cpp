@@ -352,17 +352,25 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p, c
                                 x1[t[2]], proximity_))
     return std::nullopt;
   if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return std::nullopt;
-  const bool crossed = node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
-                                     x1[t[2]], kInclusionTolerance)
-                           .has_value();
-  if (!crossed) {
-    const double g1 = node_face_volume(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]);
-    const double third_area = (x1[t[1]] - x1[t[0]]).cross(x1[t[2]] - x1[t[0]]).norm() / 6.0;
-    if (!(g1 >= 0.0 && g1 <= proximity_ * third_area)) return std::nullopt;
-    if (!projects_inside(x1[p], x1[t[0]], x1[t[1]], x1[t[2]], kPersistentTolerance))
-      return std::nullopt;
-  }
-  return Constraint{nodes, true, 1.0, false};
+  // Either test makes the pair the same contact: the cheap persistent test goes first, so that a
+  // resting pair (the common case of resting contact) needs no CCD.
+  if (persists_within_proximity(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]) ||
+      node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]], x1[t[2]],
+                    kInclusionTolerance)
+          .has_value())
+    return Constraint{nodes, true, 1.0, false};
+  return std::nullopt;
+}
+
+// Persistent contact at the end positions: the node lies outward of the face within the
+// proximity distance (0 <= g <= proximity x |face| / 3 for the volume measure g) and projects
+// inside it.
+bool DcrContact::persists_within_proximity(const Vec3& p, const Vec3& a, const Vec3& b,
+                                           const Vec3& c) const {
+  const double g1 = node_face_volume(p, a, b, c);
+  const double third_area = (b - a).cross(c - a).norm() / 6.0;
+  return g1 >= 0.0 && g1 <= proximity_ * third_area &&
+         projects_inside(p, a, b, c, kPersistentTolerance);
 }
 
 // Two edges are a contact when they cross during the step (CCD); the admissible side is the one

@@ -146,6 +146,7 @@ class DcrContact : public ContactModel, public HistorySource {
   // k: the candidate's index, for the cache (may be null).
   std::optional<Constraint> node_face_contact(const State& s, int p, const Triangle& t, size_t k,
                                               PairDistanceCache* cache) const;
+  bool persists_within_proximity(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) const;
   // edge_a, edge_b: indices into features_.edges.
   std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b, size_t k,
                                               PairDistanceCache* cache) const;
