@@ -19,6 +19,14 @@ double median_face_extent(const std::vector<Box>& faces, std::vector<double>& sc
   return *mid;
 }
 
+// The largest side of the swept node boxes: how far the fastest node moved along an axis.
+double largest_step_motion(const std::vector<Box>& nodes) {
+  double motion = 0.0;
+  for (const Box& b : nodes)
+    motion = std::max({motion, b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+  return motion;
+}
+
 }  // namespace
 
 void BroadPhase::reset() {
@@ -110,7 +118,9 @@ void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_c
   self_contact_ = self_contact;
 
   feature_boxes(topology_, node_box_, 0.0, cached_, *loops_);
-  const double h = kHalfSkinFraction * median_face_extent(cached_.face, extent_);
+  const double extent = median_face_extent(cached_.face, extent_);
+  const double h = std::clamp(kSkinSteps * largest_step_motion(node_box_),
+                              kMinHalfSkinFraction * extent, kHalfSkinFraction * extent);
   allowance_ = node_box_;
   for (Box& b : allowance_)
     for (size_t d = 0; d < 3; ++d) {

@@ -14,8 +14,11 @@
 // leaves its allowance box (it moved about h since the rebuild), or the surface, inflation or
 // self_contact changes, the cache is rebuilt from the current step's boxes.
 //
-// h = kHalfSkinFraction x the median largest extent of the face boxes at the rebuild (about a
-// quarter of an edge at rest, more when the surface moves fast). A step then costs O(surface
+// The half skin h trades rebuilds against the size of the cache, which the filter walks every
+// step. It covers kSkinSteps steps of the fastest node's motion in the rebuild's step, within
+// [kMinHalfSkinFraction, kHalfSkinFraction] x the median largest extent of the face boxes at the
+// rebuild (a quarter of an edge at most; a slow or resting surface caches only the pairs within
+// about 2 % of an edge). h changes the work, never the result. A step then costs O(surface
 // nodes) for the skin check plus O(cached pairs and their features) for the filter, with no
 // hashing; a rebuild costs one grid search.
 #pragma once
@@ -44,7 +47,9 @@ struct BroadPhaseStats : SearchStats {
 
 class BroadPhase {
  public:
-  static constexpr double kHalfSkinFraction = 0.25;
+  static constexpr double kHalfSkinFraction = 0.25;     // the largest h / median face extent
+  static constexpr double kMinHalfSkinFraction = 0.02;  // the smallest h / median face extent
+  static constexpr double kSkinSteps = 200;             // steps of motion the skin covers
 
   // Every pair of the surface whose swept boxes [min(x_start, x_end) - inflation,
   // max(x_start, x_end) + inflation] overlap (closed intervals), except:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,48 @@ constexpr double kMaxCellCoordinate = 4.5e15;  // ~2^52
 
 bool shares_node(const std::array<int, 2>& e, const std::array<int, 2>& g) {
   return e[0] == g[0] || e[0] == g[1] || e[1] == g[0] || e[1] == g[1];
+}
+
+Box empty_box() {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  return {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}};  // overlaps nothing
+}
+
+void extend(Box& hull, const Box& b) {
+  for (size_t d = 0; d < 3; ++d) {
+    hull.lo[d] = std::min(hull.lo[d], b.lo[d]);
+    hull.hi[d] = std::max(hull.hi[d], b.hi[d]);
+  }
+}
+
+// Per body, the hull of the boxes of its features.
+const std::vector<Box>& hulls_per_body(const std::vector<int>& body, const std::vector<Box>& boxes,
+                                       size_t n_bodies, std::vector<Box>& hull) {
+  hull.assign(n_bodies, empty_box());
+  if (n_bodies == 0) return hull;
+  for (size_t i = 0; i < boxes.size(); ++i) extend(hull[static_cast<size_t>(body[i])], boxes[i]);
+  return hull;
+}
+
+// in[i]: whether feature i (of body body[i]) may meet a partner, i.e. its box overlaps the hull
+// of another body's partner features; every feature when self-contact is on (no hulls).
+void mark_reachable(const std::vector<int>& body, const std::vector<Box>& boxes,
+                    const std::vector<Box>& partner_hulls, bool self_contact,
+                    std::vector<char>& in) {
+  in.resize(boxes.size());
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    bool reachable = self_contact;
+    for (size_t c = 0; c < partner_hulls.size() && !reachable; ++c)
+      reachable = static_cast<int>(c) != body[i] && overlap(boxes[i], partner_hulls[c]);
+    in[i] = reachable;
+  }
+}
+
+size_t count_bodies(const SurfaceFeatures& f) {
+  int last = -1;
+  for (const std::vector<int>* body : {&f.node_body, &f.edge_body, &f.face_body})
+    for (int b : *body) last = std::max(last, b);
+  return static_cast<size_t>(last + 1);
 }
 
 void sort_unique(std::vector<int>& v) {
@@ -66,13 +109,19 @@ std::size_t SweptBoxHash::bucket(std::int64_t i, std::int64_t j, std::int64_t k,
 }
 
 template <typename Record>
-void SweptBoxHash::build(const std::vector<Record>& records, Table& table) {
+void SweptBoxHash::build(const std::vector<Record>& records, const std::vector<char>& in,
+                         Table& table) {
   // Pass 1: cell ranges and the number of entries.
   range_.resize(records.size());
   table.outliers.clear();
   std::size_t n_entries = 0;
   for (size_t e = 0; e < records.size(); ++e) {
     CellRange& r = range_[e];
+    if (!in[e]) {
+      r.lo[0] = 1;  // empty range: not in the grid
+      r.hi[0] = 0;
+      continue;
+    }
     if (!cells_of(records[e].box, r)) {
       table.outliers.push_back(static_cast<int>(e));
       r.lo[0] = 1;  // empty range: not in the grid
@@ -171,6 +220,29 @@ void SweptBoxHash::choose_grid(const FeatureBoxes& boxes) {
   stats_.cell_size = cell;
 }
 
+// Without self-contact a feature pairs only with features of other bodies, so a feature whose
+// box misses the hull of each other body's partner features (faces for a node, nodes for a face,
+// edges for an edge) can pair with nothing: it is neither entered in the grid nor queried. The list
+// is unchanged; the work shrinks to the features near another body.
+void SweptBoxHash::select_features(const SurfaceFeatures& f, const FeatureBoxes& boxes,
+                                   bool self_contact) {
+  const size_t n_bodies = self_contact ? 0 : count_bodies(f);  // no hulls: every feature
+  mark_reachable(f.node_body, boxes.node,
+                 hulls_per_body(f.face_body, boxes.face, n_bodies, partner_hulls_), self_contact,
+                 node_in_);
+  mark_reachable(f.face_body, boxes.face,
+                 hulls_per_body(f.node_body, boxes.node, n_bodies, partner_hulls_), self_contact,
+                 face_in_);
+  mark_reachable(f.edge_body, boxes.edge,
+                 hulls_per_body(f.edge_body, boxes.edge, n_bodies, partner_hulls_), self_contact,
+                 edge_in_);
+  queries_.clear();  // the nodes, then the edges (as n_nodes + edge)
+  for (size_t i = 0; i < node_in_.size(); ++i)
+    if (node_in_[i]) queries_.push_back(i);
+  for (size_t a = 0; a < edge_in_.size(); ++a)
+    if (edge_in_[a]) queries_.push_back(node_in_.size() + a);
+}
+
 void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact,
                         Candidates& out, const ChunkedLoops& loops, const ReplicaTeam* team) {
   out.node_face.clear();
@@ -184,11 +256,12 @@ void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, boo
   for (size_t i = 0; i < f.faces.size(); ++i)
     face_[i] = {boxes.face[i], f.faces[i], f.face_body[i]};
   choose_grid(boxes);
-  build(face_, faces_);
-  build(edge_, edges_);
+  select_features(f, boxes, self_contact);
+  build(face_, face_in_, faces_);
+  build(edge_, edge_in_, edges_);
   // One loop over the queries: the nodes (against the faces), then the edges (against the edges).
   const size_t n_nodes = f.nodes.size();
-  const ItemShare share = share_of(team, n_nodes + f.edges.size());
+  const ItemShare share = share_of(team, queries_.size());
   const size_t n = share.end - share.begin;
   const int chunks = loops.chunks(n, ChunkedLoops::kHeavyItem);
   scratch_.resize(std::max(scratch_.size(), static_cast<size_t>(chunks)));
@@ -197,15 +270,13 @@ void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, boo
   loops.run(
       n,
       [&](size_t first, size_t last, int chunk) {
-        const size_t begin = share.begin + first, end = share.begin + last;
+        const auto begin = queries_.begin() + static_cast<std::ptrdiff_t>(share.begin + first);
+        const auto end = queries_.begin() + static_cast<std::ptrdiff_t>(share.begin + last);
+        const auto edges = std::lower_bound(begin, end, n_nodes);
         QueryScratch& scratch = scratch_[static_cast<size_t>(chunk)];
         scratch.stats = {};
-        if (begin < n_nodes)
-          find_node_face(f, boxes, self_contact, begin, std::min(end, n_nodes), scratch,
-                         node_face_part_[chunk]);
-        if (end > n_nodes)
-          find_edge_edge(f, self_contact, std::max(begin, n_nodes) - n_nodes, end - n_nodes,
-                         scratch, edge_edge_part_[chunk]);
+        find_node_face(f, boxes, self_contact, {begin, edges}, scratch, node_face_part_[chunk]);
+        find_edge_edge(f, self_contact, {edges, end}, n_nodes, scratch, edge_edge_part_[chunk]);
       },
       ChunkedLoops::kHeavyItem);
   node_face_part_.append_to(out.node_face);
@@ -220,13 +291,13 @@ void SweptBoxHash::find(const SurfaceFeatures& f, const FeatureBoxes& boxes, boo
 }
 
 void SweptBoxHash::find_node_face(const SurfaceFeatures& f, const FeatureBoxes& boxes,
-                                  bool self_contact, size_t begin, size_t end,
+                                  bool self_contact, std::span<const size_t> nodes,
                                   QueryScratch& scratch,
                                   std::vector<NodeFaceCandidate>& out) const {
   CellRange cells;
   std::vector<int>& found = scratch.found;
   SearchStats& stats = scratch.stats;
-  for (size_t i = begin; i < end; ++i) {
+  for (size_t i : nodes) {
     const int node = f.nodes[i];
     const int body = self_contact ? -1 : f.node_body[i];
     const Box& q = boxes.node[i];
@@ -252,13 +323,15 @@ void SweptBoxHash::find_node_face(const SurfaceFeatures& f, const FeatureBoxes& 
 }
 
 // Each pair (a, b) once, with a < b.
-void SweptBoxHash::find_edge_edge(const SurfaceFeatures& f, bool self_contact, size_t begin,
-                                  size_t end, QueryScratch& scratch,
+void SweptBoxHash::find_edge_edge(const SurfaceFeatures& f, bool self_contact,
+                                  std::span<const size_t> queries, size_t n_nodes,
+                                  QueryScratch& scratch,
                                   std::vector<EdgeEdgeCandidate>& out) const {
   CellRange cells;
   std::vector<int>& found = scratch.found;
   SearchStats& stats = scratch.stats;
-  for (size_t a = begin; a < end; ++a) {
+  for (size_t query : queries) {
+    const size_t a = query - n_nodes;
     const std::array<int, 2> ea = f.edges[a];
     const int body = self_contact ? -1 : f.edge_body[a];
     const int ia = static_cast<int>(a);

@@ -14,11 +14,16 @@
 // feature whose box would cover more than kMaxCellsPerFeature cells (a fast outlier) is kept out
 // of the grid and checked against every feature of the other kind instead, so that one wild box
 // cannot blow the table up.
+//
+// Without self-contact a feature can only pair with another body's, so a feature whose box misses
+// the hull of the other bodies' partner features is neither entered nor queried: a search costs
+// O(features near another body) plus one O(features) pass for the hulls.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/contact/dcr/contact_surface.hpp"
@@ -99,8 +104,9 @@ class SweptBoxHash {
   // too far from the origin for integer cell coordinates.
   bool cells_of(const Box& b, CellRange& r) const;
   static std::size_t bucket(std::int64_t i, std::int64_t j, std::int64_t k, int bits);
+  // Enters the records with in[e] != 0.
   template <typename Record>
-  void build(const std::vector<Record>& records, Table& table);
+  void build(const std::vector<Record>& records, const std::vector<char>& in, Table& table);
   // What one chunk of queries works with: the partners of one query, and its counters (on cache
   // lines of their own: they change at every box test).
   struct alignas(kCacheLine) QueryScratch {
@@ -111,18 +117,25 @@ class SweptBoxHash {
   template <typename Test>
   static void visit(const CellRange& r, const Table& t, int after, SearchStats& stats, Test&& test);
   void choose_grid(const FeatureBoxes& boxes);
-  // The node-face pairs of the nodes [begin, end), appended to `out` in node order.
+  // node_in_, face_in_, edge_in_ and queries_ for this search.
+  void select_features(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact);
+  // The node-face pairs of the given nodes (ascending), appended to `out` in node order.
   void find_node_face(const SurfaceFeatures& f, const FeatureBoxes& boxes, bool self_contact,
-                      std::size_t begin, std::size_t end, QueryScratch& scratch,
+                      std::span<const std::size_t> nodes, QueryScratch& scratch,
                       std::vector<NodeFaceCandidate>& out) const;
-  // The edge-edge pairs (a, b > a) of the edges a in [begin, end), appended in order of a.
-  void find_edge_edge(const SurfaceFeatures& f, bool self_contact, std::size_t begin,
-                      std::size_t end, QueryScratch& scratch,
-                      std::vector<EdgeEdgeCandidate>& out) const;
+  // The edge-edge pairs (a, b > a) of the edges a = query - n_nodes (ascending), in order of a.
+  void find_edge_edge(const SurfaceFeatures& f, bool self_contact,
+                      std::span<const std::size_t> queries, std::size_t n_nodes,
+                      QueryScratch& scratch, std::vector<EdgeEdgeCandidate>& out) const;
 
   std::vector<EdgeRecord> edge_;
   std::vector<FaceRecord> face_;
-  std::vector<CellRange> range_;     // scratch, per inserted feature
+  std::vector<CellRange> range_;  // scratch, per inserted feature
+  // The features that may meet a partner (select_features), and the queries: the nodes, then the
+  // edges as n_nodes + edge, ascending.
+  std::vector<char> node_in_, face_in_, edge_in_;
+  std::vector<std::size_t> queries_;
+  std::vector<Box> partner_hulls_;   // scratch: per body, the hull of its partner features
   std::vector<double> extent_;       // scratch for the median
   std::vector<std::uint32_t> keys_;  // scratch: bucket of each entry
   Table faces_, edges_;

@@ -347,3 +347,74 @@ TEST_CASE("broad phase: the cached search equals brute force over a moving seque
     CHECK(same(got, again));
   }
 }
+
+TEST_CASE("broad phase: features far from every other body stay out of the grid search",
+          "[dcr][broad_phase]") {
+  // The two overlapping spheres and a third one far away (centre x = 10). Without self-contact
+  // only features near another body can pair: the grid holds far fewer entries than with
+  // self-contact (every feature), and the list still equals brute force.
+  static const ModelMesh mesh = [] {
+    ModelMesh m = two_spheres();
+    ccm::PrimitiveSpec spec{ccm::PrimitiveKind::sphere};
+    spec.radius = 1.0;
+    spec.mesh_size = 0.3;
+    ccm::Placement far;
+    far.translation = Vec3(10.0, 0.0, 0.0);
+    ccm::add_body(m, "far", kRubber, ccm::mesh_primitive(spec, far));
+    return m;
+  }();
+  const SurfaceFeatures f =
+      ccm::dcr::make_surface_features(mesh, {"left/boundary", "right/boundary", "far/boundary"});
+  const Step step = random_step(mesh, 0.02, 0.05, 11);
+  std::size_t entries[2] = {0, 0};
+  for (bool self_contact : {false, true}) {
+    CAPTURE(self_contact);
+    BroadPhase bp;
+    Candidates got;
+    bp.find(f, step.x_start, step.x_end, 0.01, self_contact, got);
+    const Candidates want = brute_force(f, step, 0.01, self_contact);
+    CHECK(!want.node_face.empty());
+    CHECK(!want.edge_edge.empty());
+    CHECK(same(got, want));
+    entries[self_contact ? 1 : 0] = bp.stats().grid_entries;
+  }
+  // The near caps of the two spheres are a minority of the three surfaces' features.
+  CHECK(entries[0] * 3 < entries[1]);
+}
+
+TEST_CASE("broad phase: the skin covers kSkinSteps steps of motion, within its bounds",
+          "[dcr][broad_phase]") {
+  const ModelMesh& mesh = two_spheres();
+  const SurfaceFeatures f =
+      ccm::dcr::make_surface_features(mesh, {"left/boundary", "right/boundary"});
+  // The median largest side of the face boxes at rest, computed here independently.
+  std::vector<double> sides;
+  for (const auto& t : f.faces) {
+    const Box b = box_of({t[0], t[1], t[2]}, Step{mesh.X, mesh.X}, 0.0);
+    sides.push_back((b.hi - b.lo).maxCoeff());
+  }
+  const auto mid = sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2);
+  std::nth_element(sides.begin(), mid, sides.end());
+  const double extent = *mid;
+  auto half_skin = [&](double motion) {  // every node moves by `motion` along x
+    std::vector<Vec3> x_end = mesh.X;
+    for (Vec3& x : x_end) x.x() += motion;
+    BroadPhase bp;
+    Candidates c;
+    bp.find(f, mesh.X, x_end, 0.01, false, c);
+    REQUIRE(bp.stats().rebuilt);
+    return bp.stats().half_skin;
+  };
+  // At rest: the smallest skin.
+  CHECK(half_skin(0.0) == Approx(BroadPhase::kMinHalfSkinFraction * extent).epsilon(1e-12));
+  // A slow surface: kSkinSteps steps of its motion (0.02, between the bounds 0.006 and 0.07).
+  const double slow = 1e-4;
+  REQUIRE(BroadPhase::kSkinSteps * slow > 1.5 * BroadPhase::kMinHalfSkinFraction * extent);
+  REQUIRE(BroadPhase::kSkinSteps * slow < 0.5 * BroadPhase::kHalfSkinFraction * extent);
+  CHECK(half_skin(slow) == Approx(BroadPhase::kSkinSteps * slow).epsilon(1e-9));
+  // A fast surface: the largest skin (the face boxes now include the motion).
+  const double fast = 0.01;
+  const double moved_extent = half_skin(fast) / BroadPhase::kHalfSkinFraction;
+  CHECK(moved_extent >= extent);
+  CHECK(moved_extent <= extent + fast + 1e-12);
+}
