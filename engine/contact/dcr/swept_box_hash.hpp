@@ -135,9 +135,9 @@ class SweptBoxHash {
   // edges as n_nodes + edge, ascending.
   std::vector<char> node_in_, face_in_, edge_in_;
   std::vector<std::size_t> queries_;
-  std::vector<Box> partner_hulls_;   // scratch: per body, the hull of its partner features
-  std::vector<double> extent_;       // scratch for the median
-  std::vector<std::uint32_t> keys_;  // scratch: bucket of each entry
+  std::vector<Box> partner_hulls_, hull_scratch_;  // scratch: per body, partner feature hulls
+  std::vector<double> extent_;                     // scratch for the median
+  std::vector<std::uint32_t> keys_;                // scratch: bucket of each entry
   Table faces_, edges_;
   std::vector<QueryScratch> scratch_;  // per chunk of queries
   ChunkLists<NodeFaceCandidate> node_face_part_;

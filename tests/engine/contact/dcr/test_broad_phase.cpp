@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "engine/contact/dcr/broad_phase.hpp"
@@ -417,4 +418,31 @@ TEST_CASE("broad phase: the skin covers kSkinSteps steps of motion, within its b
   const double moved_extent = half_skin(fast) / BroadPhase::kHalfSkinFraction;
   CHECK(moved_extent >= extent);
   CHECK(moved_extent <= extent + fast + 1e-12);
+}
+
+TEST_CASE("broad phase: many bodies (one joined hull per body) equal brute force",
+          "[dcr][broad_phase]") {
+  // Twelve cubes along x, each overlapping its neighbour by a tenth of its side, and a thirteenth
+  // far above: more bodies than the search tests one by one, so each feature meets the hull of
+  // all other bodies together.
+  ModelMesh mesh;
+  std::vector<std::string> surfaces;
+  for (int b = 0; b < 13; ++b) {
+    const std::string name = "cube" + std::to_string(b);
+    ccm::add_body(mesh, name, kRubber, ccm::structured_box(Vec3(0.1, 0.1, 0.1), 3, 3, 3));
+    const auto& body = mesh.bodies.back();
+    const Vec3 shift = b < 12 ? Vec3(0.09 * b, 0.0, 0.0) : Vec3(0.5, 0.0, 5.0);
+    for (int n = body.first_node; n < body.first_node + body.n_nodes; ++n)
+      mesh.X[static_cast<size_t>(n)] += shift;
+    surfaces.push_back(name + "/boundary");
+  }
+  const SurfaceFeatures f = ccm::dcr::make_surface_features(mesh, surfaces);
+  const Step step = random_step(mesh, 0.001, 0.002, 13);
+  BroadPhase bp;
+  Candidates got;
+  bp.find(f, step.x_start, step.x_end, 0.001, false, got);
+  const Candidates want = brute_force(f, step, 0.001, false);
+  CHECK(!want.node_face.empty());
+  CHECK(!want.edge_edge.empty());
+  CHECK(same(got, want));
 }
