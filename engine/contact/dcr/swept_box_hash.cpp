@@ -21,51 +21,45 @@ Box empty_box() {
   return {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}};  // overlaps nothing
 }
 
-void extend(Box& hull, const Box& b) {
-  for (size_t d = 0; d < 3; ++d) {
-    hull.lo[d] = std::min(hull.lo[d], b.lo[d]);
-    hull.hi[d] = std::max(hull.hi[d], b.hi[d]);
-  }
-}
-
-// Per body, the hull of the boxes of its features.
 // Up to this many bodies a feature is tested against each other body's hull; beyond it, against
 // the hull of all other bodies together (one test per feature instead of one per body).
 constexpr size_t kMaxSeparateHulls = 8;
 
 // Per body b, the hull of b's features, or (n_bodies > kMaxSeparateHulls) of every other body's.
 const std::vector<Box>& partner_hulls(const std::vector<int>& body, const std::vector<Box>& boxes,
-                                      size_t n_bodies, std::vector<Box>& hull,
+                                      size_t n_bodies, std::vector<Box>& hulls,
                                       std::vector<Box>& scratch) {
-  hull.assign(n_bodies, empty_box());
-  if (n_bodies == 0) return hull;
-  for (size_t i = 0; i < boxes.size(); ++i) extend(hull[static_cast<size_t>(body[i])], boxes[i]);
-  if (n_bodies <= kMaxSeparateHulls) return hull;
-  scratch.assign(n_bodies + 1, empty_box());  // scratch[b]: the hull of bodies b, b + 1, ...
-  for (size_t b = n_bodies; b-- > 0;) {
-    scratch[b] = scratch[b + 1];
-    extend(scratch[b], hull[b]);
+  hulls.assign(n_bodies, empty_box());
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    Box& h = hulls[static_cast<size_t>(body[i])];
+    h = hull(h, boxes[i]);
   }
+  if (n_bodies <= kMaxSeparateHulls) return hulls;
+  scratch.assign(n_bodies + 1, empty_box());  // scratch[b]: the hull of bodies b, b + 1, ...
+  for (size_t b = n_bodies; b-- > 0;) scratch[b] = hull(scratch[b + 1], hulls[b]);
   Box before = empty_box();  // the hull of bodies 0 .. b - 1
   for (size_t b = 0; b < n_bodies; ++b) {
-    const Box own = hull[b];
-    hull[b] = before;
-    extend(hull[b], scratch[b + 1]);
-    extend(before, own);
+    const Box own = hulls[b];
+    hulls[b] = hull(before, scratch[b + 1]);
+    before = hull(before, own);
   }
-  return hull;
+  return hulls;
 }
 
 // in[i]: whether feature i (of body body[i]) may meet a partner, i.e. its box overlaps the hull
-// of another body's partner features; every feature when self-contact is on (no hulls).
+// of another body's partner features (or, joined, the hull of all other bodies').
 void mark_reachable(const std::vector<int>& body, const std::vector<Box>& boxes,
-                    const std::vector<Box>& hulls, bool self_contact, std::vector<char>& in) {
+                    const std::vector<Box>& hulls, std::vector<char>& in) {
   in.resize(boxes.size());
   const bool joined = hulls.size() > kMaxSeparateHulls;  // hulls[b]: every body but b
   for (size_t i = 0; i < boxes.size(); ++i) {
     const auto own = static_cast<size_t>(body[i]);
-    bool reachable = self_contact || (joined && overlap(boxes[i], hulls[own]));
-    for (size_t c = 0; c < hulls.size() && !reachable && !joined; ++c)
+    if (joined) {
+      in[i] = overlap(boxes[i], hulls[own]);
+      continue;
+    }
+    bool reachable = false;
+    for (size_t c = 0; c < hulls.size() && !reachable; ++c)
       reachable = c != own && overlap(boxes[i], hulls[c]);
     in[i] = reachable;
   }
@@ -246,16 +240,22 @@ void SweptBoxHash::choose_grid(const FeatureBoxes& boxes) {
 // is unchanged; the work shrinks to the features near another body.
 void SweptBoxHash::select_features(const SurfaceFeatures& f, const FeatureBoxes& boxes,
                                    bool self_contact) {
-  const size_t n_bodies = self_contact ? 0 : count_bodies(f);  // no hulls: every feature
-  mark_reachable(f.node_body, boxes.node,
-                 partner_hulls(f.face_body, boxes.face, n_bodies, partner_hulls_, hull_scratch_),
-                 self_contact, node_in_);
-  mark_reachable(f.face_body, boxes.face,
-                 partner_hulls(f.node_body, boxes.node, n_bodies, partner_hulls_, hull_scratch_),
-                 self_contact, face_in_);
-  mark_reachable(f.edge_body, boxes.edge,
-                 partner_hulls(f.edge_body, boxes.edge, n_bodies, partner_hulls_, hull_scratch_),
-                 self_contact, edge_in_);
+  if (self_contact) {  // every feature may meet another of its own body
+    node_in_.assign(f.nodes.size(), 1);
+    face_in_.assign(f.faces.size(), 1);
+    edge_in_.assign(f.edges.size(), 1);
+  } else {
+    const size_t n_bodies = count_bodies(f);
+    mark_reachable(f.node_body, boxes.node,
+                   partner_hulls(f.face_body, boxes.face, n_bodies, partner_hulls_, hull_scratch_),
+                   node_in_);
+    mark_reachable(f.face_body, boxes.face,
+                   partner_hulls(f.node_body, boxes.node, n_bodies, partner_hulls_, hull_scratch_),
+                   face_in_);
+    mark_reachable(f.edge_body, boxes.edge,
+                   partner_hulls(f.edge_body, boxes.edge, n_bodies, partner_hulls_, hull_scratch_),
+                   edge_in_);
+  }
   queries_.clear();  // the nodes, then the edges (as n_nodes + edge)
   for (size_t i = 0; i < node_in_.size(); ++i)
     if (node_in_[i]) queries_.push_back(i);
