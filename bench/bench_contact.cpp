@@ -77,9 +77,9 @@ class TimedContact : public ContactModel {
     ledger_ = inner_.ledger();
     last_end_ = thread_seconds();
   }
-  ContactStepBound step_bound(const State& s) const override {
+  ContactStepBound step_bound(const State& s, double ceiling) const override {
     ContactStepBound bound;
-    timed([&] { bound = inner_.step_bound(s); });
+    timed([&] { bound = inner_.step_bound(s, ceiling); });
     return bound;
   }
   // Closes the last step.

@@ -36,6 +36,10 @@ struct ContactStepBound {
   double kinematic_dt = std::numeric_limits<double>::infinity();
 };
 
+// The ceiling that asks for a model's kinematic bound whatever its value
+// (ContactModel::step_bound).
+inline constexpr double kNoStepCeiling = std::numeric_limits<double>::infinity();
+
 // What a model has done so far, for the energy balance and the verdict.
 struct ContactLedger {
   // Work done on the deformable bodies by the contact [J].
@@ -68,8 +72,10 @@ class ContactModel {
   virtual void correct(State& state, double dt) = 0;
   // Called after the velocity correction; v holds v_{n+1}. The ledger is current after it.
   virtual void end_step(const State& state, double dt) = 0;
-  // The bound on the next step from this state, without safety factor (eq. CT.1).
-  virtual ContactStepBound step_bound(const State& state) const = 0;
+  // The bound on the next step from this state, without safety factor (eq. CT.1). `ceiling` is
+  // the step the engine takes without the contact's kinematic bound: a kinematic_dt at or above
+  // it does not change the step, so a model may return infinity instead of computing it.
+  virtual ContactStepBound step_bound(const State& state, double ceiling) const = 0;
 
   // A partitioned run offers its team to the replicated model (replica_team.hpp): for whole
   // bodies and for loops split among the ranks. A model that reads only its contact surfaces and

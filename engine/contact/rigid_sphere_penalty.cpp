@@ -310,7 +310,7 @@ double RigidSpherePenalty::limit_from(double node_term, double weight_sum) const
 // within the current L, or until taking it would cut L below its own tau (then the step ends at
 // that tau, before the point can arrive). Far from contact the limit is thus infinite or the
 // time the sphere needs to come within reach: the penalty costs nothing until it can act.
-ContactStepBound RigidSpherePenalty::step_bound(const State& state) const {
+ContactStepBound RigidSpherePenalty::step_bound(const State& state, double /*ceiling*/) const {
   // The squared distances of the points from the sphere's centre: those add_forces computed,
   // when they are of this state (the engine asks for the limit of a step after the evaluation
   // that ended the previous one, at the same positions), else afresh.

@@ -121,7 +121,7 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   void end_step(const State& state, double dt) override;
   // The springs' stiffness bound of the points that can act within the step, or the time until
   // the next point can arrive (a kinematic bound); see the .cpp and docs/contact-time-step.md.
-  ContactStepBound step_bound(const State& state) const override;
+  ContactStepBound step_bound(const State& state, double ceiling) const override;
   // Work of the contact forces on the body's nodes, trapezoidal over each step:
   // sum 1/2 (f_n + f_{n+1}) . (x_{n+1} - x_n) [J].
   double work() const { return work_body_; }

@@ -210,14 +210,14 @@ void ReplicatedContact::scatter_and_finish(State& local, double dt) {
 }
 
 // Called first in a step, with the state at t_n (the view holds it, but at the first step).
-ContactStepBound ReplicatedContact::step_bound(const State& state) const {
+ContactStepBound ReplicatedContact::step_bound(const State& state, double ceiling) const {
   view_.t = state.t;
   if (!started_) {
     gather_state(state);
     started_ = true;
   }
   ContactStepBound bound;
-  contact_time([&] { bound = inner_.step_bound(view_); });
+  contact_time([&] { bound = inner_.step_bound(view_, ceiling); });
   return bound;
 }
 

@@ -55,7 +55,7 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   void correct(State& state, double dt) override;
   // Takes the inner model's ledger (the monitor's checks read it).
   void end_step(const State& state, double dt) override;
-  ContactStepBound step_bound(const State& state) const override;
+  ContactStepBound step_bound(const State& state, double ceiling) const override;
   // The nodes beyond the region, from their owners, for the rest of this step's correct().
   void make_whole_bodies_current() override;
   // The listed nodes beyond the region, from their owners, for the rest of this step's correct().

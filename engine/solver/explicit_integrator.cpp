@@ -192,7 +192,8 @@ StepChoice CentralDifference::next_dt() const {
   const double s = opt_.time.dt_safety;
   StepChoice step{s * last_eval_.stable_dt, StepLimiter::structure};
   if (opt_.contact) {
-    const ContactStepBound bound = opt_.contact->step_bound(s_);
+    const ContactStepBound bound =
+        opt_.contact->step_bound(s_, std::min(step.dt, opt_.time.max_dt));
     if (std::isfinite(bound.stiffness_dt)) {
       const double dt_s = last_eval_.stable_dt;
       const double combined =

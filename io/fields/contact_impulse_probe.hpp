@@ -28,7 +28,9 @@ class ContactImpulseProbe : public ContactModel {
     inner_.end_step(s, dt);
     ledger_ = inner_.ledger();
   }
-  ContactStepBound step_bound(const State& s) const override { return inner_.step_bound(s); }
+  ContactStepBound step_bound(const State& s, double ceiling) const override {
+    return inner_.step_bound(s, ceiling);
+  }
   void use_replica_team(ReplicaTeam& team) override { inner_.use_replica_team(team); }
 
   const std::vector<int>& nodes() const { return nodes_; }

@@ -164,8 +164,7 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
   for (int n : fixed_nodes) inv_m_[static_cast<size_t>(n)] = -1.0;  // marker: never moves
   X_ = mesh.X;
   lengths_ = reference_lengths(features_, X_);
-  min_edge_ = std::numeric_limits<double>::infinity();  // the shortest surface edge
-  for (double h : lengths_.edge) min_edge_ = std::min(min_edge_, h);
+  min_edge_ = lengths_.shortest;  // the shortest surface edge
   // Kept gap after projection: far below the mesh size, far above round-off.
   separation_ = 1e-4 * min_edge_;
   // Persistent contacts: far below an element, far above the kept separation.
@@ -669,9 +668,9 @@ void DcrContact::collect_pair_impulses(const std::vector<Vec3>& x) {
 // their gap plus step_fraction of the shortest edge (approach_limit). The projection then stays
 // a small correction, and the end-of-step configuration of a pair stays close to the linear
 // path the CCD assumed.
-ContactStepBound DcrContact::step_bound(const State& state) const {
-  const PairStepLimit local =
-      pair_step_limit(features_, candidates_, lengths_, state.x, state.v, settings_.step_fraction);
+ContactStepBound DcrContact::step_bound(const State& state, double ceiling) const {
+  const PairStepLimit local = pair_step_limit(features_, candidates_, lengths_, state.x, state.v,
+                                              settings_.step_fraction, ceiling);
   return {.kinematic_dt = std::min(local.dt, approach_limit(state))};
 }
 

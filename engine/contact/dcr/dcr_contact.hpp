@@ -80,7 +80,7 @@ class DcrContact : public ContactModel, public HistorySource {
   // Publishes the ledger (work, injected energy, failure) of the step.
   void end_step(const State& state, double dt) override;
   // A kinematic bound only, per candidate pair (docs/contact-time-step.md, "DCR").
-  ContactStepBound step_bound(const State& state) const override;
+  ContactStepBound step_bound(const State& state, double ceiling) const override;
   // A partitioned run's team: whole bodies for the restitution; the loops over the surface nodes
   // (the bodies' boxes and reach, the broad phase's sweep) split among the ranks.
   void use_replica_team(ReplicaTeam& team) override;

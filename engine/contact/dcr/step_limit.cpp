@@ -42,6 +42,14 @@ bool may_bind(double L, double u_max, double step_fraction, double current) {
   return step_fraction * L < current * u_max;
 }
 
+// An upper bound of every pair's relative speed: twice the largest speed of a surface node (with a
+// relative margin of 1e-12 over the rounding of the pairs' own differences).
+double relative_speed_bound(const SurfaceFeatures& f, const std::vector<Vec3>& v) {
+  double v2 = 0.0;
+  for (int n : f.nodes) v2 = std::max(v2, v[static_cast<size_t>(n)].squaredNorm());
+  return 2.0 * (1.0 + 1e-12) * std::sqrt(v2);
+}
+
 // dt allowed by one pair: (gap + step_fraction L) / u, infinity when u = 0.
 double allowed(double gap, double L, double u, double step_fraction) {
   return u > 0.0 ? (gap + step_fraction * L) / u : std::numeric_limits<double>::infinity();
@@ -57,22 +65,29 @@ ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<V
         {edge_length(X, t[0], t[1]), edge_length(X, t[1], t[2]), edge_length(X, t[2], t[0])}));
   out.edge.reserve(f.edges.size());
   for (const auto& e : f.edges) out.edge.push_back(edge_length(X, e[0], e[1]));
+  for (double L : out.edge) out.shortest = std::min(out.shortest, L);
   return out;
 }
 
 PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
                               const ReferenceLengths& lengths, const std::vector<Vec3>& x,
-                              const std::vector<Vec3>& v, double step_fraction) {
+                              const std::vector<Vec3>& v, double step_fraction, double ceiling) {
   PairStepLimit out{std::numeric_limits<double>::infinity(), -1};
+  // Every pair allows at least step_fraction L_min / u_max: when that is not below the ceiling,
+  // no pair can shorten the step (a resting contact, an impact far below the mesh's speed).
+  if (!may_bind(lengths.shortest, relative_speed_bound(f, v), step_fraction, ceiling)) return out;
   auto keep = [&](double dt, size_t k) {
     if (dt < out.dt) out = {dt, static_cast<int>(k)};
   };
+  // A pair is evaluated only when it may set a limit below both the smallest so far and the
+  // ceiling (may_bind).
+  auto below = [&] { return std::min(out.dt, ceiling); };
   for (size_t k = 0; k < c.node_face.size(); ++k) {
     const int p = f.nodes[static_cast<size_t>(c.node_face[k].node)];
     const auto face = static_cast<size_t>(c.node_face[k].face);
     const Triangle& t = f.faces[face];
     const double L = lengths.face_shortest_edge[face];
-    if (!may_bind(L, relative_speed(t, std::array<int, 1>{p}, v), step_fraction, out.dt)) continue;
+    if (!may_bind(L, relative_speed(t, std::array<int, 1>{p}, v), step_fraction, below())) continue;
     const Vec3& a = x[t[0]];
     Vec3 n = (x[t[1]] - a).cross(x[t[2]] - a);
     if (!(n.norm() > 0.0)) continue;
@@ -91,7 +106,7 @@ PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
     const auto& ea = f.edges[edge_a];
     const auto& eb = f.edges[edge_b];
     const double L = std::min(lengths.edge[edge_a], lengths.edge[edge_b]);
-    if (!may_bind(L, relative_speed(ea, eb, v), step_fraction, out.dt)) continue;
+    if (!may_bind(L, relative_speed(ea, eb, v), step_fraction, below())) continue;
     const Vec3 da = x[ea[1]] - x[ea[0]], db = x[eb[1]] - x[eb[0]];
     const Vec3 between = 0.5 * (x[eb[0]] + x[eb[1]] - x[ea[0]] - x[ea[1]]);
     Vec3 n = da.cross(db);

@@ -10,6 +10,7 @@
 // within step_fraction of its own edges.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "engine/contact/dcr/contact_surface.hpp"
@@ -28,12 +29,17 @@ struct PairStepLimit {
 struct ReferenceLengths {
   std::vector<double> face_shortest_edge;
   std::vector<double> edge;
+  double shortest = std::numeric_limits<double>::infinity();  // of all edges
 };
 ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<Vec3>& X);
 
-// x, v: current positions and velocities (indexed by global node id).
+// x, v: current positions and velocities (indexed by global node id). ceiling: the step the
+// caller takes anyway; the result is exact below it, and a pair that cannot allow less than it
+// is not evaluated (none is when the fastest surface node cannot close step_fraction of the
+// shortest edge within it: dt = infinity, pair = -1).
 PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
                               const ReferenceLengths& lengths, const std::vector<Vec3>& x,
-                              const std::vector<Vec3>& v, double step_fraction);
+                              const std::vector<Vec3>& v, double step_fraction,
+                              double ceiling = std::numeric_limits<double>::infinity());
 
 }  // namespace ccm::dcr

@@ -52,8 +52,8 @@ double kuhn_a2_over_v(const Vec3& normal, const Vec3& h) {
 class Probe : public RigidSpherePenalty {
  public:
   using RigidSpherePenalty::RigidSpherePenalty;
-  ContactStepBound step_bound(const State& s) const override {
-    const ContactStepBound b = RigidSpherePenalty::step_bound(s);
+  ContactStepBound step_bound(const State& s, double ceiling) const override {
+    const ContactStepBound b = RigidSpherePenalty::step_bound(s, ceiling);
     limit_ = std::min(b.stiffness_dt, b.kinematic_dt);
     return b;
   }
@@ -292,7 +292,7 @@ TEST_CASE("element penalty: at s = 0.1 the springs never limit the step of a def
     RigidSpherePenalty at_rest(model.mesh, model.mesh.surfaces.at("box/boundary").triangles,
                                pressed);
     at_rest.add_forces(st);
-    const double springs = at_rest.step_bound(st).stiffness_dt / r.dt_initial;
+    const double springs = at_rest.step_bound(st, kNoStepCeiling).stiffness_dt / r.dt_initial;
     INFO("zeta " << zeta << ": " << at_rest.active_points()
                  << " points pressed 0.05 m: the springs' limit is " << springs
                  << " x the structural step");

@@ -121,8 +121,8 @@ class Probe : public RigidSpherePenalty {
  public:
   Probe(std::vector<Triangle> surface, RigidSpherePenaltyParams p, double scale = 1.0)
       : RigidSpherePenalty(std::move(surface), std::move(p)), scale_(scale) {}
-  ContactStepBound step_bound(const State& s) const override {
-    ContactStepBound b = RigidSpherePenalty::step_bound(s);
+  ContactStepBound step_bound(const State& s, double ceiling) const override {
+    ContactStepBound b = RigidSpherePenalty::step_bound(s, ceiling);
     b.stiffness_dt *= scale_;
     limit_ = std::min(kDefaultDtSafety * b.stiffness_dt, b.kinematic_dt);
     return b;
@@ -421,28 +421,30 @@ TEST_CASE("rigid sphere penalty: the stable step limit", "[contact][rigid_penalt
     const double omega2 = kTetPenalty * 3.0 / (1e5 / 24.0) + kTetPenalty / kTetMass;
     // The bound carries no safety factor: the integrator applies dt_safety (eq. CT.1).
     const double expected = 2.0 / std::sqrt(omega2);
-    CHECK(test::relative_error(contact.step_bound(s).stiffness_dt, expected) < 1e-14);
-    CHECK(std::isinf(contact.step_bound(s).kinematic_dt));
+    CHECK(test::relative_error(contact.step_bound(s, kNoStepCeiling).stiffness_dt, expected) <
+          1e-14);
+    CHECK(std::isinf(contact.step_bound(s, kNoStepCeiling).kinematic_dt));
     // With dashpots at zeta: times sqrt(1 + zeta^2) - zeta (sqrt(2) - 1 at zeta = 1).
     RigidSpherePenaltyParams damped = on_q0(kTetR - 1e-4, 0.0);
     damped.damping = 1.0;
     RigidSpherePenalty with_dashpot(boundary(model, "tet"), damped);
-    CHECK(test::relative_error(with_dashpot.step_bound(s).stiffness_dt,
+    CHECK(test::relative_error(with_dashpot.step_bound(s, kNoStepCeiling).stiffness_dt,
                                (std::sqrt(2.0) - 1.0) * expected) < 1e-14);
     // Far away and at rest: no limit. Far away and approaching: the time to come within reach
     // at twice the predictor's reach bound (docs/contact-time-step.md): gap - 1e-6 R at
     // 2 x 2 m/s, or, falling from rest under gravity, 2 g tau^2 / 2 = gap - 1e-6 R.
     RigidSpherePenalty far(boundary(model, "tet"), on_q0(1.0, 0.0));
-    CHECK(std::isinf(far.step_bound(s).stiffness_dt));
-    CHECK(std::isinf(far.step_bound(s).kinematic_dt));
+    CHECK(std::isinf(far.step_bound(s, kNoStepCeiling).stiffness_dt));
+    CHECK(std::isinf(far.step_bound(s, kNoStepCeiling).kinematic_dt));
     const double reach = 1.0 - kTetR - 1e-6 * kTetR;
     RigidSpherePenalty coming(boundary(model, "tet"), on_q0(1.0, -2.0));
-    CHECK(test::relative_error(coming.step_bound(s).kinematic_dt, reach / 4.0) < 1e-12);
+    CHECK(test::relative_error(coming.step_bound(s, kNoStepCeiling).kinematic_dt, reach / 4.0) <
+          1e-12);
     RigidSpherePenaltyParams dropped = on_q0(1.0, 0.0);
     dropped.gravity = Vec3(0.0, 0.0, -9.81);
     RigidSpherePenalty falling(boundary(model, "tet"), dropped);
-    CHECK(test::relative_error(falling.step_bound(s).kinematic_dt, std::sqrt(reach / 9.81)) <
-          1e-12);
+    CHECK(test::relative_error(falling.step_bound(s, kNoStepCeiling).kinematic_dt,
+                               std::sqrt(reach / 9.81)) < 1e-12);
   }
 
   SECTION("a huge K_P shortens the step of a run, which stays stable") {

@@ -23,7 +23,7 @@ class Accelerator : public ContactModel {
     ledger_.work = work_;
     ledger_.injected_energy = counts_ ? std::max(0.0, work_) : 0.0;
   }
-  ContactStepBound step_bound(const State& /*s*/) const override { return {}; }
+  ContactStepBound step_bound(const State& /*s*/, double /*ceiling*/) const override { return {}; }
   void correct(State& s, double dt) override {
     for (size_t i = 0; i < s.v.size(); ++i) {
       const Vec3 v_end_before = s.v[i] + 0.5 * dt * s.a[i];

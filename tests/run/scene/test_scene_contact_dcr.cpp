@@ -43,7 +43,9 @@ class FailingContact : public ContactModel {
     ++steps_;
     if (steps_ >= fail_at_) ledger_.failure = "gave up";
   }
-  ContactStepBound step_bound(const State& /*state*/) const override { return {}; }
+  ContactStepBound step_bound(const State& /*state*/, double /*ceiling*/) const override {
+    return {};
+  }
   int steps() const { return steps_; }
 
  private:

@@ -4,7 +4,9 @@
 // absolute speed of its fastest node, so a rigid translation or a short edge elsewhere cut the
 // step; these cases must not.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "engine/contact/dcr/step_limit.hpp"
@@ -91,4 +93,50 @@ TEST_CASE("DCR step limit: two crossing edges, the shorter edge and the fastest 
   const PairStepLimit r = pair_step_limit(f, c, reference_lengths(f, X), X, v, 0.5);
   CHECK(r.pair == 0);
   CHECK(r.dt == Approx((d + 0.5 * 0.5e-3) / 2.5).epsilon(1e-12));
+}
+
+// The ceiling (the step the engine takes anyway): below it the limit is exact, and a pair that
+// cannot allow less is not evaluated, so a resting contact costs no pair evaluation.
+TEST_CASE("DCR step limit: exact below the ceiling, skipped above it", "[dcr][step_limit]") {
+  // 40 nodes at random, 10 faces and 15 edges among them, every face against every node
+  // (but its own) and every edge against every other (sharing no node) as candidates.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  SurfaceFeatures f;
+  std::vector<Vec3> X(40);
+  for (size_t n = 0; n < X.size(); ++n) {
+    X[n] = 1e-3 * Vec3(unit(rng), unit(rng), unit(rng));
+    f.nodes.push_back(static_cast<int>(n));
+  }
+  for (int k = 0; k < 10; ++k) f.faces.push_back(Triangle{3 * k, 3 * k + 1, 3 * k + 2});
+  for (int k = 0; k < 15; ++k) f.edges.push_back({2 * k, 2 * k + 1});
+  Candidates c;
+  for (int face = 0; face < 10; ++face)
+    for (int n = 30; n < 40; ++n) c.node_face.push_back({n, face});
+  for (int a = 0; a < 15; ++a)
+    for (int b = a + 1; b < 15; ++b) c.edge_edge.push_back({a, b});
+  const ReferenceLengths lengths = reference_lengths(f, X);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Vec3> v(X.size());
+    for (Vec3& u : v) u = 10.0 * Vec3(unit(rng), unit(rng), unit(rng));
+    const PairStepLimit exact = pair_step_limit(f, c, lengths, X, v, 0.5);
+    REQUIRE(std::isfinite(exact.dt));
+    for (double ceiling : {0.5 * exact.dt, exact.dt, 1.0001 * exact.dt, 3.0 * exact.dt}) {
+      const PairStepLimit capped = pair_step_limit(f, c, lengths, X, v, 0.5, ceiling);
+      if (exact.dt < ceiling) {  // bitwise the same limit, set by the same pair
+        CHECK(capped.dt == exact.dt);
+        CHECK(capped.pair == exact.pair);
+      } else {
+        CHECK(capped.dt >= ceiling);
+      }
+    }
+  }
+  // At rest but for slow drift (1 um/s): every pair allows far more than a 1 us step, and the
+  // limit answers without evaluating any (infinity, no pair), while the exact limit is finite.
+  std::vector<Vec3> slow(X.size());
+  for (Vec3& u : slow) u = 1e-6 * Vec3(unit(rng), unit(rng), unit(rng));
+  CHECK(std::isfinite(pair_step_limit(f, c, lengths, X, slow, 0.5).dt));
+  const PairStepLimit resting = pair_step_limit(f, c, lengths, X, slow, 0.5, 1e-6);
+  CHECK(resting.dt == kNoLimit);
+  CHECK(resting.pair == -1);
 }
