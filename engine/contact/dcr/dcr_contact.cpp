@@ -294,6 +294,8 @@ int DcrContact::test_candidates(const State& s, bool only_touched) {
 std::optional<Constraint> DcrContact::candidate_contact(const State& s, size_t k,
                                                         PairDistanceCache* cache) const {
   const size_t n_nf = candidates_.node_face.size();
+  if (cache && cache->proves_apart_for_any_nodes(k, k < n_nf ? proximity_ : 0.0))
+    return std::nullopt;
   if (k < n_nf) {
     const NodeFaceCandidate& nf = candidates_.node_face[k];
     return node_face_contact(s, features_.nodes[static_cast<size_t>(nf.node)],

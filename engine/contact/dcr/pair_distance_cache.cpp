@@ -34,11 +34,14 @@ void pdc_carry(const std::vector<Pair>& before, const std::vector<PairDistanceCa
 void PairDistanceCache::prepare(const Candidates& candidates, std::span<const int> nodes,
                                 const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   bool reanchor = !anchored_;
+  largest_ = {};
   for (int n : nodes) {
     const auto i = static_cast<std::size_t>(n);
     motion_[i].reach = (x1[i] - x0[i]).norm();
     motion_[i].offset = (x0[i] - anchor_[i]).norm();
     reanchor = reanchor || !(motion_[i].offset <= reanchor_);
+    largest_.reach = std::max(largest_.reach, motion_[i].reach);
+    largest_.offset = std::max(largest_.offset, motion_[i].offset);
   }
   std::swap(records_, previous_);
   records_.resize(candidates.node_face.size() + candidates.edge_edge.size());
@@ -48,6 +51,7 @@ void PairDistanceCache::prepare(const Candidates& candidates, std::span<const in
       anchor_[i] = x0[i];
       motion_[i].offset = 0.0;
     }
+    largest_.offset = 0.0;
     anchored_ = true;
     ++reanchorings_;
     std::fill(records_.begin(), records_.end(), Record{});
@@ -65,7 +69,14 @@ void PairDistanceCache::update_reach(std::span<const int> nodes, const std::vect
   for (int n : nodes) {
     const auto i = static_cast<std::size_t>(n);
     motion_[i].reach = (x1[i] - x0[i]).norm();
+    largest_.reach = std::max(largest_.reach, motion_[i].reach);  // still a bound of all
   }
+}
+
+bool PairDistanceCache::proves_apart_for_any_nodes(std::size_t k, double extra) const {
+  const Record& r = records_[k];
+  const double drifts = 2.0 * largest_.offset + r.offset[0] + r.offset[1];
+  return r.budget - (1.0 + 6.0 * kPrefilterSlack + 1e-12) * drifts > 2.0 * largest_.reach + extra;
 }
 
 bool PairDistanceCache::proves_apart(std::size_t k, const std::array<int, 4>& nodes, int first_side,

@@ -66,6 +66,10 @@ class PairDistanceCache {
   // node-face pair, 0 for an edge pair.
   bool proves_apart(std::size_t k, const std::array<int, 4>& nodes, int first_side,
                     double extra) const;
+  // The same bound with every node's drift and reach taken at the surface's largest: weaker
+  // (it implies proves_apart), but it reads no node, so it decides most pairs of a surface at
+  // rest at the cost of one record.
+  bool proves_apart_for_any_nodes(std::size_t k, double extra) const;
   // The start distance and slack of candidate k at this step's start positions (nodes and
   // first_side as for proves_apart).
   void record(std::size_t k, const std::array<int, 4>& nodes, int first_side, double distance,
@@ -81,6 +85,7 @@ class PairDistanceCache {
     double reach = 0.0;   // |x1 - x0| of the step
   };
   std::vector<Motion> motion_;  // per global node
+  Motion largest_;              // the largest offset and reach of the surface nodes
   double reanchor_ = 0.0;
   bool anchored_ = false;
   long reanchorings_ = 0;
