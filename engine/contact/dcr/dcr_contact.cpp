@@ -327,9 +327,13 @@ bool DcrContact::candidate_touched(size_t k) const {
 // through an edge) that was no contact before: every candidate with a node the projection moved
 // is tested again on [x_n, x~]. Returns how many became constraints.
 int DcrContact::redetect(const State& s) {
+  bool any = false;
   for (size_t k = 0; k < moved_.size(); ++k)
-    if (s.x[static_cast<size_t>(moved_[k])] != x_start_[k])
+    if (s.x[static_cast<size_t>(moved_[k])] != x_start_[k]) {
       touched_[static_cast<size_t>(moved_[k])] = 1;
+      any = true;
+    }
+  if (!any) return 0;  // the projection moved nothing (a contact at rest): nothing new to test
   distances_.update_reach(moved_, x_n_, s.x);
   const int added = test_candidates(s, true);
   for (int n : moved_) touched_[static_cast<size_t>(n)] = 0;

@@ -43,6 +43,11 @@ void PairDistanceCache::prepare(const Candidates& candidates, std::span<const in
     largest_.reach = std::max(largest_.reach, motion_[i].reach);
     largest_.offset = std::max(largest_.offset, motion_[i].offset);
   }
+  // The same candidates as in the last step (a surface at rest between two broad-phase changes):
+  // every record stays where it is.
+  const bool same =
+      !reanchor && candidates.node_face == node_face_ && candidates.edge_edge == edge_edge_;
+  if (same) return;
   std::swap(records_, previous_);
   records_.resize(candidates.node_face.size() + candidates.edge_edge.size());
   if (reanchor) {
