@@ -7,9 +7,9 @@
 
 #include <stdexcept>
 
-#include "db/sqlite/connection.hpp"
 #include "app/run_command.hpp"
 #include "app/study_store_open.hpp"
+#include "db/sqlite/connection.hpp"
 
 namespace ccm {
 

@@ -3,13 +3,13 @@
 
 #include <cmath>
 
-#include "reports/data/report_loader.hpp"
-#include "reports/report_error.hpp"
-#include "reports/write/report_writer.hpp"
 #include "app/command_errors.hpp"
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
 #include "app/study_store_open.hpp"
+#include "reports/data/report_loader.hpp"
+#include "reports/report_error.hpp"
+#include "reports/write/report_writer.hpp"
 
 namespace ccm {
 namespace {

@@ -10,9 +10,9 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "app/run_command.hpp"
 #include "db/sqlite/connection.hpp"
 #include "rig_models/core/rig_error.hpp"
-#include "app/run_command.hpp"
 
 namespace ccm {
 

@@ -10,11 +10,11 @@
 #include <optional>
 #include <string>
 
+#include "app/rig_inputs.hpp"
 #include "db/store/rig_store.hpp"
 #include "rig_models/compare/case_comparison.hpp"
 #include "rig_models/compare/measured_spread.hpp"
 #include "rig_models/sim/rig_run.hpp"
-#include "app/rig_inputs.hpp"
 
 namespace ccm {
 

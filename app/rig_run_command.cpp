@@ -5,15 +5,13 @@
 #include <filesystem>
 
 #include "app/json_output.hpp"
-#include "engine/mesh/gmsh_mesher.hpp"
-#include "engine/observe/field_catalog.hpp"
-#include "rig_models/core/rig_error.hpp"
 #include "app/rig_command_errors.hpp"
 #include "app/rig_commands.hpp"
 #include "app/rig_run_json.hpp"
 #include "app/rig_runner.hpp"
 #include "app/run_command.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
+#include "engine/observe/field_catalog.hpp"
 #include "rig_models/core/rig_error.hpp"
 
 namespace ccm {
@@ -24,12 +22,14 @@ void check_field_args(const RigCommonArgs& args, const RigInputs& in) {
   if (args.field_interval && !args.fields)
     throw std::invalid_argument("--field-interval applies only with --fields");
   if (!args.fields) return;
-  if (!args.out) throw std::invalid_argument("--fields writes into the output folder: give --out DIR");
+  if (!args.out)
+    throw std::invalid_argument("--fields writes into the output folder: give --out DIR");
   if (!args.field_interval) return;
   const double output_interval = in.cases.simulation.output_interval.value;
   const std::string problem = field_interval_problem(*args.field_interval, output_interval);
   if (!problem.empty())
-    throw std::invalid_argument(fmt::format("--field-interval {}: {}", *args.field_interval, problem));
+    throw std::invalid_argument(
+        fmt::format("--field-interval {}: {}", *args.field_interval, problem));
 }
 
 int run(const RigCommonArgs& args) {

@@ -31,8 +31,7 @@ RigRunOutcome run_rig_once(const RigInputs& in, const RigCommonArgs& args,
           args.field_interval.value_or(kRigFieldEvery * options.time.output_interval);
       recorder = std::make_unique<fields::FieldRecorder>(
           model,
-          fields::FieldRequest{fields::all_fields(), interval,
-                               "ccm rig run " + in.rig_case->code},
+          fields::FieldRequest{fields::all_fields(), interval, "ccm rig run " + in.rig_case->code},
           *args.out);
       recorder->attach(options);
     };

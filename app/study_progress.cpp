@@ -5,8 +5,8 @@
 
 #include <cstdio>
 
-#include "db/store/study_store.hpp"
 #include "app/run_schedule.hpp"
+#include "db/store/study_store.hpp"
 
 namespace ccm {
 namespace {

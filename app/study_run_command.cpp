@@ -24,6 +24,7 @@
 #include "app/study_tables.hpp"
 #include "db/store/provenance.hpp"
 #include "db/store/study_store.hpp"
+#include "engine/solver/thread_count.hpp"
 #include "records/content_hash.hpp"
 #include "run/parallel/rank_context.hpp"
 #include "run/runner/point_runner.hpp"
@@ -33,7 +34,6 @@
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/point_metrics.hpp"
 #include "study/metrics/thesis_trends.hpp"
-#include "engine/solver/thread_count.hpp"
 
 namespace ccm {
 namespace {
@@ -303,8 +303,7 @@ int study_run_command(const StudyRunArgs& args) {
       return exit_code::bad_input;
     }
     try {  // each forked worker inherits it; MPI ranks fill the cores one per rank
-      const int automatic =
-          ranks.size() > 1 ? 1 : threads_per_job(available_cores(), args.jobs);
+      const int automatic = ranks.size() > 1 ? 1 : threads_per_job(available_cores(), args.jobs);
       set_default_threads(resolve_threads(args.threads, automatic));
     } catch (const std::invalid_argument& e) {
       fmt::print(stderr, "ccm: error: {}\n", e.what());

@@ -24,8 +24,8 @@
 // ring turns rigidly (per-node angles would let the bore shear); radial motion either way
 // loads the pin (3.2 counts outward motion only, but 3.5 holds the radius both ways); and phi
 // advances by dt omega (3.6 as printed, theta = v_t / r, is not dimensionally an angle;
-// docs/equations.md "Pin joint with Coulomb friction"). With mu_s = mu_k = 0 the reaction exerts no torque about the axis: the
-// angular momentum of the body about the axis is kept.
+// docs/equations.md "Pin joint with Coulomb friction"). With mu_s = mu_k = 0 the reaction exerts no
+// torque about the axis: the angular momentum of the body about the axis is kept.
 #pragma once
 
 #include <vector>

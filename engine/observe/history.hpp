@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/mesh/model_mesh.hpp"
 #include "engine/core/state.hpp"
+#include "engine/mesh/model_mesh.hpp"
 
 namespace ccm {
 

@@ -1,4 +1,5 @@
-// Lumped (row-sum) mass of linear tets: rho V0 / 4 to each node   (docs/equations.md "Linear tetrahedron").
+// Lumped (row-sum) mass of linear tets: rho V0 / 4 to each node   (docs/equations.md "Linear
+// tetrahedron").
 #pragma once
 
 #include <vector>

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <memory>
 #include <string>
-#include <vector>
 #include <utility>
+#include <vector>
 
 #include "engine/bc/pin_joint.hpp"
 #include "engine/bc/slide_constraint.hpp"
@@ -51,9 +51,7 @@ struct Samples {
 
 // The DCR's sensor pressure column (engine/contact/dcr/contact_output.hpp, thesis eq. 3.8).
 constexpr const char* kSensorSurface = "envelope/sensor";
-std::string sensor_pressure_column() {
-  return fmt::format("contact.{}.pressure", kSensorSurface);
-}
+std::string sensor_pressure_column() { return fmt::format("contact.{}.pressure", kSensorSurface); }
 
 RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, bool frictional_pin) {
   RigModelFacts f;

@@ -3,12 +3,12 @@
 // axes), its metrics CSV holds the stored numbers; a store without a rig run says so.
 #include <catch2/catch.hpp>
 
+#include "app/study_commands.hpp"
 #include "db/store/rig_reader.hpp"
 #include "db/store/study_store.hpp"
 #include "reports/data/report_loader.hpp"
 #include "reports/figures/rig_section.hpp"
 #include "reports/write/report_writer.hpp"
-#include "app/study_commands.hpp"
 #include "tests/reports/csv_reader.hpp"
 #include "tests/reports/synthetic_rig.hpp"
 #include "tests/reports/synthetic_study.hpp"

@@ -1,5 +1,5 @@
-// Hertz impact of two identical elastic spheres (docs/contact-method.md §6(a); Johnson 1985, 11.4) and
-// its DCR simulation, shared by the default-suite and the [validation] tests.
+// Hertz impact of two identical elastic spheres (docs/contact-method.md §6(a); Johnson 1985, 11.4)
+// and its DCR simulation, shared by the default-suite and the [validation] tests.
 #pragma once
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Evidence (contact) 1, [validation]: Hertz impact of two identical elastic spheres
 // (tests/support/hertz.hpp) at low speed: contact duration within 5 % and peak contact force
-// within 10 % of the closed form (docs/contact-method.md §6(a)) on the validation mesh, and both errors
-// shrinking on the refined mesh. The meshes are refined at the contact poles
+// within 10 % of the closed form (docs/contact-method.md §6(a)) on the validation mesh, and both
+// errors shrinking on the refined mesh. The meshes are refined at the contact poles
 // (tests/support/refined_sphere.hpp): 0.2 mm there (validation mesh, a_max / h = 3.7) and
 // 0.15 mm (refined, a_max / h = 4.9), 2 mm elsewhere.
 //

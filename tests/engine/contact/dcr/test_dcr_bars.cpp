@@ -87,8 +87,8 @@ TEST_CASE("Two elastic bars end-on exchange velocities in 2L/c", "[dcr][bars]") 
   INFO("steps " << r.summary.steps << ", contact-limited " << r.summary.limiters.contact
                 << ", smallest " << r.summary.dt_contact_min << " s, structural "
                 << r.summary.dt_initial << " s");
-  CHECK((r.summary.limiters.contact == 0 ||
-         r.summary.dt_contact_min >= 0.1 * r.summary.dt_initial));
+  CHECK(
+      (r.summary.limiters.contact == 0 || r.summary.dt_contact_min >= 0.1 * r.summary.dt_initial));
 }
 
 // e = 0: a perfectly plastic impact of the two bodies. When they separate, the restitution

@@ -45,6 +45,6 @@ TEST_CASE("DCR Hertz: two elastic spheres, coarse mesh", "[dcr][hertz]") {
   CHECK(r.summary.energy_balance_error < 1e-3);
   CHECK(r.injected < 1e-3 * r.initial_kinetic);
   // No step collapse (issue 15 item 3): no contact-limited step below 0.1 x the structural one.
-  CHECK((r.summary.limiters.contact == 0 ||
-         r.summary.dt_contact_min >= 0.1 * r.summary.dt_initial));
+  CHECK(
+      (r.summary.limiters.contact == 0 || r.summary.dt_contact_min >= 0.1 * r.summary.dt_initial));
 }
