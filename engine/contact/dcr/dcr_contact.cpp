@@ -358,8 +358,13 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p, c
     return std::nullopt;
   if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return std::nullopt;
   // Either test makes the pair the same contact: the cheap persistent test goes first, so that a
-  // resting pair (the common case of resting contact) needs no CCD.
-  if (persists_within_proximity(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]) ||
+  // resting pair (the common case of resting contact) needs no CCD. Without it, the pair is a
+  // contact only if the CCD finds a crossing, which the prefilter without the proximity term
+  // rules out for a node that stays farther from the face than its motion (ccd_prefilter.hpp).
+  if (persists_within_proximity(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]))
+    return Constraint{nodes, true, 1.0, false};
+  if (node_face_may_touch_from(d0, x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
+                               x1[t[2]], 0.0) &&
       node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]], x1[t[2]],
                     kInclusionTolerance)
           .has_value())

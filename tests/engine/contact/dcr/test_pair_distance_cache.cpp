@@ -2,7 +2,7 @@
 // (docs/hard-scenes.md, "Resting contact"):
 //  - the node-face prefilter (ccd_prefilter.hpp) lets through every pair the exact CCD reports
 //    and every persistent contact (within the proximity distance of the face at the end of the
-//    step, its projection inside the face);
+//    step, its projection inside the face); without the proximity term, every crossing;
 //  - the pair distance cache (pair_distance_cache.hpp) proves a pair apart only when the fresh
 //    prefilter of that step rejects it, over random motions of many steps, with pairs leaving
 //    and re-entering the candidate lists and re-anchorings.
@@ -59,7 +59,7 @@ TEST_CASE("DCR resting contact: the node-face prefilter never skips a contact", 
     return Vec3(x, y, z) * scale;
   };
   const double proximity = 0.1;
-  int contacts = 0, persistent = 0, skipped = 0;
+  int contacts = 0, persistent = 0, skipped = 0, ccd_skipped = 0;
   for (int trial = 0; trial < 40000; ++trial) {
     const Vec3 a0 = random_vec(0.3), b0 = a0 + Vec3(1, 0, 0) + random_vec(0.3),
                c0 = a0 + Vec3(0, 1, 0) + random_vec(0.3);
@@ -72,17 +72,24 @@ TEST_CASE("DCR resting contact: the node-face prefilter never skips a contact", 
                b1 = b0 + random_vec(reach), c1 = c0 + random_vec(reach);
     const bool contact = pdc_test_node_face_contact(p0, a0, b0, c0, p1, a1, b1, c1, proximity);
     const bool may = dcr::node_face_may_touch(p0, a0, b0, c0, p1, a1, b1, c1, proximity);
+    // Without the proximity term the filter stands for the CCD alone: it passes every crossing.
+    const bool may_cross = dcr::node_face_may_touch(p0, a0, b0, c0, p1, a1, b1, c1, 0.0);
+    const bool crosses = dcr::node_face_ccd(p0, a0, b0, c0, p1, a1, b1, c1, 1e-6).has_value();
     if (contact) {
       ++contacts;
-      if (!dcr::node_face_ccd(p0, a0, b0, c0, p1, a1, b1, c1, 1e-6)) ++persistent;
+      if (!crosses) ++persistent;
       CHECK(may);
     }
+    if (crosses && dcr::node_face_volume(p0, a0, b0, c0) >= 0.0) CHECK(may_cross);
     if (!may) ++skipped;
+    if (may && !may_cross) ++ccd_skipped;
   }
-  INFO("contacts " << contacts << ", persistent " << persistent << ", skipped " << skipped);
+  INFO("contacts " << contacts << ", persistent " << persistent << ", skipped " << skipped
+                   << ", CCD skipped after the persistent test " << ccd_skipped);
   CHECK(persistent > 1000);
   CHECK(contacts - persistent > 1000);
-  CHECK(skipped > 5000);  // the filter decides many pairs without the CCD
+  CHECK(skipped > 5000);      // the filter decides many pairs without the CCD
+  CHECK(ccd_skipped > 1000);  // and, without the proximity term, many more CCDs
 }
 
 TEST_CASE("DCR resting contact: the pair distance cache only skips what the prefilter rejects",
