@@ -100,19 +100,23 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
   return (p - (a + v * ab + w * ac)).norm();
 }
 
-bool node_face_may_touch_from(double distance, const Vec3& p0, const Vec3& a0, const Vec3& b0,
-                              const Vec3& c0, const Vec3& p1, const Vec3& a1, const Vec3& b1,
-                              const Vec3& c1, double proximity) {
+double node_face_reach(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                       const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1) {
   const double reach_p = (p1 - p0).norm();
   const double reach_f = std::max({(a1 - a0).norm(), (b1 - b0).norm(), (c1 - c0).norm()});
-  return !(distance > reach_p + reach_f + proximity + face_slack(a0, b0, c0));
+  return reach_p + reach_f;
+}
+
+bool node_face_may_touch_within(double distance, double reach, double slack, double proximity) {
+  return !(distance > reach + proximity + slack);
 }
 
 bool node_face_may_touch(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec3& c0,
                          const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1,
                          double proximity) {
-  return node_face_may_touch_from(point_triangle_distance(p0, a0, b0, c0), p0, a0, b0, c0, p1, a1,
-                                  b1, c1, proximity);
+  return node_face_may_touch_within(point_triangle_distance(p0, a0, b0, c0),
+                                    node_face_reach(p0, a0, b0, c0, p1, a1, b1, c1),
+                                    face_slack(a0, b0, c0), proximity);
 }
 
 }  // namespace ccm::dcr

@@ -51,14 +51,16 @@ bool node_face_may_touch(const Vec3& p0, const Vec3& a0, const Vec3& b0, const V
                          double proximity);
 
 // The same two tests from a start distance d0 computed by the caller (segment_distance,
-// point_triangle_distance at the start positions), and their slack terms.
+// point_triangle_distance at the start positions), and their slack terms; the node-face test
+// from its parts, D_p + D_f (node_face_reach) and the face's slack (face_slack), for a caller
+// that asks it with more than one proximity.
 double edge_pair_slack(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0);
 double face_slack(const Vec3& a0, const Vec3& b0, const Vec3& c0);
 bool edges_may_cross_from(double distance, const Vec3& a0, const Vec3& b0, const Vec3& c0,
                           const Vec3& d0, const Vec3& a1, const Vec3& b1, const Vec3& c1,
                           const Vec3& d1);
-bool node_face_may_touch_from(double distance, const Vec3& p0, const Vec3& a0, const Vec3& b0,
-                              const Vec3& c0, const Vec3& p1, const Vec3& a1, const Vec3& b1,
-                              const Vec3& c1, double proximity);
+double node_face_reach(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                       const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1);
+bool node_face_may_touch_within(double distance, double reach, double slack, double proximity);
 
 }  // namespace ccm::dcr

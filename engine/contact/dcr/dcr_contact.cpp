@@ -130,6 +130,32 @@ std::vector<BodyReach> reach_per_body(const SurfaceFeatures& f, size_t n_bodies,
   return bodies;
 }
 
+// Two bodies whose contact-surface boxes are apart (the largest per-axis gap G > 0) cannot come
+// nearer than G in a step shorter than tau with k (b_A(tau) + b_B(tau)) = G + closing (closing =
+// step_fraction h_min), k = 2: over a step h the predictor moves a node by h v_a + h^2/2 a_a, so
+// each body's surface stays inside its box at t_n grown by b(h) = h max|v| + h^2/2 max|a| (its
+// nodes' maxima, `bodies`) on every axis. Returns the smallest tau over such pairs (infinity
+// when no pair is apart). Once the boxes overlap the candidate pairs take over.
+double approach_limit(const std::vector<BodyReach>& bodies, double closing) {
+  double tau_min = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < bodies.size(); ++i)
+    for (size_t j = i + 1; j < bodies.size(); ++j) {
+      const BodyReach& A = bodies[i];
+      const BodyReach& B = bodies[j];
+      if (A.box.isEmpty() || B.box.isEmpty()) continue;
+      const Eigen::Vector3d gaps = (A.box.min() - B.box.max()).cwiseMax(B.box.min() - A.box.max());
+      const double G = gaps.maxCoeff();
+      if (!(G > 0.0)) continue;
+      const double s = G + closing;
+      constexpr double kReachSafety = 2.0;  // as the rigid penalty's
+      const double v = kReachSafety * (A.v + B.v), a = kReachSafety * (A.a + B.a);
+      if (!(v > 0.0 || a > 0.0)) continue;
+      // b(tau) = s: the root of a/2 tau^2 + v tau = s without cancellation.
+      tau_min = std::min(tau_min, 2.0 * s / (v + std::sqrt(v * v + 2.0 * a * s)));
+    }
+  return tau_min;
+}
+
 // Two unit vectors completing the unit vector n to an orthonormal basis.
 std::pair<Vec3, Vec3> tangent_basis(const Vec3& n) {
   const Vec3 helper = std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
@@ -352,10 +378,11 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p, c
   const std::array<int, 4> nodes{p, t[0], t[1], t[2]};
   if (cache && cache->proves_apart(k, nodes, 1, proximity_)) return std::nullopt;
   const double d0 = point_triangle_distance(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]);
-  if (cache) cache->record(k, nodes, 1, d0, face_slack(x0[t[0]], x0[t[1]], x0[t[2]]));
-  if (!node_face_may_touch_from(d0, x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
-                                x1[t[2]], proximity_))
-    return std::nullopt;
+  const double slack = face_slack(x0[t[0]], x0[t[1]], x0[t[2]]);
+  if (cache) cache->record(k, nodes, 1, d0, slack);
+  const double reach =
+      node_face_reach(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]], x1[t[2]]);
+  if (!node_face_may_touch_within(d0, reach, slack, proximity_)) return std::nullopt;
   if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return std::nullopt;
   // Either test makes the pair the same contact: the cheap persistent test goes first, so that a
   // resting pair (the common case of resting contact) needs no CCD. Without it, the pair is a
@@ -363,8 +390,7 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p, c
   // rules out for a node that stays farther from the face than its motion (ccd_prefilter.hpp).
   if (persists_within_proximity(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]))
     return Constraint{nodes, true, 1.0, false};
-  if (node_face_may_touch_from(d0, x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
-                               x1[t[2]], 0.0) &&
+  if (node_face_may_touch_within(d0, reach, slack, 0.0) &&
       node_face_ccd(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]], x1[t[2]],
                     kInclusionTolerance)
           .has_value())
@@ -680,25 +706,6 @@ void DcrContact::collect_pair_impulses(const std::vector<Vec3>& x) {
 // a small correction, and the end-of-step configuration of a pair stays close to the linear
 // path the CCD assumed.
 ContactStepBound DcrContact::step_bound(const State& state, double ceiling) const {
-  const PairStepLimit local = pair_step_limit(features_, candidates_, lengths_, state.x, state.v,
-                                              settings_.step_fraction, ceiling);
-  return {.kinematic_dt = std::min(local.dt, approach_limit(state))};
-}
-
-void DcrContact::end_step(const State& /*state*/, double /*dt*/) {
-  ledger_ = {.work = work(), .injected_energy = injected_energy(), .failure = failure()};
-}
-
-// Two bodies whose contact-surface boxes are apart (the largest per-axis gap G > 0) cannot come
-// nearer than G in a step shorter than tau with k (b_A(tau) + b_B(tau)) = G + step_fraction
-// h_min, k = 2: over a step h the predictor moves a node by h v_a + h^2/2 a_a, so each body's
-// surface stays inside its box at t_n grown by b(h) = h max|v| + h^2/2 max|a| (its nodes'
-// maxima) on every axis. Returns the smallest tau over such pairs (infinity with self-contact,
-// where the candidate pairs alone govern, or when no pair is apart). Once the boxes overlap the
-// candidate pairs take over.
-double DcrContact::approach_limit(const State& state) const {
-  double tau_min = std::numeric_limits<double>::infinity();
-  if (settings_.self_contact) return tau_min;
   // The largest squared |v| and |a| first, their roots after: the same (the root is monotone and
   // correctly rounded, and norm() is the root of squaredNorm()), at one root per body.
   std::vector<BodyReach> bodies =
@@ -707,26 +714,23 @@ double DcrContact::approach_limit(const State& state) const {
         r.v = std::max(r.v, state.v[node].squaredNorm());
         r.a = std::max(r.a, state.a[node].squaredNorm());
       });
+  double fastest = 0.0;
   for (BodyReach& r : bodies) {
     r.v = std::sqrt(r.v);
     r.a = std::sqrt(r.a);
+    fastest = std::max(fastest, r.v);
   }
-  for (size_t i = 0; i < bodies.size(); ++i)
-    for (size_t j = i + 1; j < bodies.size(); ++j) {
-      const BodyReach& A = bodies[i];
-      const BodyReach& B = bodies[j];
-      if (A.box.isEmpty() || B.box.isEmpty()) continue;
-      const Eigen::Vector3d gaps = (A.box.min() - B.box.max()).cwiseMax(B.box.min() - A.box.max());
-      const double G = gaps.maxCoeff();
-      if (!(G > 0.0)) continue;
-      const double s = G + settings_.step_fraction * min_edge_;
-      constexpr double kReachSafety = 2.0;  // as the rigid penalty's
-      const double v = kReachSafety * (A.v + B.v), a = kReachSafety * (A.a + B.a);
-      if (!(v > 0.0 || a > 0.0)) continue;
-      // b(tau) = s: the root of a/2 tau^2 + v tau = s without cancellation.
-      tau_min = std::min(tau_min, 2.0 * s / (v + std::sqrt(v * v + 2.0 * a * s)));
-    }
-  return tau_min;
+  const PairStepLimit local = pair_step_limit(features_, candidates_, lengths_, state.x, state.v,
+                                              settings_.step_fraction, ceiling, fastest);
+  // With self-contact the candidate pairs alone govern.
+  const double apart = settings_.self_contact
+                           ? std::numeric_limits<double>::infinity()
+                           : approach_limit(bodies, settings_.step_fraction * min_edge_);
+  return {.kinematic_dt = std::min(local.dt, apart)};
+}
+
+void DcrContact::end_step(const State& /*state*/, double /*dt*/) {
+  ledger_ = {.work = work(), .injected_energy = injected_energy(), .failure = failure()};
 }
 
 std::vector<std::string> DcrContact::history_columns() const {

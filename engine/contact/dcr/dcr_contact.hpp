@@ -151,7 +151,6 @@ class DcrContact : public ContactModel, public HistorySource {
   std::optional<Constraint> edge_edge_contact(const State& s, int edge_a, int edge_b, size_t k,
                                               PairDistanceCache* cache) const;
   bool bodies_may_touch(const State& s) const;
-  double approach_limit(const State& state) const;
   bool project_positions(State& s);
   void exchange_momentum(State& s, double dt);
   ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, const std::vector<Vec3>& acc,

@@ -29,6 +29,12 @@ void pdc_carry(const std::vector<Pair>& before, const std::vector<PairDistanceCa
   }
 }
 
+// The bound of the header for a record: its budget, less the sides' drifts D_A + D_B with the
+// slack's growth and the rounding margin on them, exceeds the sides' reach plus `extra`.
+bool pdc_clears(const PairDistanceCache::Record& r, double drifts, double reaches, double extra) {
+  return r.budget - (1.0 + 6.0 * kPrefilterSlack + 1e-12) * drifts > reaches + extra;
+}
+
 }  // namespace
 
 void PairDistanceCache::prepare(const Candidates& candidates, std::span<const int> nodes,
@@ -80,8 +86,8 @@ void PairDistanceCache::update_reach(std::span<const int> nodes, const std::vect
 
 bool PairDistanceCache::proves_apart_for_any_nodes(std::size_t k, double extra) const {
   const Record& r = records_[k];
-  const double drifts = 2.0 * largest_.offset + r.offset[0] + r.offset[1];
-  return r.budget - (1.0 + 6.0 * kPrefilterSlack + 1e-12) * drifts > 2.0 * largest_.reach + extra;
+  return pdc_clears(r, 2.0 * largest_.offset + r.offset[0] + r.offset[1], 2.0 * largest_.reach,
+                    extra);
 }
 
 bool PairDistanceCache::proves_apart(std::size_t k, const std::array<int, 4>& nodes, int first_side,
@@ -94,9 +100,7 @@ bool PairDistanceCache::proves_apart(std::size_t k, const std::array<int, 4>& no
     drift[side] = std::max(drift[side], m.offset);
     reach[side] = std::max(reach[side], m.reach);
   }
-  // D_A + D_B, and the slack's growth and the rounding margin on it (header).
-  const double drifts = drift[0] + r.offset[0] + drift[1] + r.offset[1];
-  return r.budget - (1.0 + 6.0 * kPrefilterSlack + 1e-12) * drifts > reach[0] + reach[1] + extra;
+  return pdc_clears(r, drift[0] + r.offset[0] + drift[1] + r.offset[1], reach[0] + reach[1], extra);
 }
 
 void PairDistanceCache::record(std::size_t k, const std::array<int, 4>& nodes, int first_side,

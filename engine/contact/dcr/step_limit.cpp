@@ -42,14 +42,6 @@ bool may_bind(double L, double u_max, double step_fraction, double current) {
   return step_fraction * L < current * u_max;
 }
 
-// An upper bound of every pair's relative speed: twice the largest speed of a surface node (with a
-// relative margin of 1e-12 over the rounding of the pairs' own differences).
-double relative_speed_bound(const SurfaceFeatures& f, const std::vector<Vec3>& v) {
-  double v2 = 0.0;
-  for (int n : f.nodes) v2 = std::max(v2, v[static_cast<size_t>(n)].squaredNorm());
-  return 2.0 * (1.0 + 1e-12) * std::sqrt(v2);
-}
-
 // dt allowed by one pair: (gap + step_fraction L) / u, infinity when u = 0.
 double allowed(double gap, double L, double u, double step_fraction) {
   return u > 0.0 ? (gap + step_fraction * L) / u : std::numeric_limits<double>::infinity();
@@ -71,11 +63,15 @@ ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<V
 
 PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
                               const ReferenceLengths& lengths, const std::vector<Vec3>& x,
-                              const std::vector<Vec3>& v, double step_fraction, double ceiling) {
+                              const std::vector<Vec3>& v, double step_fraction, double ceiling,
+                              double fastest_node_speed) {
   PairStepLimit out{std::numeric_limits<double>::infinity(), -1};
-  // Every pair allows at least step_fraction L_min / u_max: when that is not below the ceiling,
-  // no pair can shorten the step (a resting contact, an impact far below the mesh's speed).
-  if (!may_bind(lengths.shortest, relative_speed_bound(f, v), step_fraction, ceiling)) return out;
+  // Every pair allows at least step_fraction L_min / u_max, with u_max = twice the fastest node's
+  // speed (a bound of every pair's relative speed; the margin 1e-12 covers the rounding of the
+  // pairs' own differences): when that is not below the ceiling, no pair can shorten the step (a
+  // resting contact, an impact far below the mesh's speed).
+  const double u_max = 2.0 * (1.0 + 1e-12) * fastest_node_speed;
+  if (!may_bind(lengths.shortest, u_max, step_fraction, ceiling)) return out;
   auto keep = [&](double dt, size_t k) {
     if (dt < out.dt) out = {dt, static_cast<int>(k)};
   };

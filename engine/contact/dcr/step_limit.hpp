@@ -35,11 +35,13 @@ ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<V
 
 // x, v: current positions and velocities (indexed by global node id). ceiling: the step the
 // caller takes anyway; the result is exact below it, and a pair that cannot allow less than it
-// is not evaluated (none is when the fastest surface node cannot close step_fraction of the
-// shortest edge within it: dt = infinity, pair = -1).
+// is not evaluated. fastest_node_speed: the largest |v| of the surface nodes (or a bound of it);
+// when such a node cannot close step_fraction of the shortest edge within the ceiling, no pair is
+// evaluated (dt = infinity, pair = -1).
 PairStepLimit pair_step_limit(const SurfaceFeatures& f, const Candidates& c,
                               const ReferenceLengths& lengths, const std::vector<Vec3>& x,
                               const std::vector<Vec3>& v, double step_fraction,
-                              double ceiling = std::numeric_limits<double>::infinity());
+                              double ceiling = std::numeric_limits<double>::infinity(),
+                              double fastest_node_speed = std::numeric_limits<double>::infinity());
 
 }  // namespace ccm::dcr

@@ -3,6 +3,7 @@
 // Issue 15 item 3: the former limit used the shortest edge of the whole surface and the
 // absolute speed of its fastest node, so a rigid translation or a short edge elsewhere cut the
 // step; these cases must not.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -116,13 +117,18 @@ TEST_CASE("DCR step limit: exact below the ceiling, skipped above it", "[dcr][st
   for (int a = 0; a < 15; ++a)
     for (int b = a + 1; b < 15; ++b) c.edge_edge.push_back({a, b});
   const ReferenceLengths lengths = reference_lengths(f, X);
+  auto fastest = [](const std::vector<Vec3>& v) {  // the largest node speed
+    double u = 0.0;
+    for (const Vec3& w : v) u = std::max(u, w.norm());
+    return u;
+  };
   for (int trial = 0; trial < 50; ++trial) {
     std::vector<Vec3> v(X.size());
     for (Vec3& u : v) u = 10.0 * Vec3(unit(rng), unit(rng), unit(rng));
     const PairStepLimit exact = pair_step_limit(f, c, lengths, X, v, 0.5);
     REQUIRE(std::isfinite(exact.dt));
     for (double ceiling : {0.5 * exact.dt, exact.dt, 1.0001 * exact.dt, 3.0 * exact.dt}) {
-      const PairStepLimit capped = pair_step_limit(f, c, lengths, X, v, 0.5, ceiling);
+      const PairStepLimit capped = pair_step_limit(f, c, lengths, X, v, 0.5, ceiling, fastest(v));
       if (exact.dt < ceiling) {  // bitwise the same limit, set by the same pair
         CHECK(capped.dt == exact.dt);
         CHECK(capped.pair == exact.pair);
@@ -136,7 +142,7 @@ TEST_CASE("DCR step limit: exact below the ceiling, skipped above it", "[dcr][st
   std::vector<Vec3> slow(X.size());
   for (Vec3& u : slow) u = 1e-6 * Vec3(unit(rng), unit(rng), unit(rng));
   CHECK(std::isfinite(pair_step_limit(f, c, lengths, X, slow, 0.5).dt));
-  const PairStepLimit resting = pair_step_limit(f, c, lengths, X, slow, 0.5, 1e-6);
+  const PairStepLimit resting = pair_step_limit(f, c, lengths, X, slow, 0.5, 1e-6, fastest(slow));
   CHECK(resting.dt == kNoLimit);
   CHECK(resting.pair == -1);
 }
