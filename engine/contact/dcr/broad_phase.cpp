@@ -8,22 +8,10 @@
 namespace ccm::dcr {
 namespace {
 
-// Median over the faces of the largest side of the face box.
-double median_face_extent(const std::vector<Box>& faces, std::vector<double>& scratch) {
-  if (faces.empty()) return 0.0;
-  scratch.clear();
-  for (const Box& b : faces)
-    scratch.push_back(std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]}));
-  const auto mid = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
-  std::nth_element(scratch.begin(), mid, scratch.end());
-  return *mid;
-}
-
 // The largest side of the swept node boxes: how far the fastest node moved along an axis.
 double largest_step_motion(const std::vector<Box>& nodes) {
   double motion = 0.0;
-  for (const Box& b : nodes)
-    motion = std::max({motion, b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+  for (const Box& b : nodes) motion = std::max(motion, largest_side(b));
   return motion;
 }
 
@@ -118,7 +106,7 @@ void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_c
   self_contact_ = self_contact;
 
   feature_boxes(topology_, node_box_, 0.0, cached_, *loops_);
-  const double extent = median_face_extent(cached_.face, extent_);
+  const double extent = median_largest_side(cached_.face, extent_);
   const double h = std::clamp(kSkinSteps * largest_step_motion(node_box_),
                               kMinHalfSkinFraction * extent, kHalfSkinFraction * extent);
   allowance_ = node_box_;

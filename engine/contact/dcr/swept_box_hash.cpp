@@ -211,23 +211,12 @@ void SweptBoxHash::visit(const CellRange& r, const Table& t, int after, SearchSt
 // Grid origin at the lowest face corner, cell = median largest extent of the face boxes.
 void SweptBoxHash::choose_grid(const FeatureBoxes& boxes) {
   origin_ = boxes.face.empty() ? boxes.node[0].lo : boxes.face[0].lo;
-  extent_.clear();
   double largest = 0;
   for (const Box& b : boxes.face) {
-    double e = 0;
-    for (size_t d = 0; d < 3; ++d) {
-      origin_[d] = std::min(origin_[d], b.lo[d]);
-      e = std::max(e, b.hi[d] - b.lo[d]);
-    }
-    extent_.push_back(e);
-    largest = std::max(largest, e);
+    for (size_t d = 0; d < 3; ++d) origin_[d] = std::min(origin_[d], b.lo[d]);
+    largest = std::max(largest, largest_side(b));
   }
-  double cell = 0;
-  if (!extent_.empty()) {
-    const auto mid = extent_.begin() + static_cast<std::ptrdiff_t>(extent_.size() / 2);
-    std::nth_element(extent_.begin(), mid, extent_.end());
-    cell = *mid;
-  }
+  double cell = median_largest_side(boxes.face, extent_);
   if (!(cell > 0)) cell = largest;
   if (!(cell > 0)) cell = 1;  // every face is a point: any cell size works
   inv_cell_ = 1.0 / cell;

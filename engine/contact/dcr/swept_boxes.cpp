@@ -6,6 +6,15 @@
 
 namespace ccm::dcr {
 
+double median_largest_side(std::span<const Box> boxes, std::vector<double>& scratch) {
+  if (boxes.empty()) return 0.0;
+  scratch.clear();
+  for (const Box& b : boxes) scratch.push_back(largest_side(b));
+  const auto mid = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
+  std::nth_element(scratch.begin(), mid, scratch.end());
+  return *mid;
+}
+
 LocalTopology local_topology(const SurfaceFeatures& f) {
   auto local = [&f](int global) {
     const auto it = std::lower_bound(f.nodes.begin(), f.nodes.end(), global);

@@ -7,6 +7,7 @@
 // boxes and agree exactly on which pairs overlap.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <span>
 #include <vector>
@@ -26,6 +27,15 @@ inline bool overlap(const Box& a, const Box& b) {
   return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
          a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
 }
+
+// The largest side of a box.
+inline double largest_side(const Box& b) {
+  return std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+}
+
+// The median over `boxes` of their largest side, 0 when there is none (the grid's cell and the
+// broad phase's skin are both sized by it over the face boxes); `scratch` is reused.
+double median_largest_side(std::span<const Box> boxes, std::vector<double>& scratch);
 
 // True when `inner` lies inside `outer` (closed).
 inline bool contains(const Box& outer, const Box& inner) {
