@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The README's test command: installs dependencies, builds ccm twice (optimised, and with
 # AddressSanitizer + UndefinedBehaviorSanitizer) and runs the unit test suite in both (under the
-# sanitizers without its few long physics runs, label unit-heavy: tests/CMakeLists.txt).
+# sanitizers without its few long physics runs, tag [heavy], label unit-heavy:
+# tests/CMakeLists.txt). The suite runs in a few processes (scripts/unit-shards.sh), not one per
+# test case as `ctest -L unit` does: the same test cases, without 375 process starts.
 # Validation tests (label `validation`) are slower and run with scripts/validate.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,7 +17,7 @@ echo "== optimised build (build/)"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_UNITY_BUILD=ON -DCCM_BUILD_TESTS=ON \
   -DCCM_BUILD_BENCH=ON >/dev/null
 cmake --build build -j "$jobs"
-ctest --test-dir build -L unit --output-on-failure -j "$jobs"
+scripts/unit-shards.sh build "~[validation]" "$jobs"  # = ctest -L unit
 
 echo "== sanitizer build (build-asan/: AddressSanitizer + UBSan)"
 # -O1 -g1: line tables only for the sanitizers' stack traces; -O1 compiles in 866 s against
@@ -28,4 +30,4 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions="$(pwd)/tests/lsan.supp" \
-  ctest --test-dir build-asan -L unit -LE heavy --output-on-failure -j "$jobs"
+  scripts/unit-shards.sh build-asan "~[validation]~[heavy]" "$jobs"  # = ctest -L unit -LE heavy
