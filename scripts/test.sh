@@ -12,14 +12,16 @@ scripts/install-deps.sh
 jobs=$(nproc)
 
 # Both builds are unity builds (CCM_UNITY_BUILD, cmake/BuildSpeed.cmake, docs/build.md).
-echo "== optimised build (build/)"
+phase() { echo "== $1 ($((SECONDS / 60)) min $((SECONDS % 60)) s since the start)"; }
+phase "optimised build (build/)"
 # CCM_BUILD_TESTS=ON explicitly: scripts/run.sh configures the same folder without the tests.
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCCM_UNITY_BUILD=ON -DCCM_BUILD_TESTS=ON \
   -DCCM_BUILD_BENCH=ON >/dev/null
 cmake --build build -j "$jobs"
+phase "optimised tests"
 scripts/unit-shards.sh build "~[validation]" "$jobs"  # = ctest -L unit
 
-echo "== sanitizer build (build-asan/: AddressSanitizer + UBSan)"
+phase "sanitizer build (build-asan/: AddressSanitizer + UBSan)"
 # -O1 -g1: line tables only for the sanitizers' stack traces; -O1 compiles in 866 s against
 # about 22 min at -O2. (The special flag -fexpensive-optimizations is gone: the coarse Hertz
 # test's energy balance read 5.0 % at -O1 and 0.8 % at -O3 because the step alternated between
@@ -28,6 +30,8 @@ echo "== sanitizer build (build-asan/: AddressSanitizer + UBSan)"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCCM_SANITIZE=ON -DCCM_BUILD_BENCH=OFF -DCCM_UNITY_BUILD=ON >/dev/null
 cmake --build build-asan -j "$jobs"
+phase "sanitizer tests"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions="$(pwd)/tests/lsan.supp" \
   scripts/unit-shards.sh build-asan "~[validation]~[heavy]" "$jobs"  # = ctest -L unit -LE heavy
+phase "done"

@@ -10,7 +10,7 @@
 # name order, are dealt round-robin into 4 x JOBS shard files, and JOBS processes at a time run
 # one shard each (`ccm_tests -f SHARD`, in BUILD_DIR/tests like ctest). Every test case runs
 # exactly once; the script fails when any shard fails, when a shard runs fewer test cases than
-# it was given, or when no test case matches.
+# it was given, or when no test case matches. It ends with the slowest test cases of the pass.
 set -euo pipefail
 
 build=${1:?usage: unit-shards.sh BUILD_DIR SPEC [JOBS]}
@@ -35,8 +35,8 @@ sed 's/[],[]/\\&/g' "$work/names" |
 run_shard() {  # one shard: its own log; a line with its result; the exit status of ccm_tests
   local file=$1 binary=$2 given status=0
   given=$(wc -l <"$file")
-  (cd "$(dirname "$binary")" && "$binary" -f "$file" --reporter compact) >"$file.log" 2>&1 ||
-    status=$?
+  (cd "$(dirname "$binary")" && "$binary" -f "$file" --reporter compact --durations yes) \
+    >"$file.log" 2>&1 || status=$?
   # On success the compact reporter ends with "Passed all N test cases with M assertions."
   # ("Passed 1 test case ..." for one): a shard that ran fewer than it was given fails.
   if ((status == 0)) && ! grep -Eq "^Passed (all )?$given test cases? with" "$file.log"; then
@@ -48,7 +48,8 @@ run_shard() {  # one shard: its own log; a line with its result; the exit status
 export -f run_shard
 
 start=$SECONDS
-ls "$work"/shard.* | xargs -P "$jobs" -I{} bash -c 'run_shard "$@"' _ {} "$binary" |
+shard_files=("$work"/shard.*)  # listed before any shard writes its log beside it
+printf '%s\n' "${shard_files[@]}" | xargs -P "$jobs" -I{} bash -c 'run_shard "$@"' _ {} "$binary" |
   tee "$work/results"
 failed=0
 while read -r status name _; do
@@ -58,5 +59,9 @@ while read -r status name _; do
     cat "$work/${name%:}.log"
   fi
 done <"$work/results"
+echo "unit-shards: the slowest test cases (and sections) of this pass:"
+# (awk, not head: it reads all of sort's output, so sort never gets SIGPIPE under pipefail)
+{ cat "$work"/shard.*.log | grep -E '^[0-9]+\.[0-9]+ s: ' || true; } | sort -rn |
+  awk 'NR <= 8 { print "  " $0 }'
 echo "unit-shards: $total test cases matching $spec in $shards shards, $((SECONDS - start)) s"
 exit "$failed"
