@@ -6,7 +6,9 @@
 // approach of the centres. Each error must shrink under refinement, and on the finest mesh each
 // must be below the CalculiX 2.20 figure of issue 15 (3.7 %, 4.2 %, 3.4 %): measured -3.1 %,
 // +3.9 %, -2.8 % (README "Evidence"). The energy balance stays within 0.5 % (measured 0.1-0.4 %).
-// About 10 minutes in Release.
+// About 10 minutes in Release. The second test runs the a / 5 mesh at a tenth of the speed with
+// the nodal-pressure tet (about 6 minutes): within the issue's 2 % there
+// (docs/contact-persistent.md, "Speed").
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -46,7 +48,8 @@ struct SteelErrors {
   double duration, force, approach, energy;
 };
 
-SteelErrors run_steel(const std::string& mesh) {
+// The scene hertz_steel_<mesh>.toml, whose spheres approach each other at +-speed.
+SteelErrors run_steel(const std::string& mesh, double speed = 5.0) {
   test::TempDir dir;
   const std::string scene =
       std::string(CCM_SOURCE_DIR) + "/scenes/validation/hertz_steel_" + mesh + ".toml";
@@ -58,8 +61,8 @@ SteelErrors run_steel(const std::string& mesh) {
   c.E = 210e9;
   c.nu = 0.3;
   c.rho = 7850.0;
-  c.v = 10.0;  // closing speed
-  const double mass = 2.0 * h.at("low.kinetic_energy")[0] / (5.0 * 5.0);
+  c.v = 2.0 * speed;  // closing speed
+  const double mass = 2.0 * h.at("low.kinetic_energy")[0] / (speed * speed);
   const test::HertzPrediction p = test::hertz_prediction(c, mass);
   const auto& t = h.at("time");
   const auto& F = h.at("contact.low.up.force_axis");
@@ -105,4 +108,16 @@ TEST_CASE("Steel Hertz impact on graded meshes converges past CalculiX", "[valid
   CHECK(std::abs(fine.duration) < 0.037);
   CHECK(std::abs(fine.force) < 0.042);
   CHECK(std::abs(fine.approach) < 0.034);
+}
+
+// At +-0.5 m/s (v / c0 = 1e-4) on the same a / h = 5 with the nodal-pressure tet, all three
+// measures are within the issue's 2 % of the closed form (measured -1.41 %, +1.83 %, -1.30 %); at
+// +-5 m/s the same mesh and element read -2.61 %, +3.79 %, -2.35 % (docs/contact-persistent.md).
+TEST_CASE("Steel Hertz impact at a tenth of the speed is within 2 % at a / 5",
+          "[validation][hertz]") {
+  const SteelErrors slow = run_steel("slow_h064", 0.5);
+  CHECK(slow.energy < 0.005);
+  CHECK(std::abs(slow.duration) < 0.02);
+  CHECK(std::abs(slow.force) < 0.02);
+  CHECK(std::abs(slow.approach) < 0.02);
 }
