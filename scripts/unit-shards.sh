@@ -35,8 +35,14 @@ sed 's/[],[]/\\&/g' "$work/names" |
 run_shard() {  # one shard: its own log; a line with its result; the exit status of ccm_tests
   local file=$1 binary=$2 given status=0
   given=$(wc -l <"$file")
-  (cd "$(dirname "$binary")" && "$binary" -f "$file" --reporter compact --durations yes) \
-    >"$file.log" 2>&1 || status=$?
+  # A shard that hangs fails after SHARD_TIMEOUT seconds (default 1200; the slowest shard of a
+  # pass takes about 90 s under the sanitizers) instead of holding CI to its 90-minute limit.
+  (cd "$(dirname "$binary")" &&
+    timeout --kill-after=10 "${SHARD_TIMEOUT:-1200}" "$binary" -f "$file" --reporter compact \
+      --durations yes) >"$file.log" 2>&1 || status=$?
+  if ((status == 124 || status == 137)); then
+    echo "unit-shards: timed out after ${SHARD_TIMEOUT:-1200} s" >>"$file.log"
+  fi
   # On success the compact reporter ends with "Passed all N test cases with M assertions."
   # ("Passed 1 test case ..." for one): a shard that ran fewer than it was given fails.
   if ((status == 0)) && ! grep -Eq "^Passed (all )?$given test cases? with" "$file.log"; then
