@@ -505,8 +505,11 @@ bool DcrContact::project_positions(State& s) {
       Constraint& c =
           constraints_[static_cast<size_t>(order_[forward ? j : order_.size() - 1 - j])];
       const double scale = constraint_gradient(c, s.x, grad);
+      // A constraint within the dead band already meets the sweeps' tolerance: it is left where
+      // it is (projecting it would move its nodes by less than the tolerance, and still cost the
+      // re-detection and the update of the elements around them).
       const double gap = separation_ * scale - constraint_value(c, s.x);
-      if (gap <= 0.0) continue;
+      if (gap <= kDeadBand * separation_ * scale) continue;
       double W = 0.0;
       for (int a = 0; a < 4; ++a)
         W += grad[a].squaredNorm() * inv_m_[static_cast<size_t>(c.nodes[a])];
@@ -547,6 +550,7 @@ void DcrContact::enforce_positions(State& s, double dt) {
   moved_.resize(kept);
   x_start_.resize(kept);
   if (kept > 0) {
+    ++projecting_steps_;
     // A partitioned run's view holds the surfaces; the elements' other nodes come now.
     if (team_) team_->make_nodes_current(projection_update_.element_nodes(moved_));
     const ProjectionUpdate::EnergyChange dE =
@@ -613,9 +617,17 @@ ContactRow DcrContact::make_row(const Constraint& c, const std::vector<Vec3>& x,
   r.target = -std::max(0.0, g - separation_ * scale) / dt;
   double pressing = 0.0;  // grad g . a
   for (int j = 0; j < 4; ++j) pressing += r.grad[j].dot(acc[static_cast<size_t>(c.nodes[j])]);
-  if (pressing < 0.0 && -0.5 * dt * dt * pressing <= separation_ * scale)
+  // The next step dt' is as long as this one, except after a step shortened to land on an output
+  // time: it is then about as long as the one before. The aim is taken over h = the longer of the
+  // two: with rate = -(g - g_aim)/h - h/2 pressing, the next step changes g by
+  //     dt' rate + dt'^2/2 pressing = -(dt'/h)(g - g_aim) + dt'/2 (dt' - h) pressing,
+  // which for dt' <= h, pressing < 0 and g >= g_aim leaves g >= g_aim. Aimed over the short step,
+  // the resting contacts landed about their push below the separation in the step after each
+  // output time, to be projected there (and the elements around them evaluated again).
+  const double h = std::max(dt, previous_dt_);
+  if (pressing < 0.0 && -0.5 * h * h * pressing <= separation_ * scale)
     r.target =
-        std::max(r.target, -(g - kRestingAim * separation_ * scale) / dt - 0.5 * dt * pressing);
+        std::max(r.target, -(g - kRestingAim * separation_ * scale) / h - 0.5 * h * pressing);
   // All four gradients are parallel to the contact normal n at g = 0. The contact points are
   // sum beta_a x_a with beta_a = grad_a g . n / S, S normalising the first side's weights to 1
   // (node-face: the node; edge-edge: the first edge); the normal impulse is S lambda_n.
@@ -729,7 +741,8 @@ ContactStepBound DcrContact::step_bound(const State& state, double ceiling) cons
   return {.kinematic_dt = std::min(local.dt, apart)};
 }
 
-void DcrContact::end_step(const State& /*state*/, double /*dt*/) {
+void DcrContact::end_step(const State& /*state*/, double dt) {
+  previous_dt_ = dt;
   ledger_ = {.work = work(), .injected_energy = injected_energy(), .failure = failure()};
 }
 

@@ -126,6 +126,9 @@ class DcrContact : public ContactModel, public HistorySource {
   const WorkParts& work_parts() const { return parts_; }
   long unconverged_velocity_solves() const { return unconverged_velocity_; }
   long unconverged_projections() const { return unconverged_projection_; }
+  // Steps in which the position projection moved a node (diagnostics: resting contact aims to
+  // leave it nothing to do, make_row).
+  long projecting_steps() const { return projecting_steps_; }
   const PairRestitution& restitution() const { return restitution_; }
   double residual_penetration() const { return residual_; }  // max -g/|grad_p g| [m], >= 0
   const SurfaceFeatures& features() const { return features_; }
@@ -201,10 +204,12 @@ class DcrContact : public ContactModel, public HistorySource {
   double projection_stored_ = 0.0;  // dQ of this step's projection (included in work_)
   WorkParts parts_;
   long unconverged_velocity_ = 0, unconverged_projection_ = 0;
+  long projecting_steps_ = 0;
   double residual_ = 0.0;
   double last_impulse_ = 0.0;  // total normal impulse of the last step [N s]
   int active_ = 0;
   int sweeps_ = 0;
+  double previous_dt_ = 0.0;  // the length of the last step (make_row's resting aim)
 };
 
 }  // namespace ccm::dcr
