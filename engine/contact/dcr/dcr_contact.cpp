@@ -248,9 +248,13 @@ double DcrContact::constraint_gradient(const Constraint& c, const std::vector<Ve
 }
 
 // Without self-contact, bodies whose swept surface boxes do not overlap cannot touch: the
-// broad phase is skipped (a scene pays for the search only while bodies are close).
+// broad phase is skipped (a scene pays for the search only while bodies are close). While the
+// last step had candidate pairs the bodies are close, and the boxes are not formed: the search
+// then runs, and finds nothing if they have just parted (the same result as skipping it; every
+// rank of a team holds the same candidates, so all take the same branch).
 bool DcrContact::bodies_may_touch(const State& s) const {
   if (settings_.self_contact) return true;
+  if (!candidates_.node_face.empty() || !candidates_.edge_edge.empty()) return true;
   std::vector<BodyReach> bodies =
       reach_per_body(features_, n_bodies_, loops_, team_, [&](BodyReach& r, size_t node) {
         r.box.extend(x_n_[node]);
@@ -440,6 +444,17 @@ std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge
 // two midpoints), so that it depends on the geometry only, never on the node numbering or on
 // the order in which the search found the pairs (the thesis's DCR depended on both, 2.4.2).
 void DcrContact::order_constraints() {
+  // The same constraints as the last ordering, in the same list order (a contact at rest): the
+  // same keys, so the same order.
+  const bool same = ordered_.size() == constraints_.size() &&
+                    std::equal(constraints_.begin(), constraints_.end(), ordered_.begin(),
+                               [](const Constraint& c, const auto& o) {
+                                 return c.nodes == o.first && c.node_face == o.second;
+                               });
+  if (same) return;
+  ordered_.resize(constraints_.size());
+  for (size_t k = 0; k < constraints_.size(); ++k)
+    ordered_[k] = {constraints_[k].nodes, constraints_[k].node_face};
   keys_.resize(constraints_.size());
   for (size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = constraints_[k];

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -194,6 +195,7 @@ class DcrContact : public ContactModel, public HistorySource {
   using ConstraintKey = std::array<double, 7>;
   std::vector<ConstraintKey> keys_;       // scratch: geometric key per constraint
   std::vector<int> order_;                // the constraints in the order of their keys
+  std::vector<std::pair<std::array<int, 4>, bool>> ordered_;  // the constraints order_ is of
   std::vector<Vec3> X_;                   // reference positions
   ReferenceLengths lengths_;              // of the surface's faces and edges (step limit)
   std::vector<Vec3> x_start_, v_before_;  // scratch: state before the correction
