@@ -6,38 +6,35 @@
 namespace ccm::dcr {
 namespace {
 
-double normal_rate(const ContactRow& r, const std::vector<Vec3>& v) {
-  double rate = 0.0;  // dg/dt = grad g . v
-  for (int a = 0; a < 4; ++a) rate += r.grad[a].dot(v[static_cast<size_t>(r.nodes[a])]);
-  return rate;
-}
-
-// Relative tangential velocity of the two contact points, in the (t1, t2) basis.
-std::array<double, 2> tangential_velocity(const ContactRow& r, const std::vector<Vec3>& v) {
-  Vec3 u = Vec3::Zero();
-  for (int a = 0; a < 4; ++a) u += r.beta[a] * v[static_cast<size_t>(r.nodes[a])];
-  return {u.dot(r.t1), u.dot(r.t2)};
-}
-
-// One row's update from the current velocities, applied to its four nodes; returns the largest
-// velocity change of its contact points.
-double update_row(ContactRow& r, const std::vector<double>& inv_m, std::vector<Vec3>& v,
-                  double mu) {
+// One row's update from the current velocities, applied to its four nodes (distinct: a node
+// and a face holding it, or two edges sharing a node, are never a pair); returns the largest
+// velocity change of its contact points. The four velocities are read once, updated in place and
+// written back once. inv: the row's reciprocal mobilities (RowInverse).
+double update_row(ContactRow& r, const RowInverse& inv, const std::vector<double>& inv_m,
+                  std::vector<Vec3>& v, double mu) {
   if (!(r.W_n > 0.0)) return 0.0;
-  // Normal: lambda_n >= 0, complementary to rate_n >= target.
-  const double lambda_n = std::max(0.0, r.lambda_n + (r.target - normal_rate(r, v)) / r.W_n);
-  const double d_n = lambda_n - r.lambda_n;
-  r.lambda_n = lambda_n;
+  std::array<Vec3, 4> u;
+  std::array<double, 4> w;
   for (int a = 0; a < 4; ++a) {
     const auto i = static_cast<size_t>(r.nodes[a]);
-    v[i] += inv_m[i] * d_n * r.grad[a];
+    u[a] = v[i];
+    w[a] = inv_m[i];
   }
-  double change = std::abs(d_n) * r.W_n / r.S;
+  // Normal: lambda_n >= 0, complementary to rate_n = grad g . v >= target.
+  double rate = 0.0;
+  for (int a = 0; a < 4; ++a) rate += r.grad[a].dot(u[a]);
+  const double lambda_n = std::max(0.0, r.lambda_n + (r.target - rate) * inv.W_n);
+  const double d_n = lambda_n - r.lambda_n;
+  r.lambda_n = lambda_n;
+  for (int a = 0; a < 4; ++a) u[a] += w[a] * d_n * r.grad[a];
+  double change = std::abs(d_n) * inv.change_n;
   if (mu > 0.0 && r.W_t > 0.0) {
-    // Tangential: the impulse that stops the sliding, projected onto the Coulomb disc of the
+    // Tangential: the impulse that stops the sliding of the two contact points (their relative
+    // tangential velocity s, in the (t1, t2) basis), projected onto the Coulomb disc of the
     // updated normal impulse.
-    const auto u = tangential_velocity(r, v);
-    double l1 = r.lambda_t1 - u[0] / r.W_t, l2 = r.lambda_t2 - u[1] / r.W_t;
+    Vec3 slip = Vec3::Zero();
+    for (int a = 0; a < 4; ++a) slip += r.beta[a] * u[a];
+    double l1 = r.lambda_t1 - slip.dot(r.t1) * inv.W_t, l2 = r.lambda_t2 - slip.dot(r.t2) * inv.W_t;
     const double bound = mu * r.S * lambda_n, norm = std::sqrt(l1 * l1 + l2 * l2);
     if (norm > bound) {
       l1 *= bound / norm;
@@ -47,12 +44,10 @@ double update_row(ContactRow& r, const std::vector<double>& inv_m, std::vector<V
     r.lambda_t1 = l1;
     r.lambda_t2 = l2;
     const Vec3 tangential = d_t1 * r.t1 + d_t2 * r.t2;
-    for (int a = 0; a < 4; ++a) {
-      const auto i = static_cast<size_t>(r.nodes[a]);
-      v[i] += inv_m[i] * r.beta[a] * tangential;
-    }
+    for (int a = 0; a < 4; ++a) u[a] += w[a] * r.beta[a] * tangential;
     change = std::max(change, std::sqrt(d_t1 * d_t1 + d_t2 * d_t2) * r.W_t);
   }
+  for (int a = 0; a < 4; ++a) v[static_cast<size_t>(r.nodes[a])] = u[a];
   return change;
 }
 
@@ -173,6 +168,11 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
       std::max(settings.tolerance * std::max(v_ref, 1e-300), settings.velocity_floor);
   if (settings.warm_start) warm_start(rows, inv_m, v, settings.friction);
   link_rows(rows);
+  inverse_.resize(rows.size());
+  for (size_t k = 0; k < rows.size(); ++k)
+    if (rows[k].W_n > 0.0)
+      inverse_[k] = {1.0 / rows[k].W_n, rows[k].W_t > 0.0 ? 1.0 / rows[k].W_t : 0.0,
+                     rows[k].W_n / rows[k].S};
   dirty_.assign(rows.size(), 1);
   ImpulseSolve out{0, rows.empty()};
   visits_ = 0;
@@ -188,7 +188,8 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
       dirty_[k] = 0;
       ++visits_;
       remember_velocities(rows[k], v);
-      if (update_row(rows[k], inv_m, v, settings.friction) > limit) mark_neighbours_dirty(k);
+      if (update_row(rows[k], inverse_[k], inv_m, v, settings.friction) > limit)
+        mark_neighbours_dirty(k);
     }
     ++out.sweeps;
     const double worst = largest_change(v);

@@ -45,6 +45,12 @@ struct ContactRow {
   double lambda_t1 = 0.0, lambda_t2 = 0.0;    // accumulated tangential impulses [N s]
 };
 
+// What a row's updates divide by, divided once per solve: 1 / W_n, 1 / W_t (0 when W_t = 0) and
+// W_n / S, the contact points' velocity change per unit normal multiplier.
+struct RowInverse {
+  double W_n = 0.0, W_t = 0.0, change_n = 0.0;
+};
+
 struct ImpulseSettings {
   double friction = 0.0;        // Coulomb mu
   int max_iterations = 100;     // Gauss-Seidel sweeps
@@ -90,6 +96,7 @@ class ContactImpulses {
   std::vector<std::pair<int, int>> ranges_;   // per row and node: its entries [first, last)
   std::vector<std::array<int, 4>> linked_;    // the rows' nodes that entries_ and ranges_ are of
   std::vector<char> dirty_;                   // per row: a neighbour changed since its last visit
+  std::vector<RowInverse> inverse_;           // per row, for the solve's sweeps
   long visits_ = 0;                           // row updates made by the last solve
   std::vector<Remembered> last_;              // sorted by nodes
   int warm_started_ = 0;
