@@ -6,16 +6,6 @@
 #include <string>
 
 namespace ccm::dcr {
-namespace {
-
-// The largest side of the swept node boxes: how far the fastest node moved along an axis.
-double largest_step_motion(const std::vector<Box>& nodes) {
-  double motion = 0.0;
-  for (const Box& b : nodes) motion = std::max(motion, largest_side(b));
-  return motion;
-}
-
-}  // namespace
 
 void BroadPhase::reset() {
   features_ = nullptr;
@@ -24,7 +14,7 @@ void BroadPhase::reset() {
 
 void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
                       std::span<const Vec3> x_end, double inflation, bool self_contact,
-                      Candidates& out) {
+                      Candidates& out, const EdgeInflation* edges) {
   out.node_face.clear();
   out.edge_edge.clear();
   if (!(inflation >= 0) || !std::isfinite(inflation))
@@ -34,7 +24,12 @@ void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
   ++stats_.calls;
   stats_.rebuilt = !sweep_within_cache(f, x_start, x_end, inflation, self_contact);
   if (stats_.rebuilt) rebuild(f, inflation, self_contact);
-  current_boxes(inflation);
+  const double edge_inflation =
+      edges ? std::min(inflation, std::max(edges->floor, edges->per_motion * step_motion_))
+            : inflation;
+  stats_.step_motion = step_motion_;
+  stats_.edge_inflation = edge_inflation;
+  current_boxes(inflation, edge_inflation);
   filter(out);
 }
 
@@ -52,30 +47,42 @@ bool BroadPhase::sweep_within_cache(const SurfaceFeatures& f, std::span<const Ve
   node_box_.resize(f.nodes.size());
   if (team_ == nullptr) return sweep_nodes(f, x_start, x_end, 0, f.nodes.size(), same);
   const ItemShare share = share_of(team_, f.nodes.size());
-  double verdict = 2.0;
+  double verdict_and_motion[2] = {2.0, 0.0};  // joined in one maximum over the ranks
   try {
-    verdict = sweep_nodes(f, x_start, x_end, share.begin, share.end, same) ? 0.0 : 1.0;
+    verdict_and_motion[0] =
+        sweep_nodes(f, x_start, x_end, share.begin, share.end, same) ? 0.0 : 1.0;
+    verdict_and_motion[1] = step_motion_;
   } catch (const std::domain_error&) {
   }
-  team_->max_over_ranks(std::span<double>(&verdict, 1));
+  team_->max_over_ranks(verdict_and_motion);
+  const double verdict = verdict_and_motion[0];
   if (verdict == 2.0) sweep_nodes(f, x_start, x_end, 0, f.nodes.size(), false);  // throws
   complete_node_boxes(f, x_start, x_end, share, verdict != 0.0);
+  step_motion_ = verdict_and_motion[1];  // of every node (complete_node_boxes sweeps a part)
   return verdict == 0.0;
 }
 
-// One loop: one parallel region.
+// One loop: one parallel region. Also sets step_motion_, the largest side of the boxes swept
+// (a maximum: the same for any cut into chunks).
 bool BroadPhase::sweep_nodes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
                              std::span<const Vec3> x_end, size_t begin, size_t end, bool same) {
   const size_t n = end - begin;
-  chunk_inside_.assign(static_cast<size_t>(loops_->chunks(n)), 1);
+  const auto chunks = static_cast<size_t>(loops_->chunks(n));
+  chunk_inside_.assign(chunks, 1);
+  chunk_motion_.assign(chunks, 0.0);
   loops_->run(n, [&](size_t first, size_t last, int chunk) {
     bool inside = same;  // branch-free over the chunk's nodes
+    double motion = 0.0;
     for (size_t i = begin + first; i < begin + last; ++i) {
       node_box_[i] = swept_node_box(f, x_start, x_end, i);
+      motion = std::max(motion, largest_side(node_box_[i]));
       if (same) inside &= contains(allowance_[i], node_box_[i]);
     }
     chunk_inside_[static_cast<size_t>(chunk)] = inside;
+    chunk_motion_[static_cast<size_t>(chunk)] = motion;
   });
+  step_motion_ = 0.0;
+  for (double m : chunk_motion_) step_motion_ = std::max(step_motion_, m);
   return same &&
          std::all_of(chunk_inside_.begin(), chunk_inside_.end(), [](char c) { return c != 0; });
 }
@@ -107,8 +114,8 @@ void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_c
 
   feature_boxes(topology_, node_box_, 0.0, cached_, *loops_);
   const double extent = median_largest_side(cached_.face, extent_);
-  const double h = std::clamp(kSkinSteps * largest_step_motion(node_box_),
-                              kMinHalfSkinFraction * extent, kHalfSkinFraction * extent);
+  const double h = std::clamp(kSkinSteps * step_motion_, kMinHalfSkinFraction * extent,
+                              kHalfSkinFraction * extent);
   allowance_ = node_box_;
   for (Box& b : allowance_)
     for (size_t d = 0; d < 3; ++d) {
@@ -168,7 +175,7 @@ void BroadPhase::list_active() {
 
 // The step's boxes of the active features, by the functions the grid search used (one loop over
 // the active nodes, then edges, then faces).
-void BroadPhase::current_boxes(double inflation) {
+void BroadPhase::current_boxes(double inflation, double edge_inflation) {
   current_.node.resize(n_nodes_);
   current_.edge.resize(n_edges_);
   current_.face.resize(n_faces_);
@@ -180,7 +187,7 @@ void BroadPhase::current_boxes(double inflation) {
         current_.node[i] = inflated(node_box_[i], inflation);
       } else if (k < n_nodes + n_edges) {
         const auto i = static_cast<size_t>(active_edges_[k - n_nodes]);
-        current_.edge[i] = edge_box(topology_.edges[i], node_box_, inflation);
+        current_.edge[i] = edge_box(topology_.edges[i], node_box_, edge_inflation);
       } else {
         const auto i = static_cast<size_t>(active_faces_[k - n_nodes - n_edges]);
         current_.face[i] = face_box(topology_.faces[i], node_box_, inflation);

@@ -36,6 +36,18 @@
 
 namespace ccm::dcr {
 
+// An edge box's own inflation, for edge pairs that are tested for a crossing only (no proximity):
+// min(inflation, max(floor, per_motion x m)), m the largest side of the step's swept node boxes
+// (how far the fastest surface node moved along an axis). With per_motion = 2, two edges left out
+// were more than 4 m apart over the whole step: they cannot cross in it, nor in the next unless
+// the fastest node more than doubles its motion, so the step limit still sees an approaching
+// pair a step before it can cross (docs/contact-time-step.md, "DCR"). The cache is built with
+// the full inflation, so its pairs hold every pair of any smaller edge inflation.
+struct EdgeInflation {
+  double per_motion = 2.0;
+  double floor = 0.0;  // [m]
+};
+
 // Counters of the broad phase: the grid-search counters are those of the last rebuild.
 struct BroadPhaseStats : SearchStats {
   bool rebuilt = false;          // the last find() rebuilt the cache
@@ -43,6 +55,8 @@ struct BroadPhaseStats : SearchStats {
   std::size_t calls = 0;         // find() calls since construction (or reset())
   std::size_t cached_pairs = 0;  // node-face + edge-edge pairs in the cache
   double half_skin = 0;          // h of the cache [m]
+  double step_motion = 0;        // m of the last find() [m] (EdgeInflation)
+  double edge_inflation = 0;     // the edge boxes' inflation of the last find() [m]
 };
 
 class BroadPhase {
@@ -52,7 +66,8 @@ class BroadPhase {
   static constexpr double kSkinSteps = 200;             // steps of motion the skin covers
 
   // Every pair of the surface whose swept boxes [min(x_start, x_end) - inflation,
-  // max(x_start, x_end) + inflation] overlap (closed intervals), except:
+  // max(x_start, x_end) + inflation] overlap (closed intervals; an edge's box inflated by
+  // `edges` when given), except:
   //  - a node and a face that contains it, and two edges that share a node;
   //  - when self_contact is false, any two features of the same body.
   // x_start and x_end are positions indexed by global node id (the whole model's x_n and
@@ -61,8 +76,10 @@ class BroadPhase {
   // sizes of `f`: call reset() after editing a SurfaceFeatures in place. Buffers are reused, so
   // after warm-up a step allocates nothing (reuse `out` as well).
   // Throws std::domain_error naming the node when a surface position is not finite.
+  // edges: the edge boxes' own inflation (EdgeInflation); without it they take `inflation`.
   void find(const SurfaceFeatures& f, std::span<const Vec3> x_start, std::span<const Vec3> x_end,
-            double inflation, bool self_contact, Candidates& out);
+            double inflation, bool self_contact, Candidates& out,
+            const EdgeInflation* edges = nullptr);
 
   // Forgets the cache (the next find() rebuilds).
   void reset();
@@ -89,7 +106,7 @@ class BroadPhase {
                            std::span<const Vec3> x_end, ItemShare share, bool rebuilding);
   void rebuild(const SurfaceFeatures& f, double inflation, bool self_contact);
   void list_active();
-  void current_boxes(double inflation);
+  void current_boxes(double inflation, double edge_inflation);
   void filter(Candidates& out);
 
   // What the cache was built for.
@@ -113,6 +130,8 @@ class BroadPhase {
   const ChunkedLoops* loops_ = &serial_loops();
   const ReplicaTeam* team_ = nullptr;
   std::vector<char> chunk_inside_;                // scratch of sweep_within_cache, per chunk
+  std::vector<double> chunk_motion_;              // ... and the largest side of its node boxes
+  double step_motion_ = 0;                        // m of the step (all nodes, all ranks)
   ChunkLists<NodeFaceCandidate> node_face_part_;  // scratch of filter, per chunk
   ChunkLists<EdgeEdgeCandidate> edge_edge_part_;
   BroadPhaseStats stats_;

@@ -287,7 +287,11 @@ void DcrContact::detect(const State& s) {
     candidates_.edge_edge.clear();
     return;
   }
-  broad_phase_.find(features_, x_n_, s.x, proximity_, settings_.self_contact, candidates_);
+  // Edge pairs are contacts only by a crossing: their boxes need no proximity, only the CCD's
+  // inclusion allowance (kPrefilterSlack x the longest edge, ten times the CCD's 1e-6 parameter
+  // tolerance of an edge at its reference length) and the broad phase's look-ahead of a step.
+  const EdgeInflation edges{.floor = kPrefilterSlack * lengths_.longest};
+  broad_phase_.find(features_, x_n_, s.x, proximity_, settings_.self_contact, candidates_, &edges);
   distances_.prepare(candidates_, features_.nodes, x_n_, s.x);
   candidate_is_constraint_.assign(candidates_.node_face.size() + candidates_.edge_edge.size(), 0);
   test_candidates(s, false);

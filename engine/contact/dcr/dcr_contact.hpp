@@ -193,9 +193,10 @@ class DcrContact : public ContactModel, public HistorySource {
   std::vector<std::pair<int, int>> near_;   // scratch: body pairs holding contacts
   std::vector<int> count_;                  // scratch: per-node marks (all zero between uses)
   using ConstraintKey = std::array<double, 7>;
-  std::vector<ConstraintKey> keys_;       // scratch: geometric key per constraint
-  std::vector<int> order_;                // the constraints in the order of their keys
-  std::vector<std::pair<std::array<int, 4>, bool>> ordered_;  // the constraints order_ is of
+  std::vector<ConstraintKey> keys_;  // scratch: geometric key per constraint
+  std::vector<int> order_;           // the constraints in the order of their keys
+  // The constraints order_ is of (nodes, node_face).
+  std::vector<std::pair<std::array<int, 4>, bool>> ordered_;
   std::vector<Vec3> X_;                   // reference positions
   ReferenceLengths lengths_;              // of the surface's faces and edges (step limit)
   std::vector<Vec3> x_start_, v_before_;  // scratch: state before the correction

@@ -57,7 +57,10 @@ ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<V
         {edge_length(X, t[0], t[1]), edge_length(X, t[1], t[2]), edge_length(X, t[2], t[0])}));
   out.edge.reserve(f.edges.size());
   for (const auto& e : f.edges) out.edge.push_back(edge_length(X, e[0], e[1]));
-  for (double L : out.edge) out.shortest = std::min(out.shortest, L);
+  for (double L : out.edge) {
+    out.shortest = std::min(out.shortest, L);
+    out.longest = std::max(out.longest, L);
+  }
   return out;
 }
 

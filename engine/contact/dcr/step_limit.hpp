@@ -30,6 +30,7 @@ struct ReferenceLengths {
   std::vector<double> face_shortest_edge;
   std::vector<double> edge;
   double shortest = std::numeric_limits<double>::infinity();  // of all edges
+  double longest = 0.0;                                       // of all edges
 };
 ReferenceLengths reference_lengths(const SurfaceFeatures& f, const std::vector<Vec3>& X);
 

@@ -84,8 +84,8 @@ TEST_CASE("DCR hard scenes: blocks stacked face to face stay at rest and book th
   INFO("verdict " << to_string(r.verdict) << " " << r.instability.reason << ", steps " << r.steps
                   << ", energy error " << r.energy_balance_error << ", contact work "
                   << contact.work() << " J, projecting steps " << contact.projecting_steps()
-                  << ", largest speed " << largest_speed
-                  << " m/s, largest drop " << largest_drop << " m");
+                  << ", largest speed " << largest_speed << " m/s, largest drop " << largest_drop
+                  << " m");
   REQUIRE(r.verdict == Verdict::completed);
   // The monitor's own bound (5 %), unchanged; measured 2e-4 (the booking is exact to rounding).
   CHECK(r.energy_balance_error < 0.05);
