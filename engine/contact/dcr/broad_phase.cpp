@@ -24,9 +24,7 @@ void BroadPhase::find(const SurfaceFeatures& f, std::span<const Vec3> x_start,
   ++stats_.calls;
   stats_.rebuilt = !sweep_within_cache(f, x_start, x_end, inflation, self_contact);
   if (stats_.rebuilt) rebuild(f, inflation, self_contact);
-  const double edge_inflation =
-      edges ? std::min(inflation, std::max(edges->floor, edges->per_motion * step_motion_))
-            : inflation;
+  const double edge_inflation = edges ? edges->of(inflation, step_motion_) : inflation;
   stats_.step_motion = step_motion_;
   stats_.edge_inflation = edge_inflation;
   current_boxes(inflation, edge_inflation);

@@ -23,6 +23,7 @@
 // hashing; a rebuild costs one grid search.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -37,15 +38,26 @@
 namespace ccm::dcr {
 
 // An edge box's own inflation, for edge pairs that are tested for a crossing only (no proximity):
-// min(inflation, max(floor, per_motion x m)), m the largest side of the step's swept node boxes
-// (how far the fastest surface node moved along an axis). With per_motion = 2, two edges left out
-// were more than 4 m apart over the whole step: they cannot cross in it, nor in the next unless
-// the fastest node more than doubles its motion, so the step limit still sees an approaching
-// pair a step before it can cross (docs/contact-time-step.md, "DCR"). The cache is built with
-// the full inflation, so its pairs hold every pair of any smaller edge inflation.
+// at least max(floor, per_motion x m), m the largest side of the step's swept node boxes (how far
+// the fastest surface node moved along an axis), at most the inflation of the other boxes. With
+// per_motion = 2, two edges left out were more than 4 m apart over the whole step: they cannot
+// cross in it, nor in the next unless the fastest node more than doubles its motion, so the step
+// limit still sees an approaching pair a step before it can cross (docs/contact-time-step.md,
+// "DCR"). It is the inflation halved as often as it stays above that need (a power-of-two level
+// of it, exact in floating point), so it changes only when the motion crosses a level and the
+// edge pairs of a slowly moving surface stay the same from step to step (the pair cache's
+// records then stay in place, pair_distance_cache.hpp). The cache is built with the full
+// inflation, so its pairs hold every pair of any smaller edge inflation.
 struct EdgeInflation {
   double per_motion = 2.0;
   double floor = 0.0;  // [m]
+  static constexpr int kMaxHalvings = 64;
+  double of(double inflation, double step_motion) const {
+    const double need = std::max(floor, per_motion * step_motion);
+    double e = inflation;
+    for (int k = 0; k < kMaxHalvings && 0.5 * e >= need; ++k) e *= 0.5;
+    return e;
+  }
 };
 
 // Counters of the broad phase: the grid-search counters are those of the last rebuild.

@@ -367,9 +367,9 @@ TEST_CASE("broad phase: the cached search equals brute force over a moving seque
 TEST_CASE("broad phase: edge boxes take their own inflation from the step's largest motion",
           "[dcr][broad_phase]") {
   // The sequence of the test above, with a proximity of 0.05 for nodes and faces and the edge
-  // boxes inflated by min(0.05, max(floor, 2 m)), m the largest side of a swept node box of the
-  // step, computed here on its own: every step must equal the all-pairs filter with those two
-  // inflations, through cache reuse and rebuilds alike.
+  // boxes inflated by the proximity halved while its half covers max(floor, 2 m), m the largest
+  // side of a swept node box of the step, computed here on its own: every step must equal the
+  // all-pairs filter with those two inflations, through cache reuse and rebuilds alike.
   const ModelMesh& mesh = two_spheres();
   const SurfaceFeatures f =
       ccm::dcr::make_surface_features(mesh, {"left/boundary", "right/boundary"});
@@ -399,7 +399,10 @@ TEST_CASE("broad phase: edge boxes take their own inflation from the step's larg
       const Box b = box_of({n}, step, 0.0);
       m = std::max(m, (b.hi - b.lo).maxCoeff());
     }
-    const double edge_inflation = std::min(kProximity, std::max(kFloor, 2.0 * m));
+    // The proximity halved while its half still covers max(floor, 2 m).
+    double edge_inflation = kProximity;
+    while (edge_inflation / 2 >= std::max(kFloor, 2.0 * m)) edge_inflation /= 2;
+    CHECK(edge_inflation >= std::min(kProximity, 2.0 * m));
     bp.find(f, step.x_start, step.x_end, kProximity, false, got, &edges);
     REQUIRE(bp.stats().step_motion == m);
     REQUIRE(bp.stats().edge_inflation == edge_inflation);
