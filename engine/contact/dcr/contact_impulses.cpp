@@ -9,7 +9,10 @@ namespace {
 // One row's update from the current velocities, applied to its four nodes (distinct: a node
 // and a face holding it, or two edges sharing a node, are never a pair); returns the largest
 // velocity change of its contact points. The four velocities are read once, updated in place and
-// written back once. inv: the row's reciprocal mobilities (RowInverse).
+// written back once; the normal rate and the slip are both summed from the velocities read, in
+// pairs, and the slip then takes the normal update's share, d_n x inv.slip_per_normal (one
+// multiply-add instead of a second sum after the update: the two sums no longer wait on each
+// other). inv: the row's reciprocal mobilities (RowInverse).
 double update_row(ContactRow& r, const RowInverse& inv, const std::vector<double>& inv_m,
                   std::vector<Vec3>& v, double mu) {
   if (!(r.W_n > 0.0)) return 0.0;
@@ -20,25 +23,29 @@ double update_row(ContactRow& r, const RowInverse& inv, const std::vector<double
     u[a] = v[i];
     w[a] = inv_m[i];
   }
+  const bool friction = mu > 0.0 && r.W_t > 0.0;
   // Normal: lambda_n >= 0, complementary to rate_n = grad g . v >= target.
-  double rate = 0.0;
-  for (int a = 0; a < 4; ++a) rate += r.grad[a].dot(u[a]);
+  const double rate =
+      (r.grad[0].dot(u[0]) + r.grad[1].dot(u[1])) + (r.grad[2].dot(u[2]) + r.grad[3].dot(u[3]));
+  Vec3 slip = Vec3::Zero();  // sum_a beta_a v_a, the contact points' relative velocity
+  if (friction)
+    slip = (r.beta[0] * u[0] + r.beta[1] * u[1]) + (r.beta[2] * u[2] + r.beta[3] * u[3]);
   const double lambda_n = std::max(0.0, r.lambda_n + (r.target - rate) * inv.W_n);
   const double d_n = lambda_n - r.lambda_n;
   r.lambda_n = lambda_n;
   for (int a = 0; a < 4; ++a) u[a] += w[a] * d_n * r.grad[a];
   double change = std::abs(d_n) * inv.change_n;
-  if (mu > 0.0 && r.W_t > 0.0) {
+  if (friction) {
     // Tangential: the impulse that stops the sliding of the two contact points (their relative
-    // tangential velocity s, in the (t1, t2) basis), projected onto the Coulomb disc of the
+    // tangential velocity, in the (t1, t2) basis), projected onto the Coulomb disc of the
     // updated normal impulse.
-    Vec3 slip = Vec3::Zero();
-    for (int a = 0; a < 4; ++a) slip += r.beta[a] * u[a];
+    slip += d_n * inv.slip_per_normal;
     double l1 = r.lambda_t1 - slip.dot(r.t1) * inv.W_t, l2 = r.lambda_t2 - slip.dot(r.t2) * inv.W_t;
-    const double bound = mu * r.S * lambda_n, norm = std::sqrt(l1 * l1 + l2 * l2);
-    if (norm > bound) {
-      l1 *= bound / norm;
-      l2 *= bound / norm;
+    const double bound = mu * r.S * lambda_n, norm2 = l1 * l1 + l2 * l2;
+    if (norm2 > bound * bound) {  // sliding: onto the disc (a sticking contact takes no root)
+      const double scale = bound / std::sqrt(norm2);
+      l1 *= scale;
+      l2 *= scale;
     }
     const double d_t1 = l1 - r.lambda_t1, d_t2 = l2 - r.lambda_t2;
     r.lambda_t1 = l1;
@@ -169,10 +176,14 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
   if (settings.warm_start) warm_start(rows, inv_m, v, settings.friction);
   link_rows(rows);
   inverse_.resize(rows.size());
-  for (size_t k = 0; k < rows.size(); ++k)
-    if (rows[k].W_n > 0.0)
-      inverse_[k] = {1.0 / rows[k].W_n, rows[k].W_t > 0.0 ? 1.0 / rows[k].W_t : 0.0,
-                     rows[k].W_n / rows[k].S};
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const ContactRow& r = rows[k];
+    if (!(r.W_n > 0.0)) continue;
+    Vec3 slip_per_normal = Vec3::Zero();
+    for (int a = 0; a < 4; ++a)
+      slip_per_normal += r.beta[a] * inv_m[static_cast<size_t>(r.nodes[a])] * r.grad[a];
+    inverse_[k] = {1.0 / r.W_n, r.W_t > 0.0 ? 1.0 / r.W_t : 0.0, r.W_n / r.S, slip_per_normal};
+  }
   dirty_.assign(rows.size(), 1);
   ImpulseSolve out{0, rows.empty()};
   visits_ = 0;

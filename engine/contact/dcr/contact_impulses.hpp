@@ -46,9 +46,11 @@ struct ContactRow {
 };
 
 // What a row's updates divide by, divided once per solve: 1 / W_n, 1 / W_t (0 when W_t = 0) and
-// W_n / S, the contact points' velocity change per unit normal multiplier.
+// W_n / S, the contact points' velocity change per unit normal multiplier; and the change of the
+// contact points' relative velocity per unit normal multiplier, sum_a beta_a m_a^-1 grad_a g.
 struct RowInverse {
   double W_n = 0.0, W_t = 0.0, change_n = 0.0;
+  Vec3 slip_per_normal = Vec3::Zero();
 };
 
 struct ImpulseSettings {
