@@ -59,6 +59,29 @@ bool edges_may_cross_from(double distance, const Vec3& a0, const Vec3& b0, const
   return !(distance > reach_ab + reach_cd + edge_pair_slack(a0, b0, c0, d0));
 }
 
+namespace {
+
+// (U x V) . W stays away from 0 over the step, U moving from u0 to u1, etc. (see the header).
+bool triple_stays_off_zero(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1,
+                           const Vec3& w0, const Vec3& w1) {
+  const double nu = u0.norm(), nv = v0.norm(), nw = w0.norm();
+  const double reach = (nu + (u1 - u0).norm()) * (nv + (v1 - v0).norm()) * (nw + (w1 - w0).norm());
+  constexpr double kMargin = 1e-12;
+  return std::abs(u0.cross(v0).dot(w0)) > (reach - nu * nv * nw) + kMargin * reach;
+}
+
+}  // namespace
+
+bool edges_stay_off_plane(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0,
+                          const Vec3& a1, const Vec3& b1, const Vec3& c1, const Vec3& d1) {
+  return triple_stays_off_zero(b0 - a0, b1 - a1, d0 - c0, d1 - c1, c0 - a0, c1 - a1);
+}
+
+bool node_stays_off_face_plane(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                               const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1) {
+  return triple_stays_off_zero(b0 - a0, b1 - a1, c0 - a0, c1 - a1, p0 - a0, p1 - a1);
+}
+
 bool edges_may_cross(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0, const Vec3& a1,
                      const Vec3& b1, const Vec3& c1, const Vec3& d1) {
   return edges_may_cross_from(segment_distance(a0, b0, c0, d0), a0, b0, c0, d0, a1, b1, c1, d1);

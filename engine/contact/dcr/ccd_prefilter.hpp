@@ -63,4 +63,21 @@ double node_face_reach(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec
                        const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1);
 bool node_face_may_touch_within(double distance, double reach, double slack, double proximity);
 
+// A second exact no-hit test, from the CCD's own cubic instead of a distance: the CCD's four
+// points can only meet where they are coplanar, 6 g(tau) = (U x V) . W = 0 (two edges: U = b - a,
+// V = d - c, W = c - a; a node and a face: U = b - a, V = c - a, W = p - a; each moving linearly,
+// ccd.hpp). With X(tau) = X0 + tau dX the triple product is multilinear, so over the step
+//     |6 g(tau) - 6 g(0)| <= (|U| + |dU|)(|V| + |dV|)(|W| + |dW|) - |U| |V| |W|.
+// The CCD reports a hit only at a root of 6 g or inside its rounding window, |6 g| <= 64 u x the
+// same product of the largest norms (ccd.hpp). Hence
+//     |6 g(0)| > the variation bound + 1e-12 x (|U| + |dU|)(|V| + |dV|)(|W| + |dW|)
+// (the margin is 4e3 times that window and covers the rounding of this test) means the CCD finds
+// no hit, and the functions return true. They need no distance: two resting surfaces a kept
+// separation apart stay off the plane of each of their near pairs (a node and a face, two edges
+// crossing at an angle) by far more than they move in a step.
+bool edges_stay_off_plane(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& d0,
+                          const Vec3& a1, const Vec3& b1, const Vec3& c1, const Vec3& d1);
+bool node_stays_off_face_plane(const Vec3& p0, const Vec3& a0, const Vec3& b0, const Vec3& c0,
+                               const Vec3& p1, const Vec3& a1, const Vec3& b1, const Vec3& c1);
+
 }  // namespace ccm::dcr

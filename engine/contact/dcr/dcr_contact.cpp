@@ -385,6 +385,22 @@ std::optional<Constraint> DcrContact::node_face_contact(const State& s, int p, c
   const std::vector<Vec3>& x1 = s.x;
   const std::array<int, 4> nodes{p, t[0], t[1], t[2]};
   if (cache && cache->proves_apart(k, nodes, 1, proximity_)) return std::nullopt;
+  // A recorded pair the record cannot prove apart sits near the face (two touching surfaces).
+  // It is decided without its distance where it can be: a node that starts inward is no
+  // contact, a persistent one is (the prefilter below never rejects a persistent pair: it
+  // rejects only a node farther than the proximity plus its slack, 2e-5 of the face's longest
+  // edge at least, from the face over the whole step, and a persistent node is within the
+  // proximity plus 2e-6 of that edge), and one that stays off the face's plane is none (no CCD
+  // hit, ccd_prefilter.hpp). A pair without a record takes the distance first, so that the
+  // record can decide it cheaply in the next steps.
+  if (cache && cache->has_record(k)) {
+    if (node_face_volume(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]) < 0.0) return std::nullopt;
+    if (persists_within_proximity(x1[p], x1[t[0]], x1[t[1]], x1[t[2]]))
+      return Constraint{nodes, true, 1.0, false};
+    if (node_stays_off_face_plane(x0[p], x0[t[0]], x0[t[1]], x0[t[2]], x1[p], x1[t[0]], x1[t[1]],
+                                  x1[t[2]]))
+      return std::nullopt;
+  }
   const double d0 = point_triangle_distance(x0[p], x0[t[0]], x0[t[1]], x0[t[2]]);
   const double slack = face_slack(x0[t[0]], x0[t[1]], x0[t[2]]);
   if (cache) cache->record(k, nodes, 1, d0, slack);
@@ -428,6 +444,14 @@ std::optional<Constraint> DcrContact::edge_edge_contact(const State& s, int edge
   const auto& eb = features_.edges[static_cast<size_t>(edge_b)];
   const std::array<int, 4> nodes{ea[0], ea[1], eb[0], eb[1]};
   if (cache && cache->proves_apart(k, nodes, 2, 0.0)) return std::nullopt;
+  // A recorded pair the record cannot prove apart sits near the other edge (two touching
+  // surfaces): if the edges stay off their common plane over the step they cannot cross, which
+  // decides it without its distance (ccd_prefilter.hpp). A pair without a record takes the
+  // distance first, so that the record can decide it cheaply in the next steps.
+  if (cache && cache->has_record(k) &&
+      edges_stay_off_plane(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]], x1[ea[0]], x1[ea[1]],
+                           x1[eb[0]], x1[eb[1]]))
+    return std::nullopt;
   const double d0 = segment_distance(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]);
   if (cache)
     cache->record(k, nodes, 2, d0, edge_pair_slack(x0[ea[0]], x0[ea[1]], x0[eb[0]], x0[eb[1]]));

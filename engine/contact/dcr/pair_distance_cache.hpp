@@ -74,6 +74,10 @@ class PairDistanceCache {
   // first_side as for proves_apart).
   void record(std::size_t k, const std::array<int, 4>& nodes, int first_side, double distance,
               double slack);
+  // Whether candidate k holds a record (a distance computed at this or an earlier step).
+  bool has_record(std::size_t k) const {
+    return records_[k].budget > -std::numeric_limits<double>::infinity();
+  }
   // The candidates of the step (records held or not), and the re-anchorings so far.
   std::size_t size() const { return records_.size(); }
   long reanchorings() const { return reanchorings_; }

@@ -227,7 +227,7 @@ TEST_CASE("DCR hard scenes: the edge prefilter never skips a pair the CCD report
     const double x = u(rng), y = u(rng), z = u(rng);
     return Vec3(x, y, z) * scale;
   };
-  int hits = 0, skipped = 0;
+  int hits = 0, skipped = 0, off_plane = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     const Vec3 a0 = random_vec(0.5), b0 = a0 + random_vec(1.0);
     const Vec3 c0 = random_vec(0.5), d0 = c0 + random_vec(1.0);
@@ -236,13 +236,18 @@ TEST_CASE("DCR hard scenes: the edge prefilter never skips a pair the CCD report
     const Vec3 c1 = c0 + random_vec(reach), d1 = d0 + random_vec(reach);
     const bool hit = dcr::edge_edge_ccd(a0, b0, c0, d0, a1, b1, c1, d1, 1e-6).has_value();
     const bool may = dcr::edges_may_cross(a0, b0, c0, d0, a1, b1, c1, d1);
+    // The test from the CCD's cubic (ccd_prefilter.hpp): edges that stay off their common plane.
+    const bool off = dcr::edges_stay_off_plane(a0, b0, c0, d0, a1, b1, c1, d1);
     if (hit) {
       ++hits;
       CHECK(may);
+      CHECK(!off);
     }
+    if (off) ++off_plane;
     if (!may) ++skipped;
   }
-  INFO("hits " << hits << ", skipped " << skipped);
+  INFO("hits " << hits << ", skipped " << skipped << ", off the plane " << off_plane);
   CHECK(hits > 100);
-  CHECK(skipped > 1000);  // the filter decides many pairs without the cubic
+  CHECK(skipped > 1000);    // the filter decides many pairs without the cubic
+  CHECK(off_plane > 1000);  // and so does the test from the cubic's variation
 }

@@ -59,7 +59,7 @@ TEST_CASE("DCR resting contact: the node-face prefilter never skips a contact", 
     return Vec3(x, y, z) * scale;
   };
   const double proximity = 0.1;
-  int contacts = 0, persistent = 0, skipped = 0, ccd_skipped = 0;
+  int contacts = 0, persistent = 0, skipped = 0, ccd_skipped = 0, off_plane = 0;
   for (int trial = 0; trial < 40000; ++trial) {
     const Vec3 a0 = random_vec(0.3), b0 = a0 + Vec3(1, 0, 0) + random_vec(0.3),
                c0 = a0 + Vec3(0, 1, 0) + random_vec(0.3);
@@ -81,11 +81,19 @@ TEST_CASE("DCR resting contact: the node-face prefilter never skips a contact", 
       CHECK(may);
     }
     if (crosses && dcr::node_face_volume(p0, a0, b0, c0) >= 0.0) CHECK(may_cross);
+    // The test from the CCD's cubic (ccd_prefilter.hpp): wherever the node stays off the face's
+    // plane, the CCD finds no hit.
+    if (dcr::node_stays_off_face_plane(p0, a0, b0, c0, p1, a1, b1, c1)) {
+      ++off_plane;
+      CHECK(!crosses);
+    }
     if (!may) ++skipped;
     if (may && !may_cross) ++ccd_skipped;
   }
   INFO("contacts " << contacts << ", persistent " << persistent << ", skipped " << skipped
-                   << ", CCD skipped after the persistent test " << ccd_skipped);
+                   << ", CCD skipped after the persistent test " << ccd_skipped
+                   << ", off the plane " << off_plane);
+  CHECK(off_plane > 5000);  // the cubic's test decides many pairs too
   CHECK(persistent > 1000);
   CHECK(contacts - persistent > 1000);
   CHECK(skipped > 5000);      // the filter decides many pairs without the CCD
