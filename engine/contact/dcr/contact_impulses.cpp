@@ -32,6 +32,9 @@ double update_row(ContactRow& r, const RowInverse& inv, const std::vector<double
     slip = (r.beta[0] * u[0] + r.beta[1] * u[1]) + (r.beta[2] * u[2] + r.beta[3] * u[3]);
   const double lambda_n = std::max(0.0, r.lambda_n + (r.target - rate) * inv.W_n);
   const double d_n = lambda_n - r.lambda_n;
+  // A contact that stays open (no normal impulse, before or after) carries no friction either
+  // (its Coulomb disc has radius 0): nothing changes.
+  if (lambda_n == 0.0 && d_n == 0.0 && r.lambda_t1 == 0.0 && r.lambda_t2 == 0.0) return 0.0;
   r.lambda_n = lambda_n;
   for (int a = 0; a < 4; ++a) u[a] += w[a] * d_n * r.grad[a];
   double change = std::abs(d_n) * inv.change_n;
