@@ -572,7 +572,8 @@ bool DcrContact::project_positions(State& s) {
 
 // Projection, re-detection of what it pushed through, projection again, ... (at most
 // kDetectionRounds rounds); then the forces and stored energy of the elements around the moved
-// nodes are brought to the new positions (projection_update.hpp) and the residual is measured.
+// nodes are brought to the new positions (projection_update.hpp). The residual is measured where
+// the velocity rows are made from the same positions (exchange_momentum).
 void DcrContact::enforce_positions(State& s, double dt) {
   moved_.clear();
   x_start_.clear();
@@ -602,12 +603,6 @@ void DcrContact::enforce_positions(State& s, double dt) {
     work_ += dE.total();
     parts_.projection += dE.total();
   }
-  residual_ = 0.0;
-  Vec3 grad[4];
-  for (const Constraint& c : constraints_) {
-    const double scale = constraint_gradient(c, s.x, grad);
-    residual_ = std::max(residual_, -constraint_value(c, s.x) / scale);
-  }
 }
 
 void DcrContact::correct(State& s, double dt) {
@@ -619,9 +614,8 @@ void DcrContact::correct(State& s, double dt) {
   pair_impulses_.clear();
   near_.clear();
   rows_.clear();
-  if (constraints_.empty()) {
-    residual_ = 0.0;
-  } else {
+  residual_ = 0.0;  // measured by exchange_momentum
+  if (!constraints_.empty()) {
     enforce_positions(s, dt);
     exchange_momentum(s, dt);
     collect_pair_impulses(s.x);
@@ -652,11 +646,12 @@ void DcrContact::correct(State& s, double dt) {
 // separation: an impact is left as it was (applied to every pressed contact, the clapping fork
 // of the [no_penetration] test left a node inside a foreign tet).
 ContactRow DcrContact::make_row(const Constraint& c, const std::vector<Vec3>& x,
-                                const std::vector<Vec3>& acc, double dt) const {
+                                const std::vector<Vec3>& acc, double dt, double& distance) const {
   ContactRow r;
   r.nodes = c.nodes;
   const double scale = constraint_gradient(c, x, r.grad.data());
   const double g = constraint_value(c, x);
+  distance = g / scale;
   r.target = -std::max(0.0, g - separation_ * scale) / dt;
   double pressing = 0.0;  // grad g . a
   for (int j = 0; j < 4; ++j) pressing += r.grad[j].dot(acc[static_cast<size_t>(c.nodes[j])]);
@@ -703,7 +698,9 @@ void DcrContact::exchange_momentum(State& s, double dt) {
       v_end[i] = s.v[i] + 0.5 * dt * s.a[i];
       v_before_.push_back(v_end[i]);
     }
-    rows_.push_back(make_row(c, s.x, s.a, dt));
+    double distance = 0.0;
+    rows_.push_back(make_row(c, s.x, s.a, dt, distance));
+    residual_ = std::max(residual_, -distance);  // at the positions the projection left
     const int a = body_of(c.nodes[0]), b = body_of(c.nodes[3]);
     if (a != b) near_.emplace_back(std::min(a, b), std::max(a, b));
   }

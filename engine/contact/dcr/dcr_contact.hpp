@@ -157,8 +157,9 @@ class DcrContact : public ContactModel, public HistorySource {
   bool bodies_may_touch(const State& s) const;
   bool project_positions(State& s);
   void exchange_momentum(State& s, double dt);
+  // distance: the constraint's signed distance g / |grad_p g| at x (the residual's measure).
   ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, const std::vector<Vec3>& acc,
-                      double dt) const;
+                      double dt, double& distance) const;
   void collect_pair_impulses(const std::vector<Vec3>& x);
   void order_constraints();
   double mobility(const Constraint& c, const std::array<Vec3, 4>& grad) const;
