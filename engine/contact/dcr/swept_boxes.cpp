@@ -32,23 +32,13 @@ LocalTopology local_topology(const SurfaceFeatures& f) {
   return t;
 }
 
-Box swept_node_box(const SurfaceFeatures& f, std::span<const Vec3> x_start,
-                   std::span<const Vec3> x_end, std::size_t i) {
-  const int n = f.nodes[i];
-  if (n < 0 || static_cast<std::size_t>(n) >= std::min(x_start.size(), x_end.size()))
-    throw std::invalid_argument("broad phase: surface node " + std::to_string(n) +
-                                " has no position");
-  const Vec3& a = x_start[static_cast<size_t>(n)];
-  const Vec3& c = x_end[static_cast<size_t>(n)];
-  if (!a.allFinite() || !c.allFinite())
-    throw std::domain_error("broad phase: non-finite position at node " + std::to_string(n));
-  Box b;
-  for (size_t d = 0; d < 3; ++d) {
-    const auto k = static_cast<Eigen::Index>(d);
-    b.lo[d] = std::min(a[k], c[k]);
-    b.hi[d] = std::max(a[k], c[k]);
-  }
-  return b;
+void throw_no_position(int node) {
+  throw std::invalid_argument("broad phase: surface node " + std::to_string(node) +
+                              " has no position");
+}
+
+void throw_not_finite(int node) {
+  throw std::domain_error("broad phase: non-finite position at node " + std::to_string(node));
 }
 
 void sweep_node_boxes(const SurfaceFeatures& f, std::span<const Vec3> x_start,
