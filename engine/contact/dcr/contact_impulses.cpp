@@ -76,19 +76,33 @@ bool by_nodes(const std::array<int, 4>& a, const std::array<int, 4>& b) { return
 
 // Each row held in the last step starts from its impulses there: the normal multiplier as it
 // was, the tangential impulse projected on the new tangents and limited to the Coulomb disc of
-// that normal impulse, |lambda_t| <= mu S lambda_n.
+// that normal impulse, |lambda_t| <= mu S lambda_n. A row is found by its nodes; when the rows
+// are the last solve's, in the same order (same_rows), row k's are last_[k].
 void ContactImpulses::warm_start(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
-                                 std::vector<Vec3>& v, double friction) {
+                                 std::vector<Vec3>& v, double friction, bool same_rows) {
   warm_started_ = 0;
-  for (ContactRow& r : rows) {
+  if (!same_rows) {
+    pushing_.clear();
+    for (const Remembered& m : last_)
+      if (m.lambda_n > 0.0) pushing_.push_back(m);
+    std::sort(pushing_.begin(), pushing_.end(),
+              [](const Remembered& a, const Remembered& b) { return by_nodes(a.nodes, b.nodes); });
+  }
+  for (size_t k = 0; k < rows.size(); ++k) {
+    ContactRow& r = rows[k];
     if (!(r.W_n > 0.0)) continue;
-    const auto it = std::lower_bound(
-        last_.begin(), last_.end(), r.nodes,
-        [](const Remembered& m, const std::array<int, 4>& key) { return by_nodes(m.nodes, key); });
-    if (it == last_.end() || it->nodes != r.nodes || !(it->lambda_n > 0.0)) continue;
-    r.lambda_n = it->lambda_n;
+    const Remembered* m = same_rows ? &last_[k] : nullptr;
+    if (!same_rows) {
+      const auto it = std::lower_bound(pushing_.begin(), pushing_.end(), r.nodes,
+                                       [](const Remembered& x, const std::array<int, 4>& key) {
+                                         return by_nodes(x.nodes, key);
+                                       });
+      if (it != pushing_.end() && it->nodes == r.nodes) m = &*it;
+    }
+    if (m == nullptr || !(m->lambda_n > 0.0)) continue;
+    r.lambda_n = m->lambda_n;
     if (friction > 0.0 && r.W_t > 0.0) {
-      double l1 = it->tangential.dot(r.t1), l2 = it->tangential.dot(r.t2);
+      double l1 = m->tangential.dot(r.t1), l2 = m->tangential.dot(r.t2);
       const double bound = friction * r.S * r.lambda_n, norm = std::sqrt(l1 * l1 + l2 * l2);
       if (norm > bound) {
         l1 *= bound / norm;
@@ -103,23 +117,25 @@ void ContactImpulses::warm_start(std::vector<ContactRow>& rows, const std::vecto
 }
 
 void ContactImpulses::remember(const std::vector<ContactRow>& rows) {
-  last_.clear();
-  for (const ContactRow& r : rows)
-    if (r.lambda_n > 0.0)
-      last_.push_back({r.nodes, r.lambda_n, r.lambda_t1 * r.t1 + r.lambda_t2 * r.t2});
-  std::sort(last_.begin(), last_.end(),
-            [](const Remembered& a, const Remembered& b) { return by_nodes(a.nodes, b.nodes); });
+  last_.resize(rows.size());
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const ContactRow& r = rows[k];
+    last_[k] = {r.nodes, r.lambda_n, r.lambda_t1 * r.t1 + r.lambda_t2 * r.t2};
+  }
+}
+
+// The same rows on the same nodes, in the same order, as the last solve (a resting contact).
+bool ContactImpulses::same_rows(const std::vector<ContactRow>& rows) const {
+  return linked_.size() == rows.size() &&
+         std::equal(
+             rows.begin(), rows.end(), linked_.begin(),
+             [](const ContactRow& r, const std::array<int, 4>& nodes) { return r.nodes == nodes; });
 }
 
 // The rows that share a node with each row (itself included), as a list per node: entries_ holds
-// (node, row) sorted by node, and a row's neighbours are the entries of its four nodes.
-void ContactImpulses::link_rows(const std::vector<ContactRow>& rows) {
-  // The same rows on the same nodes as the last solve (a resting contact): the same links.
-  const bool same = linked_.size() == rows.size() &&
-                    std::equal(rows.begin(), rows.end(), linked_.begin(),
-                               [](const ContactRow& r, const std::array<int, 4>& nodes) {
-                                 return r.nodes == nodes;
-                               });
+// (node, row) sorted by node, and a row's neighbours are the entries of its four nodes. The same
+// rows as the last solve's keep their links.
+void ContactImpulses::link_rows(const std::vector<ContactRow>& rows, bool same) {
   if (same) return;
   linked_.resize(rows.size());
   for (size_t k = 0; k < rows.size(); ++k) linked_[k] = rows[k].nodes;
@@ -176,8 +192,9 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
     for (int n : r.nodes) v_ref = std::max(v_ref, v[static_cast<size_t>(n)].norm());
   const double limit =
       std::max(settings.tolerance * std::max(v_ref, 1e-300), settings.velocity_floor);
-  if (settings.warm_start) warm_start(rows, inv_m, v, settings.friction);
-  link_rows(rows);
+  const bool same = same_rows(rows);
+  if (settings.warm_start) warm_start(rows, inv_m, v, settings.friction, same);
+  link_rows(rows, same);
   inverse_.resize(rows.size());
   for (size_t k = 0; k < rows.size(); ++k) {
     const ContactRow& r = rows[k];

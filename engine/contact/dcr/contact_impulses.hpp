@@ -85,9 +85,10 @@ class ContactImpulses {
     Vec3 tangential = Vec3::Zero();  // lambda_t1 t1 + lambda_t2 t2 [N s]
   };
   void warm_start(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
-                  std::vector<Vec3>& v, double friction);
+                  std::vector<Vec3>& v, double friction, bool same_rows);
   void remember(const std::vector<ContactRow>& rows);
-  void link_rows(const std::vector<ContactRow>& rows);
+  bool same_rows(const std::vector<ContactRow>& rows) const;
+  void link_rows(const std::vector<ContactRow>& rows, bool same);
   void mark_neighbours_dirty(size_t row);
   void remember_velocities(const ContactRow& r, const std::vector<Vec3>& v);
   double largest_change(const std::vector<Vec3>& v) const;
@@ -100,7 +101,8 @@ class ContactImpulses {
   std::vector<char> dirty_;                   // per row: a neighbour changed since its last visit
   std::vector<RowInverse> inverse_;           // per row, for the solve's sweeps
   long visits_ = 0;                           // row updates made by the last solve
-  std::vector<Remembered> last_;              // sorted by nodes
+  std::vector<Remembered> last_;     // per row of the last solve (its rows' nodes: linked_)
+  std::vector<Remembered> pushing_;  // scratch: those of last_ with lambda_n > 0, by nodes
   int warm_started_ = 0;
 };
 
