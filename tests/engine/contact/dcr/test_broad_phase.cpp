@@ -132,6 +132,31 @@ std::size_t search_equals_brute_force(const SurfaceFeatures& f, const Step& step
   return bp.stats().grid_entries;
 }
 
+// The positions at step k of a sequence over the two spheres: the right sphere approaches the
+// left one by 0.004 per step and jumps 0.3 towards it after step 30, and every node wobbles by
+// up to 0.002 along its own random direction (from `seed`).
+class ApproachingSpheres {
+ public:
+  ApproachingSpheres(const ModelMesh& mesh, unsigned seed) : mesh_(mesh) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (size_t i = 0; i < mesh.X.size(); ++i) wobble_.push_back(Vec3(u(rng), u(rng), u(rng)));
+  }
+  std::vector<Vec3> operator()(int k) const {
+    const double shift = 0.4 - 0.004 * k - (k > 30 ? 0.3 : 0.0);
+    std::vector<Vec3> x = mesh_.X;
+    for (size_t i = 0; i < x.size(); ++i) {
+      x[i] += 0.002 * std::sin(0.3 * k) * wobble_[i];
+      if (static_cast<int>(i) >= mesh_.bodies[1].first_node) x[i].x() += shift;
+    }
+    return x;
+  }
+
+ private:
+  const ModelMesh& mesh_;
+  std::vector<Vec3> wobble_;
+};
+
 }  // namespace
 
 TEST_CASE("broad phase equals the brute-force swept-box filter on two spheres", "[dcr]") {
@@ -322,19 +347,7 @@ TEST_CASE("broad phase: the cached search equals brute force over a moving seque
   const ModelMesh& mesh = two_spheres();
   const SurfaceFeatures f =
       ccm::dcr::make_surface_features(mesh, {"left/boundary", "right/boundary"});
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Vec3> wobble;
-  for (size_t i = 0; i < mesh.X.size(); ++i) wobble.push_back(Vec3(u(rng), u(rng), u(rng)));
-  auto positions = [&](int k) {
-    const double shift = 0.4 - 0.004 * k - (k > 30 ? 0.3 : 0.0);
-    std::vector<Vec3> x = mesh.X;
-    for (size_t i = 0; i < x.size(); ++i) {
-      x[i] += 0.002 * std::sin(0.3 * k) * wobble[i];
-      if (static_cast<int>(i) >= mesh.bodies[1].first_node) x[i].x() += shift;
-    }
-    return x;
-  };
+  const ApproachingSpheres positions(mesh, 7);
 
   for (bool self_contact : {false, true}) {
     CAPTURE(self_contact);
@@ -373,19 +386,7 @@ TEST_CASE("broad phase: edge boxes take their own inflation from the step's larg
   const ModelMesh& mesh = two_spheres();
   const SurfaceFeatures f =
       ccm::dcr::make_surface_features(mesh, {"left/boundary", "right/boundary"});
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Vec3> wobble;
-  for (size_t i = 0; i < mesh.X.size(); ++i) wobble.push_back(Vec3(u(rng), u(rng), u(rng)));
-  auto positions = [&](int k) {
-    const double shift = 0.4 - 0.004 * k - (k > 30 ? 0.3 : 0.0);
-    std::vector<Vec3> x = mesh.X;
-    for (size_t i = 0; i < x.size(); ++i) {
-      x[i] += 0.002 * std::sin(0.3 * k) * wobble[i];
-      if (static_cast<int>(i) >= mesh.bodies[1].first_node) x[i].x() += shift;
-    }
-    return x;
-  };
+  const ApproachingSpheres positions(mesh, 11);
   constexpr double kProximity = 0.05, kFloor = 1e-3;
   const ccm::dcr::EdgeInflation edges{.per_motion = 2.0, .floor = kFloor};
   BroadPhase bp;
