@@ -99,7 +99,7 @@ TEST_CASE("DCR hard scenes: blocks stacked face to face stay at rest and book th
   CHECK(r.limiters.contact == 0);
   // The velocity solves meet their limit before the 100-sweep cap, all but at most 1 % of them
   // (measured: 1 of 260; 249 of 260 without the floor): the limit includes the change that moves a
-  // node by the projection's dead band over the step (dcr_contact.cpp, the velocity floor). With
+  // node by 4e-3 of the kept separation over the step (dcr_contact.cpp, kVelocityFloor). With
   // the relative limit alone (1e-6 of the fastest contact node, which moves at about g dt when
   // resting), 629 of the 1,350 solves of scenes/hard/resting_blocks.toml stopped at the cap.
   CHECK(contact.unconverged_velocity_solves() <= r.steps / 100);
