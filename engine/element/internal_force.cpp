@@ -260,18 +260,20 @@ ElementSet make_element_set(const ModelMesh& mesh) {
   }
   std::vector<BlockSlabs> cuts;
   for (const Body& body : mesh.bodies) {
+    // A rigid body keeps a block (blocks are per body) without slabs: the step never sees it.
     es.blocks.push_back({body.first_element,
                          body.n_elements,
                          body.material.model,
                          lame_from(body.material),
-                         dilatational_wave_speed(body.material),
+                         body.rigid ? 0.0 : dilatational_wave_speed(body.material),
                          {},
                          {},
                          {},
                          body.element,
                          body.first_node,
                          body.n_nodes});
-    cuts.push_back(cut_into_slabs(mesh.X, mesh.tets, body.first_element, body.n_elements));
+    cuts.push_back(
+        cut_into_slabs(mesh.X, mesh.tets, body.first_element, body.rigid ? 0 : body.n_elements));
   }
   std::vector<std::span<const int>> slab_elements;
   for (size_t b = 0; b < cuts.size(); ++b)

@@ -21,6 +21,9 @@ struct Body {
   int n_elements = 0;
   std::vector<Triangle> boundary;  // outward-oriented boundary triangles (global node ids)
   ElementKind element = kDefaultElementKind;  // the formulation of its tets (docs/elements.md)
+  // A rigid body's elements are left out of the step: no internal forces, no mass on its nodes,
+  // no stable-step limit (engine/body/rigid_bodies.hpp moves its nodes).
+  bool rigid = false;
 };
 
 struct NamedSurface {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "engine/body/rigid_bodies.hpp"
 #include "engine/monitor/fixed_order_sum.hpp"
 #include "engine/solver/lumped_mass.hpp"
 #include "engine/solver/thread_count.hpp"
@@ -109,6 +110,7 @@ class CentralDifference {
         opt_(options),
         threads_(threads_for(model, options)),
         load_work_(model.bcs),
+        rigid_(model.mesh, model.rigid_bodies),
         body_energy_(model.mesh.bodies.size(), 0.0) {}
 
   RunSummary run();
@@ -139,6 +141,7 @@ class CentralDifference {
   const int threads_;
   State s_;
   LoadWork load_work_;
+  RigidBodies rigid_;  // their nodes follow their poses (engine/body/rigid_bodies.hpp)
   EnergyBalance energy_;
   std::vector<double> body_energy_;
   // x and the internal forces in the element kernel's padded form (padded_nodes.hpp): the
@@ -165,8 +168,11 @@ void CentralDifference::initialise() {
   s_.m_lumped = lumped_mass(mesh, model_.elements);
   s_.inv_m.resize(s_.m_lumped.size());
   if (opt_.coupling) opt_.coupling->assemble(s_.m_lumped, 1);
-  for (size_t i = 0; i < s_.m_lumped.size(); ++i) s_.inv_m[i] = 1.0 / s_.m_lumped[i];
+  // A rigid body's nodes carry no mass of their own (0: its motion is the body's).
+  for (size_t i = 0; i < s_.m_lumped.size(); ++i)
+    s_.inv_m[i] = s_.m_lumped[i] > 0.0 ? 1.0 / s_.m_lumped[i] : 0.0;
   for (int n : model_.bcs.fixed_nodes) s_.v[static_cast<size_t>(n)].setZero();
+  rigid_.initialise(s_);
   s_.t = 0.0;
   evaluate(true);
   apply_fixed_nodes();
@@ -175,7 +181,7 @@ void CentralDifference::initialise() {
   last_dt_ = summary_.dt_initial;
   double kinetic = leapfrog_kinetic_energy(s_, last_dt_, threads_, owned_nodes());
   if (opt_.coupling) opt_.coupling->sum_over_domains(std::span<double>(&kinetic, 1));
-  energy_.start(kinetic, total_internal_energy(), energy_floor());
+  energy_.start(kinetic + rigid_.kinetic_energy(), total_internal_energy(), energy_floor());
   summary_.n_nodes = mesh.n_nodes();
   summary_.threads = threads_;
   summary_.n_elements = mesh.n_elements();
@@ -242,6 +248,13 @@ void CentralDifference::predict(double dt) {
     x_padded_[i] = padded(s_.x[i]);
   }
   x_padded_current_ = true;
+  if (rigid_.empty()) return;
+  rigid_.predict(s_, dt, s_.t);
+  for (const RigidBodyModel& r : model_.rigid_bodies) {
+    const Body& body = model_.mesh.bodies[static_cast<size_t>(r.body)];
+    for (int node = body.first_node; node < body.first_node + body.n_nodes; ++node)
+      x_padded_[static_cast<size_t>(node)] = padded(s_.x[static_cast<size_t>(node)]);
+  }
 }
 
 // a_{n+1} = M^-1 (f_ext + f_int) + g   (eq. 2.29). The internal forces are summed apart, in
@@ -268,6 +281,7 @@ void CentralDifference::evaluate(bool with_energy) {
   const Vec3 g = model_.bcs.gravity;
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
   for (size_t i = 0; i < n; ++i) s_.a[i] = s_.inv_m[i] * (s_.f[i] + unpadded(f_internal_[i])) + g;
+  rigid_.gather(s_, g);
 }
 
 // A partitioned run: the shared nodes' forces completed (neighbour halos), and the stable step,
@@ -301,15 +315,18 @@ void CentralDifference::correct(double dt) {
   const auto n = s_.v.size();
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
   for (size_t i = 0; i < n; ++i) s_.v[i] += half_dt * s_.a[i];
+  rigid_.finish(s_, dt);
 }
 
 // Work of gravity = sum m g . u (exact: gravity is a constant field).
 double CentralDifference::gravity_work() const {
   if (!model_.bcs.has_gravity()) return 0.0;
-  return fixed_order_sum(owned_nodes(), threads_, [&](int n) {
-    const auto i = static_cast<size_t>(n);
-    return s_.m_lumped[i] * model_.bcs.gravity.dot(s_.x[i] - s_.X[i]);
-  });
+  return fixed_order_sum(owned_nodes(), threads_,
+                         [&](int n) {
+                           const auto i = static_cast<size_t>(n);
+                           return s_.m_lumped[i] * model_.bcs.gravity.dot(s_.x[i] - s_.X[i]);
+                         }) +
+         rigid_.gravity_work(model_.bcs.gravity);
 }
 
 // 1e-12 of the energy the model would carry with every node moving at the fastest wave speed:
@@ -318,6 +335,7 @@ double CentralDifference::energy_floor() const {
   double c_max = 0.0, mass = 0.0;
   for (const ElementBlock& b : model_.elements.blocks) c_max = std::max(c_max, b.wave_speed);
   for (int i = 0; i < owned_nodes(); ++i) mass += s_.m_lumped[static_cast<size_t>(i)];
+  for (int k = 0; k < rigid_.size(); ++k) mass += rigid_.body(k).mass();
   if (opt_.coupling) {
     double bounds[2] = {-c_max, 0.0};
     opt_.coupling->min_over_domains(bounds);
@@ -349,6 +367,7 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   if (auto bad = check_elements(last_eval_, s_.t)) return bad;
   if (!elements_valid_everywhere_)
     return Instability{s_.t, "an element failed in another subdomain", -1, -1};
+  if (!rigid_.failure().empty()) return Instability{s_.t, rigid_.failure(), -1, -1};
   if (opt_.contact) {
     const std::string& reason = opt_.contact->ledger().failure;
     if (!reason.empty())
@@ -374,6 +393,7 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   }
   if (not_finite) return not_finite;
   if (replicated_contact) w_ext += opt_.contact->ledger().work;
+  kinetic += rigid_.kinetic_energy();
   const double err = energy_.update(kinetic, total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
   if (auto bad = check_energy(err, opt_.monitor.energy_tolerance, s_.t)) return bad;

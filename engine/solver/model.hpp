@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/bc/boundary_conditions.hpp"
+#include "engine/body/rigid_body_model.hpp"
 #include "engine/element/internal_force.hpp"
 #include "engine/mesh/model_mesh.hpp"
 
@@ -15,6 +16,8 @@ struct Model {
   ElementSet elements;
   BoundaryConditions bcs;
   std::vector<Vec3> initial_velocity;  // per node
+  // One per body of the mesh marked rigid (Body::rigid), in body order.
+  std::vector<RigidBodyModel> rigid_bodies;
 };
 
 // Builds the element set and sets the initial velocities to zero. Throws std::runtime_error
