@@ -178,7 +178,19 @@ void print_summary_table(const RunRecord& r) {
              r.prepared.scene.title.empty() ? "" : "  (" + r.prepared.scene.title + ")");
   fmt::print("  {:<15}{}\n", "bodies", mesh.bodies.size());
   for (const Body& b : mesh.bodies)
-    fmt::print("  {:<15}  {}: {} nodes, {} elements\n", "", b.name, b.n_nodes, b.n_elements);
+    fmt::print("  {:<15}  {}: {} nodes, {} elements{}\n", "", b.name, b.n_nodes, b.n_elements,
+               b.rigid ? " (rigid: its elements are not stepped)" : "");
+  for (const RigidBodyModel& rb : r.prepared.model.rigid_bodies) {
+    const MassProperties& m = rb.mass;
+    fmt::print("  {:<15}{} ({}): mass {:.6g} kg, centre [{:.6g}, {:.6g}, {:.6g}] m\n", "rigid body",
+               mesh.bodies[static_cast<size_t>(rb.body)].name, to_string(rb.motion), m.mass,
+               m.center.x(), m.center.y(), m.center.z());
+    fmt::print(
+        "  {:<15}  inertia about the centre [kg m^2]: [[{:.6g}, {:.6g}, {:.6g}], [{:.6g}, "
+        "{:.6g}, {:.6g}], [{:.6g}, {:.6g}, {:.6g}]]\n",
+        "", m.inertia(0, 0), m.inertia(0, 1), m.inertia(0, 2), m.inertia(1, 0), m.inertia(1, 1),
+        m.inertia(1, 2), m.inertia(2, 0), m.inertia(2, 1), m.inertia(2, 2));
+  }
   fmt::print("  {:<15}{}\n", "nodes", s.n_nodes);
   fmt::print("  {:<15}{}\n", "elements", s.n_elements);
   const ContactSetup& contact = r.prepared.contact;
@@ -230,6 +242,20 @@ std::string summary_toml(const RunRecord& r) {
       fmt::format("verdict = {}\nexit_code = {}\n", toml_string(to_string(s.verdict)), r.exit_code);
   t += fmt::format("\n[model]\nbodies = {}\nnodes = {}\nelements = {}\n", mesh.bodies.size(),
                    s.n_nodes, s.n_elements);
+  for (const RigidBodyModel& rb : r.prepared.model.rigid_bodies) {
+    const MassProperties& m = rb.mass;
+    t += fmt::format(
+        "\n[[model.rigid_bodies]]  # docs/rigid-bodies.md\nbody = {}\nmotion = {}\nmass = {}  # "
+        "kg\ncenter = [{}, {}, {}]  # m\ninertia = [[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]]  # "
+        "kg "
+        "m^2, about the centre\n",
+        toml_string(mesh.bodies[static_cast<size_t>(rb.body)].name),
+        toml_string(to_string(rb.motion)), toml_float(m.mass), toml_float(m.center.x()),
+        toml_float(m.center.y()), toml_float(m.center.z()), toml_float(m.inertia(0, 0)),
+        toml_float(m.inertia(0, 1)), toml_float(m.inertia(0, 2)), toml_float(m.inertia(1, 0)),
+        toml_float(m.inertia(1, 1)), toml_float(m.inertia(1, 2)), toml_float(m.inertia(2, 0)),
+        toml_float(m.inertia(2, 1)), toml_float(m.inertia(2, 2)));
+  }
   t += "\n[run]\n";
   t += fmt::format("end_time = {}\ntime_reached = {}\nsteps = {}\n", toml_float(scene.time.end),
                    toml_float(s.end_time), s.steps);
@@ -327,6 +353,10 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
       throw UsageError(
           "field output (--fields, [output] fields) is not available in a run "
           "partitioned over MPI ranks: run it on one rank");
+    if (ranks.size() > 1 && !p.model.rigid_bodies.empty())
+      throw UsageError(
+          "a scene with rigid bodies (kind = \"rigid\") does not yet run partitioned over MPI "
+          "ranks: run it on one rank (threads still apply)");
   } catch (...) {
     failure = std::current_exception();
   }

@@ -42,6 +42,22 @@ RigidBodies::RigidBodies(const ModelMesh& mesh, const std::vector<RigidBodyModel
   }
   force_.assign(bodies_.size(), Vec3::Zero());
   torque_.assign(bodies_.size(), Vec3::Zero());
+  impulse_.assign(mesh.bodies.size(), HeldImpulse{});
+  contact_impulse_.assign(bodies_.size(), Vec3::Zero());
+  contact_angular_impulse_.assign(bodies_.size(), Vec3::Zero());
+}
+
+void RigidBodies::publish(int k, State& s) const {
+  const RigidBody& b = body(k);
+  RigidState& r = s.rigid[static_cast<size_t>(k)];
+  r.body = model(k).body;
+  r.center = b.center();
+  r.rotation = b.rotation();
+  r.velocity = b.velocity();
+  r.angular_velocity = b.angular_velocity();
+  r.kinetic_energy = b.kinetic_energy();
+  r.contact_impulse = contact_impulse_[static_cast<size_t>(k)];
+  r.contact_angular_impulse = contact_angular_impulse_[static_cast<size_t>(k)];
 }
 
 void RigidBodies::place_nodes(int k, State& s) const {
@@ -59,7 +75,9 @@ void RigidBodies::place_nodes(int k, State& s) const {
 }
 
 void RigidBodies::initialise(State& s) const {
+  s.rigid.assign(bodies_.size(), RigidState{});
   for (int k = 0; k < size(); ++k) {
+    publish(k, s);
     if (model(k).motion != RigidMotion::fixed) {
       place_nodes(k, s);
       continue;
@@ -107,6 +125,14 @@ void RigidBodies::predict(State& s, double dt, double t_n) {
       b.set_angular_velocity(w);
     }
     place_nodes(k, s);
+    publish(k, s);
+  }
+}
+
+void RigidBodies::take_impulses(const std::vector<HeldImpulse>& per_body) {
+  for (size_t b = 0; b < per_body.size() && b < impulse_.size(); ++b) {
+    impulse_[b].impulse += per_body[b].impulse;
+    impulse_[b].moment += per_body[b].moment;
   }
 }
 
@@ -114,14 +140,22 @@ void RigidBodies::finish(State& s, double dt) {
   for (int k = 0; k < size(); ++k) {
     RigidBody& b = bodies_[static_cast<size_t>(k)];
     const RigidBodyModel& m = *models_[static_cast<size_t>(k)];
-    if (m.motion == RigidMotion::fixed) continue;
+    const HeldImpulse J = impulse_[static_cast<size_t>(m.body)];
+    impulse_[static_cast<size_t>(m.body)] = HeldImpulse{};
+    const Vec3 angular = J.moment - b.center().cross(J.impulse);  // about c
+    contact_impulse_[static_cast<size_t>(k)] += J.impulse;
+    contact_angular_impulse_[static_cast<size_t>(k)] += angular;
     if (m.motion == RigidMotion::free) {
+      const double before = b.kinetic_energy();
+      b.kick(J.impulse, angular, 1.0);
+      contact_work_ += b.kinetic_energy() - before;
       b.kick(force_[static_cast<size_t>(k)], torque_[static_cast<size_t>(k)], 0.5 * dt);
-    } else {
+    } else if (m.motion == RigidMotion::prescribed) {
       b.set_velocity(at(m.prescribed_velocity, s.t));
       b.set_angular_velocity(at(m.prescribed_angular_velocity, s.t));
     }
-    place_nodes(k, s);
+    if (m.motion != RigidMotion::fixed) place_nodes(k, s);
+    publish(k, s);
   }
 }
 

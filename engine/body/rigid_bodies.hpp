@@ -5,9 +5,12 @@
 // central difference:
 //   predict  (after the nodes' predictor)  kick h/2 with F_n, drift h, place the nodes
 //   gather   (after the forces of t_{n+1}) F_{n+1} = sum_i f_i + m g, tau = sum_i r_i x f_i
-//   finish   (after the nodes' corrector)  kick h/2 with F_{n+1}, set the nodes' velocities
+//   finish   (after the nodes' corrector)  the contact's impulses J on the body (a constraint
+//            model holds its nodes within the step, engine/contact/contact_model.hpp), then
+//            kick h/2 with F_{n+1}; set the nodes' velocities
 // A fixed body stays where it is; a prescribed one follows its velocity histories. Both are
-// kinematic: a contact model treats their nodes as infinitely heavy.
+// kinematic: a contact model treats their nodes as infinitely heavy, and what it gives them is
+// their driver's. Every rigid body's state is written into State::rigid.
 #pragma once
 
 #include <string>
@@ -15,6 +18,7 @@
 
 #include "engine/body/rigid_body.hpp"
 #include "engine/body/rigid_body_model.hpp"
+#include "engine/contact/contact_model.hpp"
 #include "engine/core/state.hpp"
 #include "engine/mesh/model_mesh.hpp"
 
@@ -32,11 +36,14 @@ class RigidBodies {
   const Vec3& force(int k) const { return force_[static_cast<size_t>(k)]; }
   const Vec3& torque(int k) const { return torque_[static_cast<size_t>(k)]; }
 
-  // Places every body's nodes at t = 0 with their initial velocities (x = X).
+  // Places every body's nodes at t = 0 with their initial velocities (x = X); sizes s.rigid.
   void initialise(State& s) const;
   // The resultant of s.f on each body's nodes, plus m g, about its current centre; the nodes'
   // accelerations are set to zero (their motion is the body's).
   void gather(State& s, const Vec3& gravity);
+  // This step's impulses of a constraint-type contact on the held bodies (one entry per mesh
+  // body): taken by the free bodies at finish().
+  void take_impulses(const std::vector<HeldImpulse>& per_body);
   void predict(State& s, double dt, double t_n);
   void finish(State& s, double dt);
 
@@ -44,16 +51,24 @@ class RigidBodies {
   // kinematic body's energy is its driver's business and enters neither.
   double kinetic_energy() const;
   double gravity_work(const Vec3& gravity) const;
+  // Work of a constraint-type contact's impulses on the free bodies so far [J]: the kinetic
+  // energy each impulse changed. (The only force-type model, the analytic sphere, acts on
+  // deformable surfaces alone.)
+  double contact_work() const { return contact_work_; }
   // Non-empty once a drift has failed (the midpoint iteration did not converge).
   const std::string& failure() const { return failure_; }
 
  private:
   void place_nodes(int k, State& s) const;
+  void publish(int k, State& s) const;
 
   const ModelMesh& mesh_;
   std::vector<const RigidBodyModel*> models_;
   std::vector<RigidBody> bodies_;
-  std::vector<Vec3> force_, torque_;
+  std::vector<Vec3> force_, torque_;  // resultant about c, at the last gather
+  std::vector<HeldImpulse> impulse_;  // this step's contact impulses, moments about the origin
+  std::vector<Vec3> contact_impulse_, contact_angular_impulse_;  // since t = 0
+  double contact_work_ = 0.0;
   std::string failure_;
 };
 

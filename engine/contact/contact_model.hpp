@@ -15,6 +15,7 @@
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "engine/contact/replica_team.hpp"
 #include "engine/core/state.hpp"
@@ -34,6 +35,15 @@ struct ContactStepBound {
   // The longest step for which the model's detection stays valid (e.g. no point can arrive
   // unseen, or no feature can pass another within the step).
   double kinematic_dt = std::numeric_limits<double>::infinity();
+};
+
+// What a constraint-type model's correction gave, in one step, to a body whose nodes it holds
+// without moving them (fixed nodes, rigid bodies): the sum of its impulses on the body's nodes
+// [N s] and of their moments about the origin [N m s]. A free rigid body takes them as its
+// reaction, so that the momentum the contact exchanges is kept exactly.
+struct HeldImpulse {
+  Vec3 impulse = Vec3::Zero();
+  Vec3 moment = Vec3::Zero();
 };
 
 // The ceiling that asks for a model's kinematic bound whatever its value
@@ -81,6 +91,11 @@ class ContactModel {
   // bodies and for loops split among the ranks. A model that reads only its contact surfaces and
   // the elements touching them, and splits nothing, ignores it. Not pure for that reason.
   virtual void use_replica_team(ReplicaTeam& /*team*/) {}
+
+  // Adds this step's impulses on held bodies into per_body (one entry per body of the mesh);
+  // called after correct(). A model that acts by forces (add_forces) adds nothing: its forces on
+  // a rigid body's nodes reach the body through the nodal forces. Not pure for that reason.
+  virtual void add_held_impulses(std::vector<HeldImpulse>& /*per_body*/) const {}
 
  protected:
   ContactLedger ledger_;

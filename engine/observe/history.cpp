@@ -18,6 +18,9 @@ HistoryRecorder::HistoryRecorder(const ModelMesh& mesh, OutputRequest request)
       columns_.push_back(b.name + ".u_mean");
       columns_.push_back(b.name + ".u_max");
     }
+    if (!b.rigid) continue;
+    for (const char* q : kRigidColumns) columns_.push_back(b.name + "." + q);
+    last_contact_impulse_.push_back(Vec3::Zero());
   }
   for (const TrackedNode& t : request_.tracked)
     for (const char* q : {"ux", "uy", "uz", "vx", "vy", "vz"}) columns_.push_back(t.name + "." + q);
@@ -38,9 +41,28 @@ double kinetic_energy(const State& s, int first, int count) {
   return 0.5 * ke;
 }
 
+void HistoryRecorder::sample_rigid(const State& s, const RigidState& r, std::vector<double>& row) {
+  Vec3& last = last_contact_impulse_[static_cast<size_t>(&r - s.rigid.data())];
+  const double interval = s.t - last_t_;
+  const Vec3 F = interval > 0.0 ? Vec3((r.contact_impulse - last) / interval) : Vec3::Zero();
+  last = r.contact_impulse;
+  const Eigen::Quaterniond& q = r.rotation;
+  row.insert(row.end(), {r.center.x(), r.center.y(), r.center.z(), q.w(), q.x(), q.y(), q.z(),
+                         r.velocity.x(), r.velocity.y(), r.velocity.z(), r.angular_velocity.x(),
+                         r.angular_velocity.y(), r.angular_velocity.z(), r.contact_impulse.x(),
+                         r.contact_impulse.y(), r.contact_impulse.z(), F.x(), F.y(), F.z()});
+}
+
 void HistoryRecorder::sample_body(const State& s, const Body& b, double internal_energy,
                                   std::vector<double>& row) const {
-  if (request_.kinetic_energy) row.push_back(kinetic_energy(s, b.first_node, b.n_nodes));
+  if (request_.kinetic_energy && b.rigid) {
+    double ke = 0.0;
+    for (const RigidState& r : s.rigid)
+      if (&mesh_.bodies[static_cast<size_t>(r.body)] == &b) ke = r.kinetic_energy;
+    row.push_back(ke);
+  } else if (request_.kinetic_energy) {
+    row.push_back(kinetic_energy(s, b.first_node, b.n_nodes));
+  }
   if (request_.internal_energy) row.push_back(internal_energy);
   if (request_.displacement) {
     double sum = 0.0, max = 0.0;
@@ -58,8 +80,13 @@ void HistoryRecorder::sample_body(const State& s, const Body& b, double internal
 void HistoryRecorder::sample(const State& s, std::span<const double> body_internal_energy) {
   std::vector<double> row{s.t};
   row.reserve(columns_.size());
-  for (size_t b = 0; b < mesh_.bodies.size(); ++b)
+  for (size_t b = 0; b < mesh_.bodies.size(); ++b) {
     sample_body(s, mesh_.bodies[b], request_.internal_energy ? body_internal_energy[b] : 0.0, row);
+    if (!mesh_.bodies[b].rigid) continue;
+    for (const RigidState& r : s.rigid)
+      if (r.body == static_cast<int>(b)) sample_rigid(s, r, row);
+  }
+  last_t_ = s.t;
   for (const TrackedNode& t : request_.tracked) {
     const auto i = static_cast<size_t>(t.node);
     const Vec3 u = s.x[i] - s.X[i];

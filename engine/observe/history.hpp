@@ -16,6 +16,32 @@ struct TrackedNode {
   int node = -1;
 };
 
+// Every rigid body (engine/body/) adds, after its body's columns, its pose and motion and the
+// contact's action on it: <body>.x y z (centre of mass [m]), qw qx qy qz (rotation since the
+// reference), vx vy vz [m/s], wx wy wz [rad/s], contact_impulse_x y z (momentum the contact has
+// given it since t = 0 [N s]) and contact_force_x y z (that impulse over the output interval
+// that ends at the sample [N]: its integral over the samples is the momentum exchanged). Its
+// kinetic_energy column is the body's.
+inline constexpr const char* kRigidColumns[] = {"x",
+                                                "y",
+                                                "z",
+                                                "qw",
+                                                "qx",
+                                                "qy",
+                                                "qz",
+                                                "vx",
+                                                "vy",
+                                                "vz",
+                                                "wx",
+                                                "wy",
+                                                "wz",
+                                                "contact_impulse_x",
+                                                "contact_impulse_y",
+                                                "contact_impulse_z",
+                                                "contact_force_x",
+                                                "contact_force_y",
+                                                "contact_force_z"};
+
 struct OutputRequest {
   bool kinetic_energy = false;       // per body: 1/2 sum m |v|^2 [J]
   bool internal_energy = false;      // per body: sum V0 W [J]
@@ -50,12 +76,15 @@ class HistoryRecorder {
  private:
   void sample_body(const State& s, const Body& b, double internal_energy,
                    std::vector<double>& row) const;
+  void sample_rigid(const State& s, const RigidState& r, std::vector<double>& row);
 
   const ModelMesh& mesh_;
   OutputRequest request_;
   std::vector<const HistorySource*> sources_;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
+  std::vector<Vec3> last_contact_impulse_;  // per rigid body, at the last sample
+  double last_t_ = 0.0;
 };
 
 // Kinetic energy 1/2 sum m |v|^2 of nodes [first, first + count).

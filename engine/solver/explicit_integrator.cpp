@@ -121,6 +121,7 @@ class CentralDifference {
   void count_step(const StepChoice& step, double t_n);
   void predict(double dt);
   void evaluate(bool with_energy);
+  void correct_contact(double dt);
   void apply_fixed_nodes();
   void correct(double dt);
   double gravity_work() const;
@@ -141,7 +142,8 @@ class CentralDifference {
   const int threads_;
   State s_;
   LoadWork load_work_;
-  RigidBodies rigid_;  // their nodes follow their poses (engine/body/rigid_bodies.hpp)
+  RigidBodies rigid_;              // their nodes follow their poses (engine/body/rigid_bodies.hpp)
+  std::vector<HeldImpulse> held_;  // scratch: the contact's impulses on held bodies
   EnergyBalance energy_;
   std::vector<double> body_energy_;
   // x and the internal forces in the element kernel's padded form (padded_nodes.hpp): the
@@ -300,6 +302,15 @@ void CentralDifference::couple_evaluation(bool with_energy) {
   if (with_energy) opt_.coupling->sum_over_domains(body_energy_);
 }
 
+// Step 3; a rigid body takes the impulses the contact gave the nodes it held (rigid_bodies.hpp).
+void CentralDifference::correct_contact(double dt) {
+  opt_.contact->correct(s_, dt);
+  if (rigid_.empty()) return;
+  held_.assign(model_.mesh.bodies.size(), HeldImpulse{});
+  opt_.contact->add_held_impulses(held_);
+  rigid_.take_impulses(held_);
+}
+
 void CentralDifference::apply_fixed_nodes() {
   for (int n : model_.bcs.fixed_nodes) {
     const auto i = static_cast<size_t>(n);
@@ -394,6 +405,7 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   if (not_finite) return not_finite;
   if (replicated_contact) w_ext += opt_.contact->ledger().work;
   kinetic += rigid_.kinetic_energy();
+  w_ext += rigid_.contact_work();
   const double err = energy_.update(kinetic, total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
   if (auto bad = check_energy(err, opt_.monitor.energy_tolerance, s_.t)) return bad;
@@ -452,9 +464,9 @@ RunSummary CentralDifference::run() {
     const bool energy_check = (regular_step && steps_since_energy_check_ + 1 >= interval) ||
                               steps_since_energy_check_ + 1 >= 4 * interval;
     steps_since_energy_check_ = energy_check ? 0 : steps_since_energy_check_ + 1;
-    evaluate(energy_check || sample_now);             // 2
-    if (opt_.contact) opt_.contact->correct(s_, dt);  // 3
-    apply_fixed_nodes();                              // 4
+    evaluate(energy_check || sample_now);   // 2
+    if (opt_.contact) correct_contact(dt);  // 3
+    apply_fixed_nodes();                    // 4
     for (KinematicConstraint* c : opt_.constraints) c->apply(s_, dt);
     correct(dt);  // 5
     if (opt_.contact) opt_.contact->end_step(s_, dt);

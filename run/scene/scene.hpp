@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "config/config_error.hpp"
+#include "engine/body/rigid_body_model.hpp"
 #include "engine/core/element_kind.hpp"
 #include "engine/core/penalty_mode.hpp"
 #include "engine/core/step_safety.hpp"
@@ -70,6 +71,13 @@ struct BodySpec {
   Vec3 initial_velocity = Vec3::Zero();  // [m/s]
   // When set [kg]: the density becomes mass / meshed volume (material.rho is the nominal value).
   std::optional<double> mass;
+  // kind = "rigid" (docs/rigid-bodies.md): the body moves as one; its material gives its density.
+  bool rigid = false;
+  RigidMotion motion = RigidMotion::free;
+  Vec3 initial_angular_velocity = Vec3::Zero();  // [rad/s], world axes (free)
+  // motion = "prescribed": [t, x, y, z] points of the centre-of-mass velocity [m/s] and of the
+  // angular velocity [rad/s]; a missing one is zero.
+  std::vector<std::array<double, 4>> prescribed_velocity, prescribed_angular_velocity;
   SourceRef where;           // the [[bodies]] table
   SourceRef geometry_where;  // its geometry table
 };

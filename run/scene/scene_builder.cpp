@@ -110,10 +110,23 @@ std::string_view selection_key(const FixedSpec& f) {
   return keys[f.selection.index()];
 }
 
+// The rigid body holding node n, or nullptr.
+const Body* rigid_body_of(const ModelMesh& mesh, int n) {
+  for (const Body& b : mesh.bodies)
+    if (b.rigid && n >= b.first_node && n < b.first_node + b.n_nodes) return &b;
+  return nullptr;
+}
+
 void apply_fixed(const Scene& scene, Model& model) {
   for (const FixedSpec& f : scene.fixed) {
     const std::vector<int> nodes = select_nodes(scene, model.mesh, f);
     if (nodes.empty()) fail(scene, f.where, selection_key(f), "selects no node");
+    for (int n : nodes)
+      if (const Body* b = rigid_body_of(model.mesh, n))
+        fail(scene, f.where, selection_key(f),
+             fmt::format("selects nodes of the rigid body '{}': a rigid body is held by its "
+                         "motion (motion = \"fixed\" or \"prescribed\"), not by nodes",
+                         b->name));
     model.bcs.fix(nodes);
   }
 }
@@ -150,6 +163,14 @@ void apply_loads(const Scene& scene, Model& model) {
     const std::vector<Triangle> surface = select_surface(scene, model.mesh, s);
     const std::string_view key = s.surface.index() == 0 ? "surface" : "plane";
     if (surface.empty()) fail(scene, s.where, key, "selects no boundary triangle");
+    for (const RigidBodyModel& r : model.rigid_bodies) {
+      const Body& b = model.mesh.bodies[static_cast<size_t>(r.body)];
+      if (r.kinematic() && rigid_body_of(model.mesh, surface.front()[0]) == &b)
+        fail(scene, s.where, key,
+             fmt::format("loads the rigid body '{}', whose motion is \"{}\": a load cannot move "
+                         "it (make it free)",
+                         b.name, to_string(r.motion)));
+    }
     try {
       model.bcs.loads.push_back(
           make_surface_load(s.name, model.mesh, surface, s.direction, TimeTable(s.force)));
@@ -157,6 +178,39 @@ void apply_loads(const Scene& scene, Model& model) {
       fail(scene, s.where, key, e.what());
     }
   }
+}
+
+std::array<TimeTable, 3> vector_history(const std::vector<std::array<double, 4>>& points) {
+  std::array<TimeTable, 3> tables{TimeTable({{0.0, 0.0}}), TimeTable({{0.0, 0.0}}),
+                                  TimeTable({{0.0, 0.0}})};
+  if (points.empty()) return tables;
+  for (size_t c = 0; c < 3; ++c) {
+    std::vector<std::pair<double, double>> component;
+    for (const auto& p : points) component.emplace_back(p[0], p[c + 1]);
+    tables[c] = TimeTable(std::move(component));
+  }
+  return tables;
+}
+
+// Marks the scene's rigid bodies in the mesh (before the element set is made) and returns their
+// models, in body order.
+std::vector<RigidBodyModel> make_rigid_bodies(const Scene& scene, ModelMesh& mesh) {
+  std::vector<RigidBodyModel> out;
+  for (size_t b = 0; b < scene.bodies.size(); ++b) {
+    const BodySpec& spec = scene.bodies[b];
+    if (!spec.rigid) continue;
+    try {
+      out.push_back(make_rigid(mesh, static_cast<int>(b), spec.motion));
+    } catch (const std::invalid_argument& e) {
+      fail(scene, spec.where, "kind", fmt::format("body '{}': {}", spec.name, e.what()));
+    }
+    RigidBodyModel& r = out.back();
+    r.velocity = spec.initial_velocity;
+    r.angular_velocity = spec.initial_angular_velocity;
+    r.prescribed_velocity = vector_history(spec.prescribed_velocity);
+    r.prescribed_angular_velocity = vector_history(spec.prescribed_angular_velocity);
+  }
+  return out;
 }
 
 void apply_initial_velocities(const Scene& scene, Model& model) {
@@ -176,7 +230,9 @@ Model build_model(const Scene& scene) {
     add_body(mesh, body.name, material_of(body, geometry), std::move(geometry));
     mesh.bodies.back().element = body.element;
   }
+  std::vector<RigidBodyModel> rigid = make_rigid_bodies(scene, mesh);
   Model model = make_model(std::move(mesh));
+  model.rigid_bodies = std::move(rigid);
   apply_fixed(scene, model);
   apply_loads(scene, model);
   apply_initial_velocities(scene, model);
@@ -197,6 +253,19 @@ OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh) {
 }
 
 namespace {
+
+// The nodes a constraint-type contact holds without moving them: fixed nodes and every rigid
+// body's (sorted, unique).
+std::vector<int> held_nodes(const Model& model) {
+  std::vector<int> held = model.bcs.fixed_nodes;
+  for (const RigidBodyModel& r : model.rigid_bodies) {
+    const Body& b = model.mesh.bodies[static_cast<size_t>(r.body)];
+    for (int n = b.first_node; n < b.first_node + b.n_nodes; ++n) held.push_back(n);
+  }
+  std::sort(held.begin(), held.end());
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  return held;
+}
 
 // model = "dcr": every listed surface must exist and have triangles.
 ContactSetup build_dcr(const Scene& scene, const Model& model) {
@@ -230,7 +299,7 @@ ContactSetup build_dcr(const Scene& scene, const Model& model) {
   }
   std::unique_ptr<dcr::DcrContact> dcr;
   try {
-    dcr = std::make_unique<dcr::DcrContact>(mesh, settings, model.bcs.fixed_nodes);
+    dcr = std::make_unique<dcr::DcrContact>(mesh, settings, held_nodes(model));
   } catch (const std::invalid_argument& e) {
     fail(scene, c.where, "", e.what());
   }
@@ -284,6 +353,11 @@ ContactSetup build_contact(const Scene& scene, const Model& model) {
   if (it->second.body != body)
     fail(scene, c.where, key, fmt::format("surface '{}' is not on body '{}'", name, c.body));
   if (it->second.triangles.empty()) fail(scene, c.where, key, "the surface has no triangle");
+  if (mesh.bodies[static_cast<size_t>(body)].rigid)
+    fail(scene, c.where, key,
+         fmt::format("body '{}' is rigid: the analytic sphere's penalty contact acts on a "
+                     "deformable surface (use model = \"dcr\" between rigid and deformable bodies)",
+                     c.body));
 
   RigidSpherePenaltyParams p;
   p.name = c.sphere.name;

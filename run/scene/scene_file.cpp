@@ -312,9 +312,69 @@ ElementKind parse_element(const Table& t, const MaterialParams& material) {
   return kind;
 }
 
+// [t, x, y, z] points of a vector history: at least one, finite, t strictly increasing.
+std::vector<std::array<double, 4>> parse_vector_history(const Table& t, std::string_view key) {
+  const toml::node* n = t.node(key);
+  const std::string path = t.key_path(key);
+  const toml::array* a = n ? n->as_array() : nullptr;
+  if (!a) t.wrong_type(*n, path, "an array of [t, x, y, z] points");
+  std::vector<std::array<double, 4>> points;
+  std::vector<std::pair<double, double>> times;
+  for (size_t i = 0; i < a->size(); ++i) {
+    const std::string item = fmt::format("{}[{}]", path, i);
+    const toml::array* p = (*a)[i].as_array();
+    if (!p || p->size() != 4) t.wrong_type((*a)[i], item, "a [t, x, y, z] point of numbers");
+    std::array<double, 4> v{};
+    for (size_t c = 0; c < 4; ++c) v[c] = t.number((*p)[c], fmt::format("{}[{}]", item, c));
+    points.push_back(v);
+    times.emplace_back(v[0], v[1] + v[2] + v[3]);
+  }
+  const std::string problem = TimeTable::validate(times);
+  if (!problem.empty()) t.fail(key, problem);
+  return points;
+}
+
+// kind = "rigid" and its keys (docs/rigid-bodies.md); the keys of a rigid body's motion are
+// refused on a deformable body, and the keys of one motion under another.
+void parse_rigid(const Table& t, BodySpec& b) {
+  const std::string kind = t.get_or<std::string>("kind", "deformable");
+  if (kind != "deformable" && kind != "rigid")
+    t.fail("kind",
+           unknown_value_problem(kind, std::array<std::string_view, 2>{"deformable", "rigid"}));
+  b.rigid = kind == "rigid";
+  for (std::string_view key :
+       {"motion", "initial_angular_velocity", "velocity", "angular_velocity"})
+    if (!b.rigid && t.has(key)) t.fail(key, "applies only to kind = \"rigid\"");
+  if (!b.rigid) return;
+  const std::string motion = t.get_or<std::string>("motion", "free");
+  static constexpr std::array<std::string_view, 3> kMotions = {"free", "fixed", "prescribed"};
+  if (motion == "free")
+    b.motion = RigidMotion::free;
+  else if (motion == "fixed")
+    b.motion = RigidMotion::fixed;
+  else if (motion == "prescribed")
+    b.motion = RigidMotion::prescribed;
+  else
+    t.fail("motion", unknown_value_problem(motion, kMotions));
+  const bool prescribed = b.motion == RigidMotion::prescribed;
+  for (std::string_view key : {"velocity", "angular_velocity"})
+    if (!prescribed && t.has(key)) t.fail(key, "applies only to motion = \"prescribed\"");
+  for (std::string_view key : {"initial_velocity", "initial_angular_velocity"})
+    if (b.motion != RigidMotion::free && t.has(key))
+      t.fail(key, fmt::format("applies only to motion = \"free\" (this body's is \"{}\")", motion));
+  b.initial_angular_velocity = t.get_or<Vec3>("initial_angular_velocity", Vec3::Zero());
+  if (!prescribed) return;
+  if (!t.has("velocity") && !t.has("angular_velocity"))
+    t.fail("motion", "prescribed needs velocity = [[t, vx, vy, vz], ...] or angular_velocity");
+  if (t.has("velocity")) b.prescribed_velocity = parse_vector_history(t, "velocity");
+  if (t.has("angular_velocity"))
+    b.prescribed_angular_velocity = parse_vector_history(t, "angular_velocity");
+}
+
 BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
-  t.allow_only(
-      {"name", "initial_velocity", "mass", "material", "element", "geometry", "placement"});
+  t.allow_only({"name", "kind", "motion", "initial_velocity", "initial_angular_velocity",
+                "velocity", "angular_velocity", "mass", "material", "element", "geometry",
+                "placement"});
   BodySpec b;
   b.name = checked_name(t, "name");
   require_unique(t, "name", b.name, names);
@@ -322,6 +382,7 @@ BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
   if (t.has("mass")) b.mass = positive(t, "mass", t.need<double>("mass"));
   b.material = parse_material(t.need_table("material"));
   b.element = parse_element(t, b.material);
+  parse_rigid(t, b);
   const Table geometry = t.need_table("geometry");
   b.geometry = parse_geometry(geometry);
   if (auto p = t.table("placement")) b.placement = parse_placement(*p);

@@ -178,7 +178,9 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
       edge_orientation_(features_),
       restitution_(mesh, settings_.restitution, anchored_bodies(mesh, fixed_nodes)),
       projection_update_(mesh, features_.nodes),
-      output_(mesh, contact_bodies(features_), settings_.output) {
+      output_(mesh, contact_bodies(features_), settings_.output),
+      anchored_(anchored_bodies(mesh, fixed_nodes)),
+      held_(mesh.bodies.size()) {
   if (settings_.restitution < 0.0 || settings_.restitution > 1.0)
     throw std::invalid_argument("dcr: restitution must lie in [0, 1]");
   if (settings_.friction < 0.0) throw std::invalid_argument("dcr: friction must be >= 0");
@@ -618,6 +620,7 @@ void DcrContact::correct(State& s, double dt) {
   pair_impulses_.clear();
   near_.clear();
   rows_.clear();
+  std::fill(held_.begin(), held_.end(), HeldImpulse{});
   residual_ = 0.0;  // measured by exchange_momentum
   if (!constraints_.empty()) {
     enforce_positions(s, dt);
@@ -627,6 +630,7 @@ void DcrContact::correct(State& s, double dt) {
   const double restitution_work = restitution_.after_solve(pair_impulses_, near_, s, dt);
   work_ += restitution_work;
   parts_.restitution += restitution_work;
+  collect_held_impulses(s);
   if (report) {
     output_.add_impulses(rows_, restitution_.last_corrections(), node_body_);
     output_.finish(s, dt);
@@ -736,6 +740,44 @@ void DcrContact::exchange_momentum(State& s, double dt) {
   }
   for (const Constraint& c : constraints_)
     for (int n : c.nodes) count_[static_cast<size_t>(n)] = 0;
+}
+
+// The impulse of every row on its held nodes (inv_m = 0), and of the restitution on anchored
+// bodies, summed per body with their moments about the origin. A held node moving at v (a rigid
+// body's) takes work J . v from the contact: it enters the check for injected energy beside the
+// impulses' work on the free nodes (for a fixed node, v = 0).
+void DcrContact::collect_held_impulses(const State& s) {
+  for (size_t k = 0; k < rows_.size(); ++k) {
+    const ContactRow& r = rows_[k];
+    if (!(r.lambda_n > 0.0) && r.lambda_t1 == 0.0 && r.lambda_t2 == 0.0) continue;
+    const Vec3 tangential = r.lambda_t1 * r.t1 + r.lambda_t2 * r.t2;
+    for (int a = 0; a < 4; ++a) {
+      const auto i = static_cast<size_t>(r.nodes[a]);
+      if (inv_m_[i] != 0.0) continue;
+      const Vec3 J = r.lambda_n * r.grad[a] + r.beta[a] * tangential;
+      HeldImpulse& h = held_[static_cast<size_t>(node_body_[i])];
+      h.impulse += J;
+      h.moment += s.x[i].cross(J);
+      parts_.impulses += J.dot(s.v[i]);
+    }
+  }
+  for (const PairImpulse& p : restitution_.last_corrections()) {
+    if (anchored_[static_cast<size_t>(p.body_b)]) {
+      held_[static_cast<size_t>(p.body_b)].impulse += p.impulse_on_b;
+      held_[static_cast<size_t>(p.body_b)].moment += p.point.cross(p.impulse_on_b);
+    }
+    if (anchored_[static_cast<size_t>(p.body_a)]) {
+      held_[static_cast<size_t>(p.body_a)].impulse -= p.impulse_on_b;
+      held_[static_cast<size_t>(p.body_a)].moment -= p.point.cross(p.impulse_on_b);
+    }
+  }
+}
+
+void DcrContact::add_held_impulses(std::vector<HeldImpulse>& per_body) const {
+  for (size_t b = 0; b < held_.size() && b < per_body.size(); ++b) {
+    per_body[b].impulse += held_[b].impulse;
+    per_body[b].moment += held_[b].moment;
+  }
 }
 
 // This step's normal impulses between two bodies, for the restitution: the impulse on the body

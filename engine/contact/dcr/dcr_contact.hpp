@@ -72,7 +72,10 @@ struct Constraint {
 
 class DcrContact : public ContactModel, public HistorySource {
  public:
-  // fixed_nodes: nodes held by boundary conditions; the contact never moves them.
+  // fixed_nodes: nodes the contact holds without moving them: those of boundary conditions and
+  // every node of a rigid body (engine/body/), which moves as its body does; a body holding one is
+  // anchored (infinite mass) for the restitution, and the impulses on it are reported by
+  // add_held_impulses.
   DcrContact(const ModelMesh& mesh, DcrSettings settings, const std::vector<int>& fixed_nodes);
 
   void begin_step(const State& state, double dt) override;
@@ -85,6 +88,9 @@ class DcrContact : public ContactModel, public HistorySource {
   // A partitioned run's team: whole bodies for the restitution; the loops over the surface nodes
   // (the bodies' boxes and reach, the broad phase's sweep) split among the ranks.
   void use_replica_team(ReplicaTeam& team) override;
+  // The step's impulses on held nodes (the rows' lambda_n grad_a + beta_a lambda_t) and the
+  // restitution's on anchored bodies, per body.
+  void add_held_impulses(std::vector<HeldImpulse>& per_body) const override;
   // Work on the bodies so far, but for the stored energy this step's projection put into the
   // elements: the integrator measured the stored energy before the contact moved any node, so
   // that part enters its balance with the next evaluation (the kinetic part of the projection,
@@ -161,6 +167,7 @@ class DcrContact : public ContactModel, public HistorySource {
   ContactRow make_row(const Constraint& c, const std::vector<Vec3>& x, const std::vector<Vec3>& acc,
                       double dt, double& distance) const;
   void collect_pair_impulses(const std::vector<Vec3>& x);
+  void collect_held_impulses(const State& s);
   void order_constraints();
   double mobility(const Constraint& c, const std::array<Vec3, 4>& grad) const;
   double constraint_value(const Constraint& c, const std::vector<Vec3>& x) const;
@@ -191,6 +198,8 @@ class DcrContact : public ContactModel, public HistorySource {
   ProjectionUpdate projection_update_;
   ContactOutput output_;
   std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
+  std::vector<bool> anchored_;              // per body: holds a held node
+  std::vector<HeldImpulse> held_;           // this step's impulses on held nodes, per body
   std::vector<std::pair<int, int>> near_;   // scratch: body pairs holding contacts
   std::vector<int> count_;                  // scratch: per-node marks (all zero between uses)
   using ConstraintKey = std::array<double, 7>;

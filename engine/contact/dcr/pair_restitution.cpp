@@ -17,16 +17,22 @@ PairRestitution::PairRestitution(const ModelMesh& mesh, double restitution,
 }
 
 // Mass, centre, linear and angular velocity of one body (angular: omega = I^-1 L about the
-// centre, I = sum m (|r|^2 1 - r r^T)).
+// centre, I = sum m (|r|^2 1 - r r^T)). A rigid body's nodes carry no lumped mass (its mass is
+// its own, engine/body/): it is anchored here, and its motion is read with equal node weights,
+// which recover a rigid velocity field exactly.
 RigidMotion PairRestitution::motion_of(int body, const State& s, double dt) const {
   const NodeRange& b = bodies_[static_cast<size_t>(body)];
+  bool massless = true;
+  for (int n = b.first; n < b.first + b.count && massless; ++n)
+    massless = s.m_lumped[static_cast<size_t>(n)] == 0.0;
+  auto weight = [&](size_t i) { return massless ? 1.0 : s.m_lumped[i]; };
   RigidMotion r;
   Vec3 p = Vec3::Zero(), mx = Vec3::Zero();
   for (int n = b.first; n < b.first + b.count; ++n) {
     const auto i = static_cast<size_t>(n);
-    r.mass += s.m_lumped[i];
-    mx += s.m_lumped[i] * s.x[i];
-    p += s.m_lumped[i] * end_velocity(s, dt, i);
+    r.mass += weight(i);
+    mx += weight(i) * s.x[i];
+    p += weight(i) * end_velocity(s, dt, i);
   }
   r.centre = mx / r.mass;
   r.velocity = p / r.mass;
@@ -35,8 +41,8 @@ RigidMotion PairRestitution::motion_of(int body, const State& s, double dt) cons
   for (int n = b.first; n < b.first + b.count; ++n) {
     const auto i = static_cast<size_t>(n);
     const Vec3 d = s.x[i] - r.centre;
-    inertia += s.m_lumped[i] * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
-    L += s.m_lumped[i] * d.cross(end_velocity(s, dt, i) - r.velocity);
+    inertia += weight(i) * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+    L += weight(i) * d.cross(end_velocity(s, dt, i) - r.velocity);
   }
   r.inv_inertia = inertia.inverse();
   r.omega = r.inv_inertia * L;

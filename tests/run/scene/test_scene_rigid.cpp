@@ -1,0 +1,117 @@
+// Scene bodies with kind = "rigid" (docs/scene-file.md, docs/rigid-bodies.md): parsing, the
+// builder (mass properties, held nodes), and every refusal naming the file, the line and the key;
+// the project's pad-on-limb example run with its pad deformable and rigid.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <string>
+
+#include "run/scene/scene_builder.hpp"
+#include "run/scene/scene_file.hpp"
+#include "tests/support/scene_fixtures.hpp"
+
+using Catch::Contains;
+using namespace ccm;
+
+namespace {
+
+// One cube with its rigid keys from line 5 on, before its material table.
+std::string rigid_cube(const std::string& keys) {
+  std::string body = test::cube_body_toml("cube");
+  const auto at = body.find("[bodies.material]");
+  return test::kTimeToml + body.substr(0, at) + keys + body.substr(at);
+}
+
+std::string build_error_of(const std::string& text) {
+  try {
+    const Scene scene = parse_scene(text, "s.toml");
+    const Model model = build_model(scene);
+    build_contact(scene, model);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE(
+    "scene: a rigid body parses, builds with the mass of its meshed volume, and leaves its "
+    "elements out of the step",
+    "[rigid-body][scene]") {
+  const Scene scene =
+      parse_scene(rigid_cube("kind = \"rigid\"\ninitial_velocity = [0.0, 0.0, -1.0]\n"
+                             "initial_angular_velocity = [0.0, 0.0, 2.0]\n"),
+                  "s.toml");
+  REQUIRE(scene.bodies.size() == 1);
+  CHECK(scene.bodies[0].rigid);
+  CHECK(scene.bodies[0].motion == RigidMotion::free);
+  const Model model = build_model(scene);
+  REQUIRE(model.rigid_bodies.size() == 1);
+  const RigidBodyModel& r = model.rigid_bodies[0];
+  // 1 cm cube of 1000 kg/m^3: 1 g, I = m a^2 / 6 (round-off: the tets integrate exactly).
+  CHECK(r.mass.mass == Approx(1e-3).epsilon(1e-12));
+  CHECK(r.mass.inertia(2, 2) == Approx(1e-3 * 1e-4 / 6.0).epsilon(1e-12));
+  CHECK(r.velocity == Vec3(0.0, 0.0, -1.0));
+  CHECK(r.angular_velocity == Vec3(0.0, 0.0, 2.0));
+  CHECK(model.mesh.bodies[0].rigid);
+  CHECK(model.elements.schedule.slabs.empty());
+}
+
+TEST_CASE("scene: a prescribed rigid body reads its velocity histories", "[rigid-body][scene]") {
+  const Scene scene =
+      parse_scene(rigid_cube("kind = \"rigid\"\nmotion = \"prescribed\"\n"
+                             "velocity = [[0.0, 0.0, 0.0, 0.0], [1e-3, 0.0, 0.0, -2.0]]\n"),
+                  "s.toml");
+  const Model model = build_model(scene);
+  const RigidBodyModel& r = model.rigid_bodies.at(0);
+  CHECK(r.motion == RigidMotion::prescribed);
+  CHECK(r.prescribed_velocity[2](5e-4) == Approx(-1.0));
+  CHECK(r.prescribed_angular_velocity[0](5e-4) == 0.0);
+}
+
+TEST_CASE("scene: rigid keys in the wrong place are refused with file, line and key",
+          "[rigid-body][scene]") {
+  using test::scene_error_of;
+  CHECK_THAT(scene_error_of(rigid_cube("kind = \"rigd\"\n")),
+             Contains("s.toml:5") && Contains("kind") && Contains("did you mean \"rigid\""));
+  CHECK_THAT(scene_error_of(rigid_cube("motion = \"free\"\n")),
+             Contains("s.toml:5") && Contains("applies only to kind = \"rigid\""));
+  CHECK_THAT(scene_error_of(rigid_cube("kind = \"rigid\"\nmotion = \"pinned\"\n")),
+             Contains("s.toml:6") && Contains("motion"));
+  CHECK_THAT(scene_error_of(rigid_cube("kind = \"rigid\"\nvelocity = [[0.0, 0.0, 0.0, 1.0]]\n")),
+             Contains("s.toml:6") && Contains("applies only to motion = \"prescribed\""));
+  CHECK_THAT(scene_error_of(rigid_cube("kind = \"rigid\"\nmotion = \"prescribed\"\n")),
+             Contains("s.toml:6") && Contains("prescribed needs velocity"));
+  CHECK_THAT(
+      scene_error_of(rigid_cube("kind = \"rigid\"\nmotion = \"fixed\"\ninitial_velocity = [0.0, "
+                                "0.0, 1.0]\n")),
+      Contains("s.toml:7") && Contains("applies only to motion = \"free\""));
+  CHECK_THAT(
+      scene_error_of(rigid_cube("kind = \"rigid\"\nmotion = \"prescribed\"\n"
+                                "velocity = [[1.0, 0.0, 0.0, 1.0], [0.5, 0.0, 0.0, 1.0]]\n")),
+      Contains("s.toml:7") && Contains("velocity"));
+  CHECK_THAT(scene_error_of(rigid_cube("kind = \"rigid\"\nmotion = \"prescribed\"\n"
+                                       "velocity = [[0.0, 1.0, 1.0]]\n")),
+             Contains("velocity[0]") && Contains("[t, x, y, z]"));
+}
+
+TEST_CASE(
+    "scene: fixed nodes and loads on a rigid body, and the sphere's penalty on one, are "
+    "refused by the builder",
+    "[rigid-body][scene]") {
+  const std::string fixed_rigid =
+      rigid_cube("kind = \"rigid\"\n") + "[[fixed]]\nbody = \"cube\"\nnode_set = \"boundary\"\n";
+  CHECK_THAT(build_error_of(fixed_rigid), Contains("s.toml:16") && Contains("rigid body 'cube'") &&
+                                              Contains("motion = \"fixed\""));
+  const std::string loaded_fixed =
+      rigid_cube("kind = \"rigid\"\nmotion = \"fixed\"\n") +
+      "[[surface_loads]]\nbody = \"cube\"\nsurface = \"boundary\"\ndirection = [0.0, 0.0, 1.0]\n"
+      "force = [[0.0, 1.0]]\n";
+  CHECK_THAT(build_error_of(loaded_fixed),
+             Contains("s.toml:17") && Contains("whose motion is \"fixed\""));
+  const std::string penalty = rigid_cube("kind = \"rigid\"\n") +
+                              "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\n"
+                              "[contact.sphere]\nradius = 0.005\nmass = 0.01\n"
+                              "center = [0.005, 0.005, 0.02]\n";
+  CHECK_THAT(build_error_of(penalty), Contains("body 'cube' is rigid"));
+}
