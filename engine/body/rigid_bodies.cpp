@@ -58,6 +58,10 @@ void RigidBodies::publish(int k, State& s) const {
   r.kinetic_energy = b.kinetic_energy();
   r.contact_impulse = contact_impulse_[static_cast<size_t>(k)];
   r.contact_angular_impulse = contact_angular_impulse_[static_cast<size_t>(k)];
+  if (model(k).kinematic()) return;
+  const Mat3 R = b.orientation().toRotationMatrix();
+  r.inverse_mass = 1.0 / b.mass();
+  r.inverse_inertia = R * b.principal_moments().cwiseInverse().asDiagonal() * R.transpose();
 }
 
 void RigidBodies::place_nodes(int k, State& s) const {

@@ -37,7 +37,8 @@ class RigidBody {
 
   double mass() const { return mass_; }
   const Vec3& principal_moments() const { return moments_; }
-  Mat3 inertia_world() const;  // R diag(moments) R^T at the current orientation
+  Mat3 inertia_world() const;                     // R diag(moments) R^T at the current orientation
+  const Quat& orientation() const { return q_; }  // principal frame to world, now
 
   const Vec3& center() const { return c_; }
   const Vec3& reference_center() const { return c0_; }

@@ -21,6 +21,10 @@ struct RigidState {
   // since t = 0 [N s], [N m s]: forces on its nodes and impulses on it alike.
   Vec3 contact_impulse = Vec3::Zero();
   Vec3 contact_angular_impulse = Vec3::Zero();
+  // Its mobility, for a contact model that solves with it: 1/m and I^-1 in world axes; both zero
+  // for a fixed or prescribed body (infinitely heavy).
+  double inverse_mass = 0.0;
+  Mat3 inverse_inertia = Mat3::Zero();
 };
 
 struct State {

@@ -61,6 +61,55 @@ double update_row(ContactRow& r, const RowInverse& inv, const std::vector<double
   return change;
 }
 
+// update_row for a row with nodes of free rigid bodies (rigid_partners.hpp): their velocities
+// are read from the bodies, and the updates change the bodies.
+double update_rigid_row(ContactRow& r, const RowInverse& inv, const std::vector<double>& inv_m,
+                        std::vector<Vec3>& v, double mu, const RigidRowPart& part,
+                        RigidPartners& bodies) {
+  if (!(r.W_n > 0.0)) return 0.0;
+  std::array<Vec3, 4> u;
+  std::array<double, 4> w;
+  for (int a = 0; a < 4; ++a) {
+    const auto i = static_cast<size_t>(r.nodes[a]);
+    u[a] = part.of_node[a] >= 0 ? bodies.velocity(part, a) : v[i];
+    w[a] = inv_m[i];  // 0 for a rigid body's node: the body takes its share
+  }
+  const bool friction = mu > 0.0 && r.W_t > 0.0;
+  double rate = 0.0;
+  Vec3 slip = Vec3::Zero();
+  for (int a = 0; a < 4; ++a) {
+    rate += r.grad[a].dot(u[a]);
+    slip += r.beta[a] * u[a];
+  }
+  const double lambda_n = std::max(0.0, r.lambda_n + (r.target - rate) * inv.W_n);
+  const double d_n = lambda_n - r.lambda_n;
+  if (lambda_n == 0.0 && d_n == 0.0 && r.lambda_t1 == 0.0 && r.lambda_t2 == 0.0) return 0.0;
+  r.lambda_n = lambda_n;
+  for (int a = 0; a < 4; ++a) u[a] += w[a] * d_n * r.grad[a];
+  bodies.apply_normal(part, d_n);
+  double change = std::abs(d_n) * inv.change_n;
+  if (friction) {
+    slip += d_n * inv.slip_per_normal;
+    double l1 = r.lambda_t1 - slip.dot(r.t1) * inv.W_t, l2 = r.lambda_t2 - slip.dot(r.t2) * inv.W_t;
+    const double bound = mu * r.S * lambda_n, norm2 = l1 * l1 + l2 * l2;
+    if (norm2 > bound * bound) {
+      const double scale = bound / std::sqrt(norm2);
+      l1 *= scale;
+      l2 *= scale;
+    }
+    const double d_t1 = l1 - r.lambda_t1, d_t2 = l2 - r.lambda_t2;
+    r.lambda_t1 = l1;
+    r.lambda_t2 = l2;
+    const Vec3 tangential = d_t1 * r.t1 + d_t2 * r.t2;
+    for (int a = 0; a < 4; ++a) u[a] += w[a] * r.beta[a] * tangential;
+    bodies.apply_tangential(part, tangential);
+    change = std::max(change, std::sqrt(d_t1 * d_t1 + d_t2 * d_t2) * r.W_t);
+  }
+  for (int a = 0; a < 4; ++a)
+    if (part.of_node[a] < 0) v[static_cast<size_t>(r.nodes[a])] = u[a];
+  return change;
+}
+
 // Adds the impulse (lambda_n along grad g, tangential along beta) to the row's four nodes.
 void apply_impulse(const ContactRow& r, double lambda_n, const Vec3& tangential,
                    const std::vector<double>& inv_m, std::vector<Vec3>& v) {
@@ -111,7 +160,13 @@ void ContactImpulses::warm_start(std::vector<ContactRow>& rows, const std::vecto
       r.lambda_t1 = l1;
       r.lambda_t2 = l2;
     }
-    apply_impulse(r, r.lambda_n, r.lambda_t1 * r.t1 + r.lambda_t2 * r.t2, inv_m, v);
+    const Vec3 tangential = r.lambda_t1 * r.t1 + r.lambda_t2 * r.t2;
+    apply_impulse(r, r.lambda_n, tangential, inv_m, v);
+    if (partners_ && rigid_index_[k] >= 0) {
+      const RigidRowPart& part = rigid_parts_[static_cast<size_t>(rigid_index_[k])];
+      partners_->apply_normal(part, r.lambda_n);
+      partners_->apply_tangential(part, tangential);
+    }
     ++warm_started_;
   }
 }
@@ -182,14 +237,49 @@ double ContactImpulses::largest_change(const std::vector<Vec3>& v) const {
   return std::sqrt(worst2);
 }
 
+void ContactImpulses::attach_rigid(std::vector<ContactRow>& rows, const std::vector<Vec3>& x) {
+  rigid_index_.assign(rows.size(), -1);
+  rigid_parts_.clear();
+  body_rows_.assign(static_cast<size_t>(partners_->size()), {});
+  for (size_t k = 0; k < rows.size(); ++k) {
+    ContactRow& r = rows[k];
+    const RigidRowPart part = partners_->part_of(r, x);
+    if (part.n == 0) continue;
+    const bool inert = !(r.S > 0.0);  // make_row left it without a normal
+    if (inert) continue;
+    r.W_n += partners_->normal_mobility(part);
+    r.W_t += partners_->tangential_mobility(part, r);
+    rigid_index_[k] = static_cast<int>(rigid_parts_.size());
+    rigid_parts_.push_back(part);
+    for (int s = 0; s < part.n; ++s)
+      body_rows_[static_cast<size_t>(part.partner[static_cast<size_t>(s)])].push_back(
+          static_cast<int>(k));
+  }
+}
+
+void ContactImpulses::mark_body_rows_dirty(size_t row) {
+  const RigidRowPart& part = rigid_parts_[static_cast<size_t>(rigid_index_[row])];
+  for (int s = 0; s < part.n; ++s)
+    for (int k : body_rows_[static_cast<size_t>(part.partner[static_cast<size_t>(s)])])
+      dirty_[static_cast<size_t>(k)] = 1;
+}
+
 ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
                                     const std::vector<double>& inv_m, std::vector<Vec3>& v,
-                                    const ImpulseSettings& settings) {
+                                    const ImpulseSettings& settings, RigidPartners* partners,
+                                    const std::vector<Vec3>* x) {
+  partners_ = partners && !partners->empty() && x ? partners : nullptr;
+  if (partners_) attach_rigid(rows, *x);
   // Reference speed: the fastest contact node (a solve that moves no node by more than
   // tolerance x v_ref has converged).
   double v_ref = 0.0;
   for (const ContactRow& r : rows)
     for (int n : r.nodes) v_ref = std::max(v_ref, v[static_cast<size_t>(n)].norm());
+  // With rigid partners, the rigid rows' velocities are the bodies': the reference speed takes
+  // them in as well.
+  if (partners_)
+    for (int b = 0; b < partners_->size(); ++b)
+      v_ref = std::max(v_ref, (*partners_)[b].velocity.norm());
   const double limit =
       std::max(settings.tolerance * std::max(v_ref, 1e-300), settings.velocity_floor);
   const bool same = same_rows(rows);
@@ -202,6 +292,9 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
     Vec3 slip_per_normal = Vec3::Zero();
     for (int a = 0; a < 4; ++a)
       slip_per_normal += r.beta[a] * inv_m[static_cast<size_t>(r.nodes[a])] * r.grad[a];
+    if (partners_ && rigid_index_[k] >= 0)
+      slip_per_normal +=
+          partners_->slip_per_normal(rigid_parts_[static_cast<size_t>(rigid_index_[k])]);
     inverse_[k] = {1.0 / r.W_n, r.W_t > 0.0 ? 1.0 / r.W_t : 0.0, r.W_n / r.S, slip_per_normal};
   }
   dirty_.assign(rows.size(), 1);
@@ -213,17 +306,31 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
     const bool forward = sweep % 2 == 0;
     start_.clear();
     ++epoch_;
+    double rigid_change = 0.0;
     for (size_t j = 0; j < order.size(); ++j) {
       const auto k = static_cast<size_t>(order[forward ? j : order.size() - 1 - j]);
       if (!dirty_[k]) continue;
       dirty_[k] = 0;
       ++visits_;
       remember_velocities(rows[k], v);
+      if (partners_ && rigid_index_[k] >= 0) {
+        const double change =
+            update_rigid_row(rows[k], inverse_[k], inv_m, v, settings.friction,
+                             rigid_parts_[static_cast<size_t>(rigid_index_[k])], *partners_);
+        rigid_change = std::max(rigid_change, change);
+        if (change > limit) {
+          mark_neighbours_dirty(k);
+          mark_body_rows_dirty(k);
+        }
+        continue;
+      }
       if (update_row(rows[k], inverse_[k], inv_m, v, settings.friction) > limit)
         mark_neighbours_dirty(k);
     }
     ++out.sweeps;
-    const double worst = largest_change(v);
+    // A rigid row's contact points move with a body the nodes' record does not hold: its own
+    // largest change counts too.
+    const double worst = std::max(largest_change(v), rigid_change);
     if (worst <= limit) {
       out.converged = true;
       break;

@@ -29,21 +29,11 @@
 #include <utility>
 #include <vector>
 
+#include "engine/contact/dcr/contact_row.hpp"
+#include "engine/contact/dcr/rigid_partners.hpp"
 #include "engine/core/types.hpp"
 
 namespace ccm::dcr {
-
-struct ContactRow {
-  std::array<int, 4> nodes{};                 // global node ids
-  std::array<Vec3, 4> grad{};                 // grad g on each node (normal row)
-  std::array<double, 4> beta{};               // contact-point weights for the tangential rows
-  Vec3 t1 = Vec3::Zero(), t2 = Vec3::Zero();  // orthonormal tangents
-  double S = 0.0;                             // normal impulse in N s per unit lambda_n
-  double target = 0.0;                        // lower bound of rate_n (<= 0)
-  double W_n = 0.0, W_t = 0.0;                // mobilities grad^T M^-1 grad and sum beta^2 / m
-  double lambda_n = 0.0;                      // accumulated normal multiplier
-  double lambda_t1 = 0.0, lambda_t2 = 0.0;    // accumulated tangential impulses [N s]
-};
 
 // What a row's updates divide by, divided once per solve: 1 / W_n, 1 / W_t (0 when W_t = 0) and
 // W_n / S, the contact points' velocity change per unit normal multiplier; and the change of the
@@ -71,9 +61,13 @@ class ContactImpulses {
   // Solves the rows, visited in `order` (a permutation of their indices), against the
   // velocities v (indexed by global node id; only the rows' nodes are read and written) and
   // returns the number of sweeps made and whether the last one met the tolerance.
+  // With free rigid bodies among the held nodes (partners not empty; rigid_partners.hpp), rows on
+  // their nodes read and update the bodies (x: the positions the rows were made at) and add
+  // their mobility to W_n and W_t; the bodies' velocities in `partners` are the solve's result.
   ImpulseSolve solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
                      const std::vector<double>& inv_m, std::vector<Vec3>& v,
-                     const ImpulseSettings& settings);
+                     const ImpulseSettings& settings, RigidPartners* partners = nullptr,
+                     const std::vector<Vec3>* x = nullptr);
   // Rows of the last solve that started from a remembered impulse (diagnostics).
   int warm_started() const { return warm_started_; }
 
@@ -86,6 +80,14 @@ class ContactImpulses {
   };
   void warm_start(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
                   std::vector<Vec3>& v, double friction, bool same_rows);
+  // The rows' parts on free rigid bodies (none without partners), their mobility added to the
+  // rows, and the rows of each body.
+  void attach_rigid(std::vector<ContactRow>& rows, const std::vector<Vec3>& x);
+  void mark_body_rows_dirty(size_t row);
+  RigidPartners* partners_ = nullptr;        // of the current solve, or null
+  std::vector<int> rigid_index_;             // per row: its entry in rigid_parts_, or -1
+  std::vector<RigidRowPart> rigid_parts_;    // rows with nodes of free rigid bodies
+  std::vector<std::vector<int>> body_rows_;  // per partner: its rows
   void remember(const std::vector<ContactRow>& rows);
   bool same_rows(const std::vector<ContactRow>& rows) const;
   void link_rows(const std::vector<ContactRow>& rows, bool same);

@@ -715,11 +715,17 @@ void DcrContact::exchange_momentum(State& s, double dt) {
   std::sort(near_.begin(), near_.end());
   near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
   restitution_.before_solve(near_, s, dt);
+  partners_.reset(s, node_body_, n_bodies_);
+  const double rigid_energy = partners_.kinetic_energy();
   const ImpulseSolve solve = impulses_.solve(rows_, order_, inv_m_, v_end,
                                              {.friction = settings_.friction,
                                               .max_iterations = settings_.max_iterations,
                                               .tolerance = kVelocityTolerance,
-                                              .velocity_floor = kVelocityFloor * separation_ / dt});
+                                              .velocity_floor = kVelocityFloor * separation_ / dt},
+                                             &partners_, &s.x);
+  // The free rigid bodies' kinetic energy the impulses changed: the contact's work on them, for
+  // the check that it only dissipates (the body takes the impulses at the end of the step).
+  parts_.impulses += partners_.kinetic_energy() - rigid_energy;
   sweeps_ = solve.sweeps;
   if (!solve.converged) ++unconverged_velocity_;
 
@@ -758,7 +764,8 @@ void DcrContact::collect_held_impulses(const State& s) {
       HeldImpulse& h = held_[static_cast<size_t>(node_body_[i])];
       h.impulse += J;
       h.moment += s.x[i].cross(J);
-      parts_.impulses += J.dot(s.v[i]);
+      // A free body's share is in its kinetic energy change (exchange_momentum).
+      if (partners_.partner_of(r.nodes[a]) < 0) parts_.impulses += J.dot(s.v[i]);
     }
   }
   for (const PairImpulse& p : restitution_.last_corrections()) {

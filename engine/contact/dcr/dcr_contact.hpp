@@ -200,6 +200,7 @@ class DcrContact : public ContactModel, public HistorySource {
   std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
   std::vector<bool> anchored_;              // per body: holds a held node
   std::vector<HeldImpulse> held_;           // this step's impulses on held nodes, per body
+  RigidPartners partners_;                  // the free rigid bodies, for the velocity solve
   std::vector<std::pair<int, int>> near_;   // scratch: body pairs holding contacts
   std::vector<int> count_;                  // scratch: per-node marks (all zero between uses)
   using ConstraintKey = std::array<double, 7>;
