@@ -21,7 +21,7 @@ std::string rigid_cube(const std::string& keys) {
   return test::kTimeToml + body.substr(0, at) + keys + body.substr(at);
 }
 
-std::string build_error_of(const std::string& text) {
+std::string rigid_scene_error_of(const std::string& text) {
   try {
     const Scene scene = parse_scene(text, "s.toml");
     const Model model = build_model(scene);
@@ -101,17 +101,18 @@ TEST_CASE(
     "[rigid-body][scene]") {
   const std::string fixed_rigid =
       rigid_cube("kind = \"rigid\"\n") + "[[fixed]]\nbody = \"cube\"\nnode_set = \"boundary\"\n";
-  CHECK_THAT(build_error_of(fixed_rigid), Contains("s.toml:16") && Contains("rigid body 'cube'") &&
-                                              Contains("motion = \"fixed\""));
+  CHECK_THAT(rigid_scene_error_of(fixed_rigid), Contains("s.toml:16") &&
+                                                    Contains("rigid body 'cube'") &&
+                                                    Contains("motion = \"fixed\""));
   const std::string loaded_fixed =
       rigid_cube("kind = \"rigid\"\nmotion = \"fixed\"\n") +
       "[[surface_loads]]\nbody = \"cube\"\nsurface = \"boundary\"\ndirection = [0.0, 0.0, 1.0]\n"
       "force = [[0.0, 1.0]]\n";
-  CHECK_THAT(build_error_of(loaded_fixed),
+  CHECK_THAT(rigid_scene_error_of(loaded_fixed),
              Contains("s.toml:17") && Contains("whose motion is \"fixed\""));
   const std::string penalty = rigid_cube("kind = \"rigid\"\n") +
                               "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\n"
                               "[contact.sphere]\nradius = 0.005\nmass = 0.01\n"
                               "center = [0.005, 0.005, 0.02]\n";
-  CHECK_THAT(build_error_of(penalty), Contains("body 'cube' is rigid"));
+  CHECK_THAT(rigid_scene_error_of(penalty), Contains("body 'cube' is rigid"));
 }
