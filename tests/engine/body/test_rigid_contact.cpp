@@ -53,16 +53,19 @@ struct Bounce {
   double impact_speed = 0.0, rebound = -1.0;
 };
 
-Bounce bounce(RigidMotion motion, double restitution, double end) {
+Bounce bounce(RigidMotion motion, double restitution, double end, int threads = 1) {
   const Model model = ball_on_rigid_block(motion);
   dcr::DcrSettings settings;
   settings.surfaces = {"block/boundary", "ball/boundary"};
   settings.restitution = restitution;
+  // Chunks of a few items, so that 2 and 3 threads do split the detection of this small scene.
+  settings.threads = {threads, 64};
   dcr::DcrContact contact(model.mesh, settings, rigid_nodes(model));
   HistoryRecorder history(model.mesh, {true, false, false, {}});
   RunOptions opt;
   opt.contact = &contact;
   opt.history = &history;
+  opt.threads = threads;
   opt.time.end_time = end;
   opt.time.output_interval = 2e-5;
   Bounce out;
@@ -164,4 +167,84 @@ TEST_CASE(
   // Energy: the ball's kinetic and strain energy, the block's kinetic energy and the contact's
   // work on both balance as in a deformable pair (the DCR's own tolerance, 1 %).
   CHECK(b.summary.energy_balance_error < 0.01);
+}
+
+TEST_CASE("DCR with a free rigid body: the same history bit for bit on 1, 2 and 3 threads",
+          "[rigid-body][dcr][threads]") {
+  const Bounce one = bounce(RigidMotion::free, 0.5, 0.003, 1);
+  REQUIRE(one.summary.verdict == Verdict::completed);
+  REQUIRE(one.impact_speed > 0.0);  // the contact happened
+  for (int threads : {2, 3}) {
+    INFO(threads << " threads");
+    const Bounce other = bounce(RigidMotion::free, 0.5, 0.003, threads);
+    REQUIRE(other.rows.size() == one.rows.size());
+    for (size_t k = 0; k < one.rows.size(); ++k) CHECK(other.rows[k] == one.rows[k]);
+  }
+}
+
+// A rigid press (prescribed) squeezes a linear-elastic cube onto a fixed rigid base, both
+// frictionless: the cube is in uniaxial stress, sigma = E eps, exactly for linear tets under
+// uniform strain. The press's contact force (its history column) against E A eps with eps read
+// from the cube's nodes; eps against the press's travel. Quasi-static: the press speeds up over
+// 10 ms, 2.5 periods of the cube's axial mode (4 ms), which leaves a dynamic part of about 0.5 %
+// of the force (rho c v over 1 - cos over the ramp); 2 % allowed.
+TEST_CASE(
+    "DCR: a prescribed rigid press on a block between frictionless plates gives the "
+    "linear-elastic static force",
+    "[rigid-body][dcr]") {
+  const double L = 0.02, E = 1e5, gap = 1e-5, v = 0.005, t_ramp = 0.01, end = 0.06;
+  ModelMesh mesh;
+  add_body(mesh, "base", test::neo_hookean(1e9, 0.3, 1000.0),
+           test::translated(structured_box(Vec3(0.04, 0.04, 0.01), 4, 4, 1),
+                            Vec3(-0.01, -0.01, -0.01 - gap)));
+  add_body(mesh, "block", {MaterialModel::linear_elastic, E, 0.3, 1000.0},
+           structured_box(Vec3(L, L, L), 4, 4, 4));
+  add_body(mesh, "press", test::neo_hookean(1e9, 0.3, 1000.0),
+           test::translated(structured_box(Vec3(0.04, 0.04, 0.01), 4, 4, 1),
+                            Vec3(-0.01, -0.01, L + gap)));
+  const RigidBodyModel base = make_rigid(mesh, 0, RigidMotion::fixed);
+  RigidBodyModel press = make_rigid(mesh, 2, RigidMotion::prescribed);
+  press.prescribed_velocity[2] = TimeTable({{0.0, 0.0}, {t_ramp, -v}});
+  Model model = make_model(std::move(mesh));
+  model.rigid_bodies = {base, press};
+  std::vector<int> held;
+  for (int b : {0, 2})
+    for (int n = 0; n < model.mesh.bodies[b].n_nodes; ++n)
+      held.push_back(model.mesh.bodies[b].first_node + n);
+  dcr::DcrSettings settings;
+  settings.surfaces = {"base/boundary", "block/boundary", "press/boundary"};
+  dcr::DcrContact contact(model.mesh, settings, held);
+  HistoryRecorder history(model.mesh, {false, false, false, {}});
+  State last;
+  RunOptions opt;
+  opt.contact = &contact;
+  opt.history = &history;
+  opt.time.end_time = end;
+  opt.time.output_interval = 1e-3;
+  opt.on_sample = [&](const State& s) { last = s; };
+  const RunSummary run = run_explicit(model, opt);
+  INFO("verdict " << to_string(run.verdict) << " " << run.instability.reason);
+  REQUIRE(run.verdict == Verdict::completed);
+
+  const Body& block = model.mesh.bodies[1];
+  double top = 0.0, bottom = 0.0;
+  int n_top = 0, n_bottom = 0;
+  for (int n = block.first_node; n < block.first_node + block.n_nodes; ++n) {
+    if (model.mesh.X[n].z() > L - 1e-9) top += last.x[n].z(), ++n_top;
+    if (model.mesh.X[n].z() < 1e-9) bottom += last.x[n].z(), ++n_bottom;
+  }
+  const double eps = 1.0 - (top / n_top - bottom / n_bottom) / L;
+  const double travel = v * (end - 0.5 * t_ramp) - 2.0 * gap;
+  INFO("strain " << eps << ", from the press's travel " << travel / L);
+  // The press's travel less the two gaps is the cube's shortening, to the DCR's kept separation
+  // (1e-4 of the shortest edge at each face: 0.1 % of the travel here) and the dynamic part.
+  CHECK(std::abs(eps - travel / L) < 0.02 * travel / L);
+  const auto& cols = history.columns();
+  const size_t fz = static_cast<size_t>(
+      std::find(cols.begin(), cols.end(), "press.contact_force_z") - cols.begin());
+  REQUIRE(fz < cols.size());
+  const double F = history.rows().back()[fz];  // on the press: up, +z
+  const double F_static = E * L * L * eps;
+  INFO("press force " << F << " N, E A eps " << F_static << " N");
+  CHECK(std::abs(F - F_static) < 0.02 * F_static);
 }
