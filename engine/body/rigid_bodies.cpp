@@ -52,6 +52,7 @@ void RigidBodies::publish(int k, State& s) const {
   RigidState& r = s.rigid[static_cast<size_t>(k)];
   r.body = model(k).body;
   r.center = b.center();
+  r.reference_center = b.reference_center();
   r.rotation = b.rotation();
   r.velocity = b.velocity();
   r.angular_velocity = b.angular_velocity();

@@ -8,25 +8,15 @@
 #include <limits>
 #include <stdexcept>
 
+#include "engine/contact/penalty/surface_quadrature.hpp"
 #include "engine/mesh/boundary_surface.hpp"
 #include "engine/mesh/model_mesh.hpp"
 
 namespace ccm {
 namespace {
 
-// The symmetric 3-point triangle rule of degree 2 (Strang & Fix): point k has the barycentric
-// coordinate kNear at the triangle's node k and kFar at the other two. kNear is computed as
-// 1 - 2 kFar so that the three shape functions at a point sum to 1 as closely as floating point
-// allows (the force handed to the nodes is then the force taken from the sphere).
-constexpr double kFar = 1.0 / 6.0;
-constexpr double kNear = 1.0 - 2.0 * kFar;
-
-// Barycentric weights (N_0, N_1, N_2) of quadrature point k.
-constexpr std::array<double, 3> shape_at(int k) {
-  std::array<double, 3> N{kFar, kFar, kFar};
-  N[static_cast<size_t>(k)] = kNear;
-  return N;
-}
+// The 3-point rule: engine/contact/penalty/surface_quadrature.hpp.
+constexpr std::array<double, 3> shape_at(int k) { return surface_point_weights(k); }
 
 // The stable-step search's safety (see step_bound, docs/contact-time-step.md): a point counts
 // when twice the predictor's reach bound could bring it within kRoundOffMargin R of the sphere's
@@ -122,7 +112,7 @@ RigidSpherePenalty::RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triang
   tris_.reserve(surface.size());
   for (const Triangle& t : surface) {
     const std::array<int, 3> l{local(t[0]), local(t[1]), local(t[2])};
-    // Each triangle adds sum_q N_a(q) = kNear + 2 kFar = 1 to each of its nodes.
+    // Each triangle adds sum_q N_a(q) = kQuadratureNear + 2 kQuadratureFar = 1 to each node.
     for (int a : l) valence_[static_cast<size_t>(a)] += 1.0;
     tris_.push_back(l);
   }

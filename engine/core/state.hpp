@@ -13,6 +13,7 @@ namespace ccm {
 struct RigidState {
   int body = 0;                                                  // index into the mesh's bodies
   Vec3 center = Vec3::Zero();                                    // centre of mass [m]
+  Vec3 reference_center = Vec3::Zero();                          // ... at t = 0 [m]
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // since the reference
   Vec3 velocity = Vec3::Zero();                                  // of the centre of mass [m/s]
   Vec3 angular_velocity = Vec3::Zero();                          // world axes [rad/s]

@@ -1,0 +1,194 @@
+#include "engine/contact/penalty/rigid_surface_penalty.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/contact/penalty/surface_quadrature.hpp"
+
+namespace ccm {
+namespace {
+
+// The rigid body's boundary as a closed surface with local vertex ids, and the global ids.
+SurfaceDistance rigid_surface(const ModelMesh& mesh, int body, std::vector<Triangle>& global) {
+  const Body& b = mesh.bodies.at(static_cast<size_t>(body));
+  global = b.boundary;
+  std::vector<Vec3> vertices(static_cast<size_t>(b.n_nodes));
+  for (int n = 0; n < b.n_nodes; ++n)
+    vertices[static_cast<size_t>(n)] = mesh.X[static_cast<size_t>(b.first_node + n)];
+  std::vector<Triangle> local = b.boundary;
+  for (Triangle& t : local)
+    for (int& n : t) n -= b.first_node;
+  return SurfaceDistance(std::move(vertices), std::move(local));
+}
+
+int local_index(const std::vector<int>& sorted, int global) {
+  return static_cast<int>(std::lower_bound(sorted.begin(), sorted.end(), global) - sorted.begin());
+}
+
+}  // namespace
+
+RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Triangle> surface,
+                                         int rigid_body, RigidSurfacePenaltyParams params)
+    : ContactModel("rigid_surface_penalty"),
+      params_(std::move(params)),
+      rigid_body_(rigid_body),
+      tris_(std::move(surface)),
+      distance_(rigid_surface(mesh, rigid_body, rigid_tris_)) {
+  if (tris_.empty()) throw std::invalid_argument("penalty: the deformable surface is empty");
+  if (!mesh.bodies.at(static_cast<size_t>(rigid_body)).rigid)
+    throw std::invalid_argument(
+        "penalty: body '" + mesh.bodies[static_cast<size_t>(rigid_body)].name + "' is not rigid");
+  if (!(params_.penalty > 0.0) || !std::isfinite(params_.penalty))
+    throw std::invalid_argument("penalty: K_P must be > 0");
+  if (!(params_.damping >= 0.0) || !std::isfinite(params_.damping))
+    throw std::invalid_argument("penalty: the damping must be >= 0");
+  damping_factor_ = std::sqrt(1.0 + params_.damping * params_.damping) - params_.damping;
+  for (const auto* list : {&tris_, &rigid_tris_})
+    for (const Triangle& t : *list) nodes_.insert(nodes_.end(), t.begin(), t.end());
+  std::sort(nodes_.begin(), nodes_.end());
+  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  rigid_node_.assign(nodes_.size(), 0);
+  triangles_at_.assign(nodes_.size(), 0.0);
+  for (const Triangle& t : tris_)
+    for (int n : t) {
+      tri_local_.push_back(local_index(nodes_, n));
+      triangles_at_[static_cast<size_t>(tri_local_.back())] += 1.0;
+    }
+  for (const Triangle& t : rigid_tris_)
+    for (int n : t) {
+      rigid_local_.push_back(local_index(nodes_, n));
+      rigid_node_[static_cast<size_t>(rigid_local_.back())] = 1;
+    }
+  f_now_.assign(nodes_.size(), Vec3::Zero());
+  f_prev_ = f_now_;
+  x_prev_ = f_now_;
+}
+
+const RigidState* RigidSurfacePenalty::pose(const State& s) const {
+  for (const RigidState& r : s.rigid)
+    if (r.body == rigid_body_) return &r;
+  return nullptr;
+}
+
+Vec3 RigidSurfacePenalty::to_reference(const RigidState& r, const Vec3& x) const {
+  return r.reference_center + r.rotation.conjugate() * (x - r.center);
+}
+
+void RigidSurfacePenalty::begin_step(const State& s, double /*dt*/) {
+  for (size_t i = 0; i < nodes_.size(); ++i) x_prev_[i] = s.x[static_cast<size_t>(nodes_[i])];
+  f_prev_ = f_now_;
+}
+
+// PS.1 at every quadrature point of the deformable surface.
+void RigidSurfacePenalty::add_forces(State& s) {
+  const RigidState* r = pose(s);
+  if (!r) throw std::logic_error("penalty: the rigid body has no state in this run");
+  free_body_ = r->inverse_mass > 0.0;
+  body_inv_mass_ = r->inverse_mass;
+  std::fill(f_now_.begin(), f_now_.end(), Vec3::Zero());
+  n_active_ = 0;
+  const double K = params_.penalty;
+  for (size_t t = 0; t < tris_.size(); ++t) {
+    const Triangle& T = tris_[t];
+    for (int k = 0; k < 3; ++k) {
+      const auto N = surface_point_weights(k);
+      Vec3 x = Vec3::Zero(), v = Vec3::Zero();
+      double m = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        const auto i = static_cast<size_t>(T[static_cast<size_t>(a)]);
+        x += N[static_cast<size_t>(a)] * s.x[i];
+        v += N[static_cast<size_t>(a)] * s.v[i];
+        m += N[static_cast<size_t>(a)] * s.m_lumped[i] /
+             triangles_at_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
+      }
+      SurfacePoint hit;
+      const SurfaceDistance::Side side = distance_.query(to_reference(*r, x), hit);
+      if (side == SurfaceDistance::Side::outside) continue;
+      if (side == SurfaceDistance::Side::deep) {
+        if (failure_.empty())
+          failure_ = fmt::format(
+              "a point of the deformable surface is deeper than {:.3g} m inside the rigid body "
+              "(the penalty K_P is too soft for this impact)",
+              distance_.cell_size());
+        continue;
+      }
+      ++n_active_;
+      penetration_max_ = std::max(penetration_max_, hit.depth);
+      const Vec3 n = r->rotation * hit.normal;
+      const double u_n = n.dot(v - (r->velocity + r->angular_velocity.cross(x - r->center)));
+      const double c = 2.0 * params_.damping * std::sqrt(K * m);
+      const Vec3 f = std::max(0.0, K * hit.depth - c * u_n) * n;
+      for (int a = 0; a < 3; ++a)
+        f_now_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])] +=
+            N[static_cast<size_t>(a)] * f;
+      for (int a = 0; a < 3; ++a)
+        f_now_[static_cast<size_t>(
+            rigid_local_[3 * static_cast<size_t>(hit.triangle) + static_cast<size_t>(a)])] -=
+            hit.weights[static_cast<size_t>(a)] * f;
+    }
+  }
+  for (size_t i = 0; i < nodes_.size(); ++i) s.f[static_cast<size_t>(nodes_[i])] += f_now_[i];
+}
+
+void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    if (rigid_node_[i] && !free_body_) continue;  // a kinematic body's share is its driver's
+    work_ += 0.5 * (f_prev_[i] + f_now_[i]).dot(s.x[static_cast<size_t>(nodes_[i])] - x_prev_[i]);
+  }
+  ledger_ = {.work = work_, .injected_energy = 0.0, .failure = failure_};
+}
+
+ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling) const {
+  const RigidState* r = pose(s);
+  if (!r) return {};
+  // The body's bounding sphere about its centre, and the fastest approach a point can make.
+  double v_max = 0.0, reach = 0.0;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    const auto n = static_cast<size_t>(nodes_[i]);
+    if (rigid_node_[i])
+      reach = std::max(reach, (s.x[n] - r->center).norm());
+    else
+      v_max = std::max(v_max, s.v[n].norm());
+  }
+  const double v_rel = v_max + r->velocity.norm() + r->angular_velocity.norm() * reach;
+  const double band = reach + 2.0 * v_rel * std::min(ceiling, 1e300);
+  // The points that can touch the body within the step (within the band): their springs load
+  // their nodes (kappa_a / m_a) and the body (n_near K_P / m).
+  const double K = params_.penalty;
+  double omega2 = 0.0;
+  int near = 0;
+  for (size_t t = 0; t < tris_.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto N = surface_point_weights(k);
+      Vec3 x = Vec3::Zero();
+      for (int a = 0; a < 3; ++a)
+        x += N[static_cast<size_t>(a)] * s.x[static_cast<size_t>(tris_[t][static_cast<size_t>(a)])];
+      if ((x - r->center).norm() > band) continue;
+      ++near;
+      for (int a = 0; a < 3; ++a) {
+        const auto local = static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)]);
+        const double m = s.m_lumped[static_cast<size_t>(nodes_[local])];
+        if (m > 0.0) omega2 = std::max(omega2, K * triangles_at_[local] / m);
+      }
+    }
+  if (near == 0) return {};
+  omega2 += K * near * r->inverse_mass;
+  ContactStepBound b;
+  b.stiffness_dt = 2.0 / std::sqrt(omega2) * damping_factor_;
+  if (v_rel > 0.0) b.kinematic_dt = 0.5 * distance_.cell_size() / v_rel;
+  return b;
+}
+
+std::vector<std::string> RigidSurfacePenalty::history_columns() const {
+  return {params_.name + ".active_points", params_.name + ".penetration_max",
+          params_.name + ".work"};
+}
+
+void RigidSurfacePenalty::append_history(const State& /*s*/, std::vector<double>& row) const {
+  row.insert(row.end(), {static_cast<double>(n_active_), penetration_max_, work_});
+}
+
+}  // namespace ccm

@@ -1,0 +1,86 @@
+// Penalty contact between a deformable surface and a meshed rigid body (docs/rigid-bodies.md,
+// "Penalty"): the thesis's penalty (eq. 2.5-2.6, section 2.8) with the analytic sphere replaced by
+// any closed rigid surface.
+//
+// The deformable surface carries the symmetric 3-point rule of rigid_sphere_penalty.hpp. A
+// quadrature point x_q inside the rigid body, by depth delta below its surface (closest point p,
+// outward normal n; surface_distance.hpp, in the body's reference frame), takes
+//   f_q = max(0, K_P delta - c_q u_n) n,   u_n = n . (v_q - v_B(x_q)),
+//   c_q = 2 zeta sqrt(K_P m_q)                                         (PS.1)
+// handed to the triangle's nodes by its shape functions, and -f_q goes to the rigid body at p,
+// handed to the closest rigid triangle's nodes by p's barycentric weights: the rigid body gathers
+// them as a force and a moment (engine/body/rigid_bodies.hpp). The two forces act along the line
+// through x_q and p (x_q - p = -delta n), so momentum and angular momentum are exchanged exactly.
+// K_P is per point (the thesis's per_point mode; the element mode is the sphere model's alone).
+//
+// Work: trapezoidal over each step on the nodes that take forces, deformable and (for a free body)
+// rigid; a fixed or prescribed body's share is its driver's. Step bound: the springs' stiffness
+// on the nodes, omega^2 = max_a K_P s_a / m_a + K_P n_near / m (s_a: node a's triangles; n_near:
+// the points near the body; m the body's mass when free), times the damped-oscillator factor
+// sqrt(1 + zeta^2) - zeta; and a kinematic bound so that no point moves by more than half the
+// rigid surface's grid cell relative to the body in one step (it cannot pass through unseen).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/contact/contact_model.hpp"
+#include "engine/contact/penalty/surface_distance.hpp"
+#include "engine/core/penalty_mode.hpp"
+#include "engine/mesh/model_mesh.hpp"
+#include "engine/observe/history.hpp"
+
+namespace ccm {
+
+struct RigidSurfacePenaltyParams {
+  std::string name = "penalty";           // history column prefix
+  double penalty = kDefaultPointPenalty;  // K_P [N/m] per quadrature point
+  double damping = 0.0;                   // zeta >= 0, fraction of critical per point
+};
+
+class RigidSurfacePenalty : public ContactModel, public HistorySource {
+ public:
+  // surface: the deformable body's triangles (global ids); rigid_body: the mesh body (marked
+  // rigid) whose boundary is the rigid surface. Throws std::invalid_argument for an empty
+  // surface, a body that is not rigid, a rigid surface that is not closed, K_P <= 0 or zeta < 0.
+  RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Triangle> surface, int rigid_body,
+                      RigidSurfacePenaltyParams params);
+
+  void begin_step(const State& state, double dt) override;
+  void add_forces(State& state) override;
+  void correct(State& /*state*/, double /*dt*/) override {}  // a force model
+  void end_step(const State& state, double dt) override;
+  ContactStepBound step_bound(const State& state, double ceiling) const override;
+
+  // <name>.active_points, .penetration_max [m], .work [J]
+  std::vector<std::string> history_columns() const override;
+  void append_history(const State& state, std::vector<double>& row) const override;
+
+  double work() const { return work_; }
+  int active_points() const { return n_active_; }
+  double penetration_max() const { return penetration_max_; }
+  // Non-empty once a point has gone deeper than the rigid surface's grid cell (K_P far too soft).
+  const std::string& failure() const { return failure_; }
+
+ private:
+  const RigidState* pose(const State& s) const;
+  Vec3 to_reference(const RigidState& r, const Vec3& x) const;
+
+  RigidSurfacePenaltyParams params_;
+  int rigid_body_ = 0;
+  bool free_body_ = false;            // set at the first step, from the state
+  std::vector<Triangle> tris_;        // the deformable surface (global ids)
+  std::vector<Triangle> rigid_tris_;  // the rigid surface (global ids)
+  SurfaceDistance distance_;          // of the rigid surface, reference frame
+  std::vector<int> nodes_;            // every node that can take a force, sorted
+  std::vector<int> tri_local_;        // per deformable triangle corner: index into nodes_
+  std::vector<int> rigid_local_;      // per rigid triangle corner: index into nodes_
+  std::vector<char> rigid_node_;      // per entry of nodes_: a rigid body's node
+  std::vector<double> triangles_at_;  // per entry of nodes_: the deformable triangles at it
+  std::vector<Vec3> f_now_, f_prev_, x_prev_;
+  double work_ = 0.0, penetration_max_ = 0.0, damping_factor_ = 1.0, body_inv_mass_ = 0.0;
+  int n_active_ = 0;
+  std::string failure_;
+};
+
+}  // namespace ccm

@@ -1,0 +1,232 @@
+#include "engine/contact/penalty/surface_distance.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace ccm {
+namespace {
+
+// The point of triangle (a, b, c) closest to p, as barycentric weights (Ericson, Real-Time
+// Collision Detection, 5.1.5).
+std::array<double, 3> closest_weights(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return {1.0 - v, v, 0.0};
+  }
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return {1.0 - w, 0.0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0.0, 1.0 - w, w};
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return {1.0 - v - w, v, w};
+}
+
+double angle_at(const Vec3& corner, const Vec3& p, const Vec3& q) {
+  const Vec3 u = (p - corner).normalized(), v = (q - corner).normalized();
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+}  // namespace
+
+SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangle> triangles)
+    : vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+  if (triangles_.empty()) throw std::invalid_argument("surface distance: no triangle");
+  // Pseudo-normals: faces, edges (sum of the two faces'), vertices (angle-weighted).
+  vertex_normal_.assign(vertices_.size(), Vec3::Zero());
+  std::map<std::pair<int, int>, std::vector<int>> edges;
+  min_edge_ = std::numeric_limits<double>::infinity();
+  double max_edge = 0.0;
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    const Triangle& T = triangles_[t];
+    const Vec3 &a = vertices_[static_cast<size_t>(T[0])], &b = vertices_[static_cast<size_t>(T[1])],
+               &c = vertices_[static_cast<size_t>(T[2])];
+    face_normal_.push_back((b - a).cross(c - a).normalized());
+    for (int k = 0; k < 3; ++k) {
+      const int i = T[static_cast<size_t>(k)], j = T[static_cast<size_t>((k + 1) % 3)],
+                l = T[static_cast<size_t>((k + 2) % 3)];
+      edges[{std::min(i, j), std::max(i, j)}].push_back(static_cast<int>(t));
+      const double length =
+          (vertices_[static_cast<size_t>(i)] - vertices_[static_cast<size_t>(j)]).norm();
+      min_edge_ = std::min(min_edge_, length);
+      max_edge = std::max(max_edge, length);
+      vertex_normal_[static_cast<size_t>(i)] +=
+          angle_at(vertices_[static_cast<size_t>(i)], vertices_[static_cast<size_t>(j)],
+                   vertices_[static_cast<size_t>(l)]) *
+          face_normal_.back();
+    }
+  }
+  for (Vec3& n : vertex_normal_)
+    if (n.norm() > 0.0) n.normalize();
+  edge_normal_.resize(triangles_.size());
+  for (size_t t = 0; t < triangles_.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int i = triangles_[t][static_cast<size_t>(k)],
+                j = triangles_[t][static_cast<size_t>((k + 1) % 3)];
+      const std::vector<int>& faces = edges.at({std::min(i, j), std::max(i, j)});
+      if (faces.size() != 2)
+        throw std::invalid_argument(
+            "surface distance: the surface is not closed (an edge belongs to " +
+            std::to_string(faces.size()) + " triangles)");
+      edge_normal_[t][static_cast<size_t>(k)] = (face_normal_[static_cast<size_t>(faces[0])] +
+                                                 face_normal_[static_cast<size_t>(faces[1])])
+                                                    .normalized();
+    }
+  h_ = max_edge;
+  build_grid();
+  flood_outside();
+}
+
+std::array<int, 3> SurfaceDistance::cell_of(const Vec3& p) const {
+  std::array<int, 3> c{};
+  for (int d = 0; d < 3; ++d)
+    c[static_cast<size_t>(d)] = static_cast<int>(std::floor((p[d] - origin_[d]) / h_));
+  return c;
+}
+
+long SurfaceDistance::cell_index(const std::array<int, 3>& c) const {
+  for (int d = 0; d < 3; ++d)
+    if (c[static_cast<size_t>(d)] < 0 || c[static_cast<size_t>(d)] >= dims_[static_cast<size_t>(d)])
+      return -1;
+  return (static_cast<long>(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0];
+}
+
+// The grid spans the surface's box plus one empty cell on every side (the flood fill's border).
+void SurfaceDistance::build_grid() {
+  Vec3 lo = vertices_.front(), hi = vertices_.front();
+  for (const Vec3& v : vertices_) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  origin_ = lo - Vec3::Constant(h_);
+  for (int d = 0; d < 3; ++d)
+    dims_[static_cast<size_t>(d)] = static_cast<int>(std::floor((hi[d] - origin_[d]) / h_)) + 2;
+  const long n_cells = static_cast<long>(dims_[0]) * dims_[1] * dims_[2];
+  std::vector<std::vector<int>> lists(static_cast<size_t>(n_cells));
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    Vec3 a = vertices_[static_cast<size_t>(triangles_[t][0])], b = a;
+    for (int k : triangles_[t]) {
+      a = a.cwiseMin(vertices_[static_cast<size_t>(k)]);
+      b = b.cwiseMax(vertices_[static_cast<size_t>(k)]);
+    }
+    const auto c0 = cell_of(a), c1 = cell_of(b);
+    for (int z = c0[2]; z <= c1[2]; ++z)
+      for (int y = c0[1]; y <= c1[1]; ++y)
+        for (int x = c0[0]; x <= c1[0]; ++x)
+          lists[static_cast<size_t>(cell_index({x, y, z}))].push_back(static_cast<int>(t));
+  }
+  cell_start_.assign(static_cast<size_t>(n_cells) + 1, 0);
+  for (long c = 0; c < n_cells; ++c)
+    cell_start_[static_cast<size_t>(c) + 1] =
+        cell_start_[static_cast<size_t>(c)] +
+        static_cast<int>(lists[static_cast<size_t>(c)].size());
+  cell_items_.clear();
+  for (const auto& l : lists) cell_items_.insert(cell_items_.end(), l.begin(), l.end());
+}
+
+// DS.1: empty cells connected to the border through empty cells (faces) are outside.
+void SurfaceDistance::flood_outside() {
+  const long n_cells = static_cast<long>(cell_start_.size()) - 1;
+  outside_.assign(static_cast<size_t>(n_cells), 0);
+  auto empty = [&](long c) {
+    return cell_start_[static_cast<size_t>(c)] == cell_start_[static_cast<size_t>(c) + 1];
+  };
+  std::vector<std::array<int, 3>> stack = {{0, 0, 0}};
+  outside_[0] = 1;
+  while (!stack.empty()) {
+    const auto c = stack.back();
+    stack.pop_back();
+    for (int d = 0; d < 3; ++d)
+      for (int s : {-1, 1}) {
+        auto n = c;
+        n[static_cast<size_t>(d)] += s;
+        const long i = cell_index(n);
+        if (i < 0 || outside_[static_cast<size_t>(i)] || !empty(i)) continue;
+        outside_[static_cast<size_t>(i)] = 1;
+        stack.push_back(n);
+      }
+  }
+}
+
+// The closest point of triangle t to p: its squared distance and weights.
+double SurfaceDistance::closest(int t, const Vec3& p, std::array<double, 3>& w) const {
+  const Triangle& T = triangles_[static_cast<size_t>(t)];
+  const Vec3 &a = vertices_[static_cast<size_t>(T[0])], &b = vertices_[static_cast<size_t>(T[1])],
+             &c = vertices_[static_cast<size_t>(T[2])];
+  w = closest_weights(p, a, b, c);
+  return (p - (w[0] * a + w[1] * b + w[2] * c)).squaredNorm();
+}
+
+// Ties (a shared edge or vertex) go to the lowest triangle: a result independent of the order.
+void SurfaceDistance::consider(int t, const Vec3& p, Nearest& best) const {
+  std::array<double, 3> w{};
+  const double d2 = closest(t, p, w);
+  if (d2 < best.d2 || (d2 == best.d2 && t < best.triangle)) best = {d2, t, w};
+}
+
+SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit) const {
+  const auto c = cell_of(p);
+  const long own = cell_index(c);
+  if (own < 0) return Side::outside;  // beyond the grid: beyond the surface's box
+  const bool empty =
+      cell_start_[static_cast<size_t>(own)] == cell_start_[static_cast<size_t>(own) + 1];
+  if (empty && outside_[static_cast<size_t>(own)]) return Side::outside;
+  Nearest best;
+  for (int z = c[2] - 1; z <= c[2] + 1; ++z)
+    for (int y = c[1] - 1; y <= c[1] + 1; ++y)
+      for (int x = c[0] - 1; x <= c[0] + 1; ++x) {
+        const long i = cell_index({x, y, z});
+        if (i < 0) continue;
+        for (int k = cell_start_[static_cast<size_t>(i)];
+             k < cell_start_[static_cast<size_t>(i) + 1]; ++k)
+          consider(cell_items_[static_cast<size_t>(k)], p, best);
+      }
+  // Beyond h the 27 cells need not hold the closest triangle: all of them are searched (rare: a
+  // point deep inside, or just outside a cell a large triangle's box reaches into).
+  if (!(best.d2 <= h_ * h_))
+    for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) consider(t, p, best);
+  const Triangle& T = triangles_[static_cast<size_t>(best.triangle)];
+  const std::array<double, 3>& w = best.weights;
+  const Vec3 q = w[0] * vertices_[static_cast<size_t>(T[0])] +
+                 w[1] * vertices_[static_cast<size_t>(T[1])] +
+                 w[2] * vertices_[static_cast<size_t>(T[2])];
+  // The feature the closest point is on: a vertex (one weight 1), an edge (one weight 0), the face.
+  Vec3 normal = face_normal_[static_cast<size_t>(best.triangle)];
+  for (int k = 0; k < 3; ++k) {
+    const double wk = w[static_cast<size_t>(k)], w1 = w[static_cast<size_t>((k + 1) % 3)],
+                 w2 = w[static_cast<size_t>((k + 2) % 3)];
+    if (wk == 1.0)
+      normal = vertex_normal_[static_cast<size_t>(T[static_cast<size_t>(k)])];
+    else if (wk == 0.0 && w1 != 1.0 && w2 != 1.0)
+      normal = edge_normal_[static_cast<size_t>(best.triangle)][static_cast<size_t>((k + 1) % 3)];
+  }
+  if ((p - q).dot(normal) >= 0.0) return Side::outside;
+  hit.depth = std::sqrt(best.d2);
+  hit.point = q;
+  hit.normal = normal;
+  hit.triangle = best.triangle;
+  hit.weights = w;
+  return hit.depth > h_ ? Side::deep : Side::inside;
+}
+
+}  // namespace ccm

@@ -1,0 +1,75 @@
+// Which points lie inside a closed, outward-oriented triangle surface, and for those, the
+// closest point of the surface and the outward normal there: what a penalty contact against a
+// meshed rigid body needs (rigid_surface_penalty.hpp; docs/rigid-bodies.md, "Penalty").
+//
+// The surface is fixed in its own frame (a rigid body's reference configuration). A uniform grid
+// of cells of size h (at least the longest edge) holds every triangle in the cells its bounding
+// box overlaps. A point in a cell that holds triangles is tested against those of the 27 cells
+// around it: the closest of them is the surface's closest point whenever the point is within h
+// of the surface. The side is that of the angle-weighted pseudo-normal at the closest feature
+// (face, edge or vertex; Baerentzen & Aanaes, IEEE TVCG 11(3), 2005), exact for a closed
+// manifold surface. Whether an empty cell is inside or outside is settled once by a flood fill
+// from the grid's border through empty cells (DS.1): a point in an empty outside cell is outside
+// at once. When the 27 cells hold no triangle within h, every triangle is searched. A point deeper
+// than h inside is reported as deep (with its closest point).
+#pragma once
+
+#include <array>
+#include <limits>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/mesh/tet_mesh.hpp"
+
+namespace ccm {
+
+struct SurfacePoint {
+  double depth = 0.0;                            // > 0: inside, by this distance [m]
+  Vec3 point = Vec3::Zero();                     // the closest point of the surface
+  Vec3 normal = Vec3::Zero();                    // outward unit normal there (pseudo-normal)
+  int triangle = -1;                             // the closest triangle
+  std::array<double, 3> weights{1.0, 0.0, 0.0};  // the closest point's barycentric weights
+};
+
+class SurfaceDistance {
+ public:
+  // vertices and triangles (indices into vertices) of a closed surface, outward oriented.
+  // Throws std::invalid_argument when it has no triangle or an edge is not shared by exactly two
+  // triangles (not closed, or not manifold).
+  SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangle> triangles);
+
+  enum class Side { outside, inside, deep };
+  // outside: `hit` untouched. inside: `hit` filled. deep: filled, inside by more than cell_size().
+  Side query(const Vec3& p, SurfacePoint& hit) const;
+
+  double cell_size() const { return h_; }
+  double shortest_edge() const { return min_edge_; }
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+
+ private:
+  struct Nearest {
+    double d2 = std::numeric_limits<double>::infinity();
+    int triangle = -1;
+    std::array<double, 3> weights{};
+  };
+  double closest(int t, const Vec3& p, std::array<double, 3>& w) const;
+  void consider(int t, const Vec3& p, Nearest& best) const;
+  long cell_index(const std::array<int, 3>& c) const;
+  std::array<int, 3> cell_of(const Vec3& p) const;
+  void build_grid();
+  void flood_outside();
+
+  std::vector<Vec3> vertices_;
+  std::vector<Triangle> triangles_;
+  std::vector<Vec3> face_normal_;
+  std::vector<std::array<Vec3, 3>> edge_normal_;  // per triangle: edge (k, k+1) pseudo-normal
+  std::vector<Vec3> vertex_normal_;
+  double h_ = 0.0, min_edge_ = 0.0;
+  Vec3 origin_ = Vec3::Zero();
+  std::array<int, 3> dims_{};
+  std::vector<int> cell_start_;  // CSR: triangles of cell c are cell_items_[start[c], start[c+1])
+  std::vector<int> cell_items_;
+  std::vector<char> outside_;  // per empty cell: reachable from the border through empty cells
+};
+
+}  // namespace ccm
