@@ -159,6 +159,8 @@ struct ContactSpec {
   std::optional<Vec3> force_axis;  // rigid_penalty: default the sphere's initial velocity
                                    // direction; dcr: pair forces are output along it
   RigidSphereSpec sphere;
+  // rigid_penalty against a meshed rigid body (kind = "rigid") instead of the sphere:
+  std::optional<std::string> rigid;
   // dcr:
   std::vector<std::string> surfaces;  // as given; a name without '/' means "<name>/boundary"
   bool self_contact = false;

@@ -10,6 +10,7 @@
 
 #include "engine/bc/node_selection.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
+#include "engine/contact/penalty/rigid_surface_penalty.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
 #include "engine/core/time_table.hpp"
 #include "engine/mesh/readers/mesh_file.hpp"
@@ -335,6 +336,37 @@ std::string penalty_description(const RigidSpherePenalty& model) {
                      p.penalty_scale, lo, hi);
 }
 
+// model = "rigid_penalty" with rigid = "<body>": the penalty against a meshed rigid body.
+ContactSetup build_rigid_surface_penalty(const Scene& scene, const Model& model,
+                                         const std::vector<Triangle>& surface,
+                                         const std::string& surface_name) {
+  const ContactSpec& c = scene.contact;
+  const int rigid = body_index(scene, model.mesh, c.where, "rigid", *c.rigid);
+  if (!model.mesh.bodies[static_cast<size_t>(rigid)].rigid)
+    fail(scene, c.where, "rigid",
+         fmt::format("body '{}' is not rigid (give it kind = \"rigid\")", *c.rigid));
+  RigidSurfacePenaltyParams p;
+  p.name = "contact";
+  p.penalty = c.penalty;
+  p.damping = c.damping;
+  std::unique_ptr<RigidSurfacePenalty> penalty;
+  try {
+    penalty = std::make_unique<RigidSurfacePenalty>(model.mesh, surface, rigid, p);
+  } catch (const std::invalid_argument& e) {
+    fail(scene, c.where, "rigid", e.what());
+  }
+  ContactSetup setup;
+  setup.model_name = "rigid_penalty";
+  setup.description = fmt::format(
+      "rigid_penalty: rigid body '{}' ({} triangles) on '{}' ({} triangles), K_P {:.4g} N/m per "
+      "point, damping {:.4g} of critical",
+      *c.rigid, model.mesh.bodies[static_cast<size_t>(rigid)].boundary.size(), surface_name,
+      surface.size(), p.penalty, p.damping);
+  setup.history = penalty.get();
+  setup.model = std::move(penalty);
+  return setup;
+}
+
 }  // namespace
 
 ContactSetup build_contact(const Scene& scene, const Model& model) {
@@ -358,6 +390,8 @@ ContactSetup build_contact(const Scene& scene, const Model& model) {
          fmt::format("body '{}' is rigid: the analytic sphere's penalty contact acts on a "
                      "deformable surface (use model = \"dcr\" between rigid and deformable bodies)",
                      c.body));
+
+  if (c.rigid) return build_rigid_surface_penalty(scene, model, it->second.triangles, name);
 
   RigidSpherePenaltyParams p;
   p.name = c.sphere.name;

@@ -652,12 +652,29 @@ void parse_contact(const Table& root, Scene& scene) {
   if (model != "rigid_penalty")
     t->fail("model", fmt::format("must be one of none, rigid_penalty, dcr (got '{}')", model));
   t->allow_only({"model", "body", "surface", "penalty_mode", "penalty", "penalty_scale", "damping",
-                 "force_axis", "sphere"});
+                 "force_axis", "sphere", "rigid"});
   ContactSpec& c = scene.contact;
   c.kind = ContactKind::rigid_penalty;
   c.body = t->need<std::string>("body");
   if (t->has("surface")) c.surface = t->need<std::string>("surface");
   parse_penalty(*t, c);
+  // Against a meshed rigid body (docs/rigid-bodies.md, "Penalty") instead of the analytic sphere.
+  if (one_of(*t, {"sphere", "rigid"}) == "rigid") {
+    c.rigid = t->need<std::string>("rigid");
+    if (c.penalty_mode == PenaltyMode::element)
+      t->fail("penalty_mode",
+              "the element mode applies to the analytic sphere only; use "
+              "\"per_point\" with rigid");
+    if (t->has("force_axis"))
+      t->fail("force_axis",
+              "applies to the analytic sphere only (a rigid body's history has its "
+              "contact force)");
+    c.damping = t->get_or("damping", c.damping);
+    if (!(c.damping >= 0.0 && std::isfinite(c.damping)))
+      t->fail("damping", fmt::format("must be >= 0 (got {})", c.damping));
+    c.where = t->ref();
+    return;
+  }
   c.damping = t->get_or("damping", c.damping);
   if (!(c.damping >= 0.0 && std::isfinite(c.damping)))
     t->fail("damping", fmt::format("must be >= 0 (got {})", c.damping));

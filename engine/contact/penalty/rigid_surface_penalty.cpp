@@ -184,11 +184,16 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
 
 std::vector<std::string> RigidSurfacePenalty::history_columns() const {
   return {params_.name + ".active_points", params_.name + ".penetration_max",
-          params_.name + ".work"};
+          params_.name + ".work",          params_.name + ".rigid_force_x",
+          params_.name + ".rigid_force_y", params_.name + ".rigid_force_z"};
 }
 
 void RigidSurfacePenalty::append_history(const State& /*s*/, std::vector<double>& row) const {
-  row.insert(row.end(), {static_cast<double>(n_active_), penetration_max_, work_});
+  Vec3 F = Vec3::Zero();  // on the rigid body, at the last evaluation
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    if (rigid_node_[i]) F += f_now_[i];
+  row.insert(row.end(),
+             {static_cast<double>(n_active_), penetration_max_, work_, F.x(), F.y(), F.z()});
 }
 
 }  // namespace ccm

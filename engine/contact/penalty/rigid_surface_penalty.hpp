@@ -52,7 +52,8 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   void end_step(const State& state, double dt) override;
   ContactStepBound step_bound(const State& state, double ceiling) const override;
 
-  // <name>.active_points, .penetration_max [m], .work [J]
+  // <name>.active_points, .penetration_max [m], .work [J], .rigid_force_x/y/z (the springs'
+  // force on the rigid body at the sample [N])
   std::vector<std::string> history_columns() const override;
   void append_history(const State& state, std::vector<double>& row) const override;
 

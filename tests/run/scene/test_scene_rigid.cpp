@@ -116,3 +116,51 @@ TEST_CASE(
                               "center = [0.005, 0.005, 0.02]\n";
   CHECK_THAT(rigid_scene_error_of(penalty), Contains("body 'cube' is rigid"));
 }
+
+TEST_CASE(
+    "scene: rigid_penalty against a meshed rigid body builds, runs, and refuses what does "
+    "not apply",
+    "[rigid-body][scene][penalty]") {
+  // A soft cube resting 0.1 mm above a rigid slab, falling under gravity.
+  const std::string slab =
+      "[[bodies]]\nname = \"slab\"\nkind = \"rigid\"\nmotion = \"fixed\"\n[bodies.material]\n"
+      "E = 1e9\nnu = 0.3\nrho = 1000.0\n[bodies.geometry]\nshape = \"box\"\n"
+      "size = [0.03, 0.03, 0.005]\nmesh_size = 0.005\n[bodies.placement]\n"
+      "translate = [-0.01, -0.01, -0.0051]\n";
+  const std::string base = test::kTimeToml + "[gravity]\nacceleration = [0.0, 0.0, -9.81]\n" +
+                           test::cube_body_toml("cube") + slab;
+  const std::string contact =
+      "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\nrigid = \"slab\"\npenalty = 1e4\n";
+  const Scene scene = parse_scene(base + contact, "s.toml");
+  REQUIRE(scene.contact.rigid);
+  const Model model = build_model(scene);
+  ContactSetup setup = build_contact(scene, model);
+  REQUIRE(setup.model);
+  RunOptions opt;
+  opt.time.end_time = 0.01;
+  opt.time.output_interval = 1e-3;
+  opt.contact = setup.model.get();
+  double lowest = 1.0;
+  opt.on_sample = [&](const State& s) {
+    const Body& cube = model.mesh.bodies[0];
+    for (int n = cube.first_node; n < cube.first_node + cube.n_nodes; ++n)
+      lowest = std::min(lowest, s.x[n].z());
+  };
+  const RunSummary run = run_explicit(model, opt);
+  INFO(run.instability.reason);
+  REQUIRE(run.verdict == Verdict::completed);
+  // The cube fell 0.1 mm onto the slab and was held there: it sank into the slab by no more than
+  // its weight over the springs of the points in contact could push it (about 1 mm at most).
+  CHECK(lowest < 0.0);
+  CHECK(lowest > -1e-3);
+
+  CHECK_THAT(rigid_scene_error_of(base + "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\n"
+                                         "rigid = \"cube\"\n"),
+             Contains("body 'cube' is not rigid"));
+  CHECK_THAT(rigid_scene_error_of(base + contact + "penalty_mode = \"element\"\n"),
+             Contains("penalty") && Contains("s.toml"));
+  CHECK_THAT(rigid_scene_error_of(base + contact +
+                                  "[contact.sphere]\nradius = 0.01\nmass = 0.1\n"
+                                  "center = [0.0, 0.0, 0.1]\n"),
+             Contains("give only one of: sphere, rigid"));
+}
