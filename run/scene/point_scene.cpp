@@ -28,6 +28,7 @@ std::string point_title(const GridPoint& point, ImpactModel model) {
   if (model == ImpactModel::rigid)
     return fmt::format("grid point (rigid): RLS = {}, KE = {} J", num(point.length_ratio),
                        num(point.kinetic_energy));
+  // (The meshed rigid impactor shows in the scene's own keys.)
   return fmt::format("grid point (ccm): ER = {}, RLS = {}, KE = {} J", num(point.modulus_ratio),
                      num(point.length_ratio), num(point.kinetic_energy));
 }
@@ -107,6 +108,23 @@ std::string penalty_keys(const GridContact& c) {
                      num(c.penalty_scale));
 }
 
+// The rigid model with the meshed impactor: the ccm model's sphere body (the same mesh, mass and
+// speed) made rigid, its unused modulus written as the artifact's so that the scene text does not
+// depend on ER (one rigid run serves every ER, as with the analytic sphere).
+std::string meshed_rigid_impactor(PointParameters p) {
+  p.impactor_E = p.artifact.E;
+  std::string body = impactor_body(p);
+  const std::string name_line = fmt::format("name = \"{}\"\n", kImpactorName);
+  body.insert(body.find(name_line) + name_line.size(), "kind = \"rigid\"\n");
+  return body;
+}
+
+std::string meshed_rigid_contact(const PointParameters& p) {
+  return fmt::format(
+      "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\nrigid = \"{}\"\n{}damping = {}\n",
+      kArtifactBody, kImpactorName, penalty_keys(p.contact), num(p.contact.damping));
+}
+
 std::string rigid_contact(const PointParameters& p) {
   return fmt::format(
       "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\n{}damping = {}\n\n"
@@ -128,9 +146,14 @@ std::string point_scene_text(const GridSpec& spec, const GridPoint& point, Impac
   text += fmt::format("title = \"{}\"\n\n", point_title(point, model));
   text += time_section(spec.time);
   text += artifact_body(p.artifact);
+  const bool meshed_rigid = model == ImpactModel::rigid && p.contact.meshed_rigid_impactor;
   if (model == ImpactModel::ccm) text += impactor_body(p);
+  if (meshed_rigid) text += meshed_rigid_impactor(p);
   text += support(p.artifact);
-  text += model == ImpactModel::ccm ? dcr_contact(p) : rigid_contact(p);
+  if (model == ImpactModel::ccm)
+    text += dcr_contact(p);
+  else
+    text += meshed_rigid ? meshed_rigid_contact(p) : rigid_contact(p);
   return text + kOutput;
 }
 

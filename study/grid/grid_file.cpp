@@ -162,9 +162,21 @@ void parse_contact(const StrictTable& root, GridSpec& g) {
       root.fail("axes", "a penalty (K_P) axis and a penalty_scale axis cannot be combined");
     return;
   }
-  t->allow_only({"penalty_mode", "penalty", "penalty_scale", "damping", "restitution", "friction"});
+  t->allow_only({"penalty_mode", "penalty", "penalty_scale", "damping", "restitution", "friction",
+                 "rigid_impactor"});
   GridContact& c = g.contact;
   parse_penalty(*t, g);
+  if (const auto impactor = t->string("rigid_impactor")) {
+    static constexpr std::array<std::string_view, 2> kImpactors = {"analytic", "meshed"};
+    if (*impactor != "analytic" && *impactor != "meshed")
+      t->fail("rigid_impactor", unknown_value_problem(*impactor, kImpactors));
+    c.meshed_rigid_impactor = *impactor == "meshed";
+    if (c.meshed_rigid_impactor &&
+        (c.penalty_mode == PenaltyMode::element || g.other_axes.contains("penalty_scale")))
+      t->fail("rigid_impactor",
+              "the meshed rigid impactor takes the per-point K_P; the element-scaled penalty "
+              "(penalty_mode, penalty_scale) applies to the analytic sphere only");
+  }
   c.damping = checked_as_axis(*t, "damping", "damping", c.damping);
   c.restitution = checked_as_axis(*t, "restitution", "restitution", c.restitution);
   c.friction = checked_as_axis(*t, "friction", "friction", c.friction);

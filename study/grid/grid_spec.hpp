@@ -62,6 +62,9 @@ struct GridContact {
   double damping = 0.0;      // zeta, fraction of critical per point (rigid model)
   double restitution = 0.0;  // e (ccm model, DCR)
   double friction = 0.0;     // mu (ccm model, DCR)
+  // The rigid model's impactor: the analytic sphere (the thesis's) or the ccm model's meshed
+  // sphere made a rigid body (docs/rigid-bodies.md), on the same per-point springs.
+  bool meshed_rigid_impactor = false;
 };
 
 // A point named in [convergence]: the three main axes, the other axes at their fixed values.

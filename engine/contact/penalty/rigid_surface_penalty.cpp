@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/body/mass_properties.hpp"
 #include "engine/contact/penalty/surface_quadrature.hpp"
 
 namespace ccm {
@@ -65,6 +66,13 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
   f_now_.assign(nodes_.size(), Vec3::Zero());
   f_prev_ = f_now_;
   x_prev_ = f_now_;
+  // The bounding sphere about the body's centre of mass (its rotation leaves it unchanged).
+  const Body& rb = mesh.bodies[static_cast<size_t>(rigid_body)];
+  const std::vector<Tet> tets(mesh.tets.begin() + rb.first_element,
+                              mesh.tets.begin() + rb.first_element + rb.n_elements);
+  const Vec3 c0 = tet_mass_properties(tets, mesh.X, 1.0).center;
+  for (int n = rb.first_node; n < rb.first_node + rb.n_nodes; ++n)
+    bound2_ = std::max(bound2_, (mesh.X[static_cast<size_t>(n)] - c0).squaredNorm());
 }
 
 const RigidState* RigidSurfacePenalty::pose(const State& s) const {
@@ -104,6 +112,8 @@ void RigidSurfacePenalty::add_forces(State& s) {
         m += N[static_cast<size_t>(a)] * s.m_lumped[i] /
              triangles_at_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
       }
+      // Beyond the body's bounding sphere a point is outside: no query.
+      if ((x - r->center).squaredNorm() > bound2_) continue;
       SurfacePoint hit;
       const SurfaceDistance::Side side = distance_.query(to_reference(*r, x), hit);
       if (side == SurfaceDistance::Side::outside) continue;
@@ -112,7 +122,7 @@ void RigidSurfacePenalty::add_forces(State& s) {
           failure_ = fmt::format(
               "a point of the deformable surface is deeper than {:.3g} m inside the rigid body "
               "(the penalty K_P is too soft for this impact)",
-              distance_.cell_size());
+              distance_.deep_depth());
         continue;
       }
       ++n_active_;
@@ -178,7 +188,7 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   omega2 += K * near * r->inverse_mass;
   ContactStepBound b;
   b.stiffness_dt = 2.0 / std::sqrt(omega2) * damping_factor_;
-  if (v_rel > 0.0) b.kinematic_dt = 0.5 * distance_.cell_size() / v_rel;
+  if (v_rel > 0.0) b.kinematic_dt = 0.5 * distance_.deep_depth() / v_rel;
   return b;
 }
 

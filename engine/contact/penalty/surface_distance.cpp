@@ -57,6 +57,7 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
   std::map<std::pair<int, int>, std::vector<int>> edges;
   min_edge_ = std::numeric_limits<double>::infinity();
   double max_edge = 0.0;
+  std::vector<double> lengths;
   for (size_t t = 0; t < triangles_.size(); ++t) {
     const Triangle& T = triangles_[t];
     const Vec3 &a = vertices_[static_cast<size_t>(T[0])], &b = vertices_[static_cast<size_t>(T[1])],
@@ -70,6 +71,7 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
           (vertices_[static_cast<size_t>(i)] - vertices_[static_cast<size_t>(j)]).norm();
       min_edge_ = std::min(min_edge_, length);
       max_edge = std::max(max_edge, length);
+      lengths.push_back(length);
       vertex_normal_[static_cast<size_t>(i)] +=
           angle_at(vertices_[static_cast<size_t>(i)], vertices_[static_cast<size_t>(j)],
                    vertices_[static_cast<size_t>(l)]) *
@@ -92,7 +94,17 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
                                                  face_normal_[static_cast<size_t>(faces[1])])
                                                     .normalized();
     }
-  h_ = max_edge;
+  // Cells of the median edge (each edge counted from both sides): a query then tests a few tens
+  // of triangles where the mesh is refined, as where it is coarse. No more than about 2e6 cells.
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<long>(lengths.size() / 2),
+                   lengths.end());
+  Vec3 lo = vertices_.front(), hi = vertices_.front();
+  for (const Vec3& v : vertices_) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  h_ = std::max(lengths[lengths.size() / 2], std::cbrt((hi - lo).prod() / 2e6));
+  deep_ = max_edge;
   build_grid();
   flood_outside();
 }
@@ -177,6 +189,17 @@ double SurfaceDistance::closest(int t, const Vec3& p, std::array<double, 3>& w) 
   return (p - (w[0] * a + w[1] * b + w[2] * c)).squaredNorm();
 }
 
+// Squared distance from p to the box of cell c.
+double SurfaceDistance::box_distance2(const Vec3& p, const std::array<int, 3>& c) const {
+  double d2 = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const double lo = origin_[d] + h_ * c[static_cast<size_t>(d)], hi = lo + h_;
+    const double out = p[d] < lo ? lo - p[d] : (p[d] > hi ? p[d] - hi : 0.0);
+    d2 += out * out;
+  }
+  return d2;
+}
+
 // Ties (a shared edge or vertex) go to the lowest triangle: a result independent of the order.
 void SurfaceDistance::consider(int t, const Vec3& p, Nearest& best) const {
   std::array<double, 3> w{};
@@ -192,26 +215,47 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit) c
       cell_start_[static_cast<size_t>(own)] == cell_start_[static_cast<size_t>(own) + 1];
   if (empty && outside_[static_cast<size_t>(own)]) return Side::outside;
   Nearest best;
+  // The own cell first; a neighbour only when its box is nearer than the best so far.
+  for (int k = cell_start_[static_cast<size_t>(own)]; k < cell_start_[static_cast<size_t>(own) + 1];
+       ++k)
+    consider(cell_items_[static_cast<size_t>(k)], p, best);
   for (int z = c[2] - 1; z <= c[2] + 1; ++z)
     for (int y = c[1] - 1; y <= c[1] + 1; ++y)
       for (int x = c[0] - 1; x <= c[0] + 1; ++x) {
         const long i = cell_index({x, y, z});
-        if (i < 0) continue;
+        if (i < 0 || i == own ||
+            cell_start_[static_cast<size_t>(i)] == cell_start_[static_cast<size_t>(i) + 1])
+          continue;
+        if (box_distance2(p, {x, y, z}) > best.d2) continue;
         for (int k = cell_start_[static_cast<size_t>(i)];
              k < cell_start_[static_cast<size_t>(i) + 1]; ++k)
           consider(cell_items_[static_cast<size_t>(k)], p, best);
       }
-  // Beyond h the 27 cells need not hold the closest triangle: all of them are searched (rare: a
-  // point deep inside, or just outside a cell a large triangle's box reaches into).
-  if (!(best.d2 <= h_ * h_))
+  // Beyond h the 27 cells need not hold the closest triangle (they hold every triangle within h,
+  // the ball of radius h about p lying in them). A point that the nearest of them puts outside is
+  // taken as outside (it is more than h from the surface, so no spring would act); one it puts
+  // inside is settled against every triangle (rare: a point deep inside).
+  if (!(best.d2 <= h_ * h_)) {
+    if (best.triangle >= 0 && side_of(p, best) == Side::outside) return Side::outside;
     for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) consider(t, p, best);
+  }
+  return finish(p, best, hit);
+}
+
+// The side of p by the pseudo-normal of the feature its nearest point (best) is on.
+SurfaceDistance::Side SurfaceDistance::side_of(const Vec3& p, const Nearest& best) const {
+  Vec3 q, normal;
+  feature(best, q, normal);
+  return (p - q).dot(normal) >= 0.0 ? Side::outside : Side::inside;
+}
+
+void SurfaceDistance::feature(const Nearest& best, Vec3& q, Vec3& normal) const {
   const Triangle& T = triangles_[static_cast<size_t>(best.triangle)];
   const std::array<double, 3>& w = best.weights;
-  const Vec3 q = w[0] * vertices_[static_cast<size_t>(T[0])] +
-                 w[1] * vertices_[static_cast<size_t>(T[1])] +
-                 w[2] * vertices_[static_cast<size_t>(T[2])];
-  // The feature the closest point is on: a vertex (one weight 1), an edge (one weight 0), the face.
-  Vec3 normal = face_normal_[static_cast<size_t>(best.triangle)];
+  q = w[0] * vertices_[static_cast<size_t>(T[0])] + w[1] * vertices_[static_cast<size_t>(T[1])] +
+      w[2] * vertices_[static_cast<size_t>(T[2])];
+  // A vertex (one weight 1), an edge (one weight 0), or the face.
+  normal = face_normal_[static_cast<size_t>(best.triangle)];
   for (int k = 0; k < 3; ++k) {
     const double wk = w[static_cast<size_t>(k)], w1 = w[static_cast<size_t>((k + 1) % 3)],
                  w2 = w[static_cast<size_t>((k + 2) % 3)];
@@ -220,13 +264,19 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit) c
     else if (wk == 0.0 && w1 != 1.0 && w2 != 1.0)
       normal = edge_normal_[static_cast<size_t>(best.triangle)][static_cast<size_t>((k + 1) % 3)];
   }
+}
+
+SurfaceDistance::Side SurfaceDistance::finish(const Vec3& p, const Nearest& best,
+                                              SurfacePoint& hit) const {
+  Vec3 q, normal;
+  feature(best, q, normal);
   if ((p - q).dot(normal) >= 0.0) return Side::outside;
   hit.depth = std::sqrt(best.d2);
   hit.point = q;
   hit.normal = normal;
   hit.triangle = best.triangle;
-  hit.weights = w;
-  return hit.depth > h_ ? Side::deep : Side::inside;
+  hit.weights = best.weights;
+  return hit.depth > deep_ ? Side::deep : Side::inside;
 }
 
 }  // namespace ccm

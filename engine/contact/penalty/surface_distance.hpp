@@ -3,15 +3,16 @@
 // meshed rigid body needs (rigid_surface_penalty.hpp; docs/rigid-bodies.md, "Penalty").
 //
 // The surface is fixed in its own frame (a rigid body's reference configuration). A uniform grid
-// of cells of size h (at least the longest edge) holds every triangle in the cells its bounding
-// box overlaps. A point in a cell that holds triangles is tested against those of the 27 cells
+// of cells of size h (the median edge) holds every triangle in the cells its bounding box
+// overlaps. A point in a cell that holds triangles is tested against those of the 27 cells
 // around it: the closest of them is the surface's closest point whenever the point is within h
 // of the surface. The side is that of the angle-weighted pseudo-normal at the closest feature
 // (face, edge or vertex; Baerentzen & Aanaes, IEEE TVCG 11(3), 2005), exact for a closed
 // manifold surface. Whether an empty cell is inside or outside is settled once by a flood fill
 // from the grid's border through empty cells (DS.1): a point in an empty outside cell is outside
-// at once. When the 27 cells hold no triangle within h, every triangle is searched. A point deeper
-// than h inside is reported as deep (with its closest point).
+// at once. When the 27 cells hold no triangle within h, the point is more than h from the
+// surface: the nearest of them says outside (no spring acts), or every triangle is searched. A
+// point deeper than the longest edge inside is reported as deep (with its closest point).
 #pragma once
 
 #include <array>
@@ -39,10 +40,12 @@ class SurfaceDistance {
   SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangle> triangles);
 
   enum class Side { outside, inside, deep };
-  // outside: `hit` untouched. inside: `hit` filled. deep: filled, inside by more than cell_size().
+  // outside: `hit` untouched. inside: `hit` filled. deep: filled, inside by more than
+  // deep_depth() (the longest edge).
   Side query(const Vec3& p, SurfacePoint& hit) const;
 
   double cell_size() const { return h_; }
+  double deep_depth() const { return deep_; }
   double shortest_edge() const { return min_edge_; }
   const std::vector<Triangle>& triangles() const { return triangles_; }
 
@@ -54,6 +57,10 @@ class SurfaceDistance {
   };
   double closest(int t, const Vec3& p, std::array<double, 3>& w) const;
   void consider(int t, const Vec3& p, Nearest& best) const;
+  double box_distance2(const Vec3& p, const std::array<int, 3>& c) const;
+  void feature(const Nearest& best, Vec3& q, Vec3& normal) const;
+  Side side_of(const Vec3& p, const Nearest& best) const;
+  Side finish(const Vec3& p, const Nearest& best, SurfacePoint& hit) const;
   long cell_index(const std::array<int, 3>& c) const;
   std::array<int, 3> cell_of(const Vec3& p) const;
   void build_grid();
@@ -65,6 +72,7 @@ class SurfaceDistance {
   std::vector<std::array<Vec3, 3>> edge_normal_;  // per triangle: edge (k, k+1) pseudo-normal
   std::vector<Vec3> vertex_normal_;
   double h_ = 0.0, min_edge_ = 0.0;
+  double deep_ = 0.0;  // depth beyond which a point is `deep`: the longest edge
   Vec3 origin_ = Vec3::Zero();
   std::array<int, 3> dims_{};
   std::vector<int> cell_start_;  // CSR: triangles of cell c are cell_items_[start[c], start[c+1])

@@ -335,3 +335,30 @@ TEST_CASE("default-rigid-options.toml: the default grid with damping and penalty
   CHECK(untitled(point_scene_text(g, points[3], ImpactModel::rigid)) ==
         untitled(point_scene_text(base, first, ImpactModel::rigid)));
 }
+
+TEST_CASE(
+    "the rigid model's meshed impactor: the ccm model's sphere made rigid, on the per-point "
+    "penalty, its scene the same at every ER",
+    "[grid][rigid-body]") {
+  const GridSpec g =
+      parse_grid(std::string(kSmallGrid) + "\n[contact]\nrigid_impactor = \"meshed\"\n", "g.toml");
+  CHECK(g.contact.meshed_rigid_impactor);
+  const std::string text = point_scene_text(g, point(1e2, 1.0, 50.0), ImpactModel::rigid);
+  CHECK_THAT(text, Catch::Contains("kind = \"rigid\"") && Catch::Contains("rigid = \"impactor\""));
+  CHECK(text.find("[contact.sphere]") == std::string::npos);
+  // The rigid run does not depend on ER: one scene, one run, for every ER.
+  CHECK(point_scene_text(g, point(1e6, 1.0, 50.0), ImpactModel::rigid) == text);
+  const Scene rigid = point_scene(g, point(1e2, 1.0, 50.0), ImpactModel::rigid);
+  const BodySpec& impactor = body_named(rigid, kImpactorName);
+  CHECK(impactor.rigid);
+  // The same sphere as the ccm model's: mass m_I, speed v_I.
+  const Scene ccm = point_scene(g, point(1e2, 1.0, 50.0), ImpactModel::ccm);
+  CHECK(impactor.mass == body_named(ccm, kImpactorName).mass);
+  CHECK(impactor.initial_velocity == body_named(ccm, kImpactorName).initial_velocity);
+  CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\nrigid_impactor = \"meshd\"\n"),
+             Catch::Contains("did you mean \"meshed\""));
+  CHECK_THAT(
+      grid_error_of(std::string(kSmallGrid) +
+                    "\n[contact]\npenalty_mode = \"element\"\nrigid_impactor = \"meshed\"\n"),
+      Catch::Contains("per-point K_P"));
+}

@@ -38,7 +38,7 @@ TEST_CASE("surface distance: inside, depth and normal of points of a box against
       CHECK(side == SurfaceDistance::Side::outside);
       continue;
     }
-    if (depth > d.cell_size()) {
+    if (depth > d.deep_depth()) {
       CHECK(side == SurfaceDistance::Side::deep);
       continue;
     }
