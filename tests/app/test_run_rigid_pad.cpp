@@ -2,7 +2,8 @@
 // scene run by `ccm run` with its pad deformable and with `kind = "rigid"` added to the pad, as a
 // user would. Both complete; the rigid pad's history holds its pose and the contact's impulse on
 // it, and that impulse is exactly the momentum the pad lost (m dv_z, to the CSV's 17 digits and
-// the round-off of 2,000 steps: 1e-9).
+// the round-off of 2,000 steps: 1e-9). [heavy]: 17 s under the sanitizers; the rigid pad's code
+// runs there in tests/engine/body/test_rigid_contact.cpp.
 #include <fmt/format.h>
 #include <sys/wait.h>
 
@@ -43,7 +44,7 @@ std::map<std::string, double> last_row(const fs::path& csv) {
 }  // namespace
 
 TEST_CASE("ccm run: the pad-on-limb example with its pad deformable and rigid",
-          "[rigid-body][cli]") {
+          "[rigid-body][cli][heavy]") {
   ccm::test::TempDir dir;
   const fs::path example = fs::path(CCM_SOURCE_DIR) / "scenes/examples/pad_on_limb_dcr.toml";
   std::stringstream whole;
