@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "engine/contact/penalty/surface_quadrature.hpp"
+#include "engine/core/parameter_ranges.hpp"
 #include "engine/mesh/boundary_surface.hpp"
 #include "engine/mesh/model_mesh.hpp"
 
@@ -86,8 +87,9 @@ RigidSpherePenalty::RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triang
     throw std::invalid_argument("rigid sphere penalty: the penalty scale s must be > 0");
   if (element && !mesh)
     throw std::invalid_argument("rigid sphere penalty: the element penalty needs the mesh");
-  if (!(params_.damping >= 0.0) || !std::isfinite(params_.damping))
-    throw std::invalid_argument("rigid sphere penalty: the damping must be >= 0");
+  if (!kDampingRange.contains(params_.damping))
+    throw std::invalid_argument("rigid sphere penalty: the damping " +
+                                kDampingRange.problem(params_.damping));
 
   if (params_.force_axis) {
     if (!(params_.force_axis->norm() > 0.0))

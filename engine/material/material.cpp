@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "engine/core/parameter_ranges.hpp"
+
 namespace ccm {
 
 std::string_view to_string(MaterialModel model) {
@@ -28,8 +30,7 @@ bool parse_material_model(std::string_view name, MaterialModel& out) {
 
 std::string validate(const MaterialParams& m) {
   if (!std::isfinite(m.E) || m.E <= 0.0) return fmt::format("E must be > 0 (got {})", m.E);
-  if (!std::isfinite(m.nu) || m.nu <= -1.0 || m.nu >= 0.5)
-    return fmt::format("nu must lie in (-1, 0.5) (got {})", m.nu);
+  if (!kPoissonRange.contains(m.nu)) return "nu " + kPoissonRange.problem(m.nu);
   if (!std::isfinite(m.rho) || m.rho <= 0.0) return fmt::format("rho must be > 0 (got {})", m.rho);
   return {};
 }

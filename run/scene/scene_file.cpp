@@ -18,6 +18,7 @@
 #include "config/did_you_mean.hpp"
 #include "config/strict_table.hpp"
 #include "config/text_file.hpp"
+#include "engine/core/parameter_ranges.hpp"
 #include "engine/core/time_table.hpp"
 
 namespace ccm {
@@ -134,9 +135,9 @@ void parse_time(const Table& root, Scene& scene) {
   time.end = positive(t, "end", t.need<double>("end"));
   time.output_interval =
       positive(t, "output_interval", t.get_or("output_interval", time.end / 100));
-  time.dt_safety = positive(t, "dt_safety", t.get_or("dt_safety", kDefaultDtSafety));
-  if (time.dt_safety > 2.0)
-    t.fail("dt_safety", fmt::format("must be <= 2 (got {})", time.dt_safety));
+  time.dt_safety = t.get_or("dt_safety", kDefaultDtSafety);
+  if (!kDtSafetyRange.contains(time.dt_safety))
+    t.fail("dt_safety", kDtSafetyRange.problem(time.dt_safety));
   if (time.dt_safety > 1.0)
     scene.warnings.push_back(fmt::format(
         "{}: {} > 1 exceeds the stable time step; use it only for stability experiments",
@@ -609,10 +610,10 @@ void parse_dcr(const Table& t, ContactSpec& c) {
   if (c.surfaces.empty()) t.fail("surfaces", "needs at least one surface");
   c.self_contact = t.get_or("self_contact", c.self_contact);
   c.restitution = t.get_or("restitution", c.restitution);
-  if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
-    t.fail("restitution", fmt::format("must lie in [0, 1] (got {})", c.restitution));
+  if (!kRestitutionRange.contains(c.restitution))
+    t.fail("restitution", kRestitutionRange.problem(c.restitution));
   c.friction = t.get_or("friction", c.friction);
-  if (!(c.friction >= 0.0)) t.fail("friction", fmt::format("must be >= 0 (got {})", c.friction));
+  if (!kFrictionRange.contains(c.friction)) t.fail("friction", kFrictionRange.problem(c.friction));
   if (t.has("force_axis")) c.force_axis = non_zero(t, "force_axis", t.need<Vec3>("force_axis"));
   if (t.has("sensors")) c.sensors = surface_names(t, "sensors");
   c.where = t.ref();
@@ -670,14 +671,12 @@ void parse_contact(const Table& root, Scene& scene) {
               "applies to the analytic sphere only (a rigid body's history has its "
               "contact force)");
     c.damping = t->get_or("damping", c.damping);
-    if (!(c.damping >= 0.0 && std::isfinite(c.damping)))
-      t->fail("damping", fmt::format("must be >= 0 (got {})", c.damping));
+    if (!kDampingRange.contains(c.damping)) t->fail("damping", kDampingRange.problem(c.damping));
     c.where = t->ref();
     return;
   }
   c.damping = t->get_or("damping", c.damping);
-  if (!(c.damping >= 0.0 && std::isfinite(c.damping)))
-    t->fail("damping", fmt::format("must be >= 0 (got {})", c.damping));
+  if (!kDampingRange.contains(c.damping)) t->fail("damping", kDampingRange.problem(c.damping));
   if (t->has("force_axis")) c.force_axis = non_zero(*t, "force_axis", t->need<Vec3>("force_axis"));
   const Table sphere = t->need_table("sphere");
   c.sphere = parse_sphere(sphere, scene);

@@ -8,6 +8,7 @@
 #include "config/did_you_mean.hpp"
 #include "config/strict_table.hpp"
 #include "config/text_file.hpp"
+#include "engine/core/parameter_ranges.hpp"
 #include "study/grid/point_parameters.hpp"
 
 namespace ccm::study {
@@ -30,7 +31,7 @@ double checked_as_axis(const StrictTable& t, std::string_view key, std::string_v
 
 double poisson(const StrictTable& t, std::string_view key) {
   const double v = t.need_number(key);
-  if (!(v > -1.0 && v < 0.5)) t.fail(key, fmt::format("must lie in (-1, 0.5) (got {})", v));
+  if (!kPoissonRange.contains(v)) t.fail(key, kPoissonRange.problem(v));
   return v;
 }
 
@@ -72,8 +73,8 @@ void parse_time(const StrictTable& root, GridSpec& g) {
   if (time.output_interval > time.end)
     t.fail("output_interval", fmt::format("must be <= end = {}", time.end));
   time.dt_safety = t.number_or("dt_safety", time.dt_safety);
-  if (!(time.dt_safety > 0.0 && time.dt_safety <= 1.0))
-    t.fail("dt_safety", fmt::format("must lie in (0, 1] (got {})", time.dt_safety));
+  if (!kStudyDtSafetyRange.contains(time.dt_safety))
+    t.fail("dt_safety", kStudyDtSafetyRange.problem(time.dt_safety));
   time.max_steps = t.integer("max_steps").value_or(0);
   if (time.max_steps < 0) t.fail("max_steps", "must be >= 0 (0: no limit)");
 }

@@ -8,6 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/core/parameter_ranges.hpp"
+
 namespace ccm::study {
 namespace {
 
@@ -15,17 +17,9 @@ std::string positive_problem(double v) {
   return v > 0.0 ? std::string() : fmt::format("must be > 0 (got {})", v);
 }
 
-std::string poisson_problem(double v) {
-  return (v > -1.0 && v < 0.5) ? std::string() : fmt::format("must lie in (-1, 0.5) (got {})", v);
-}
-
 // A tet edge above half the diameter is more than Gmsh accepts on a sphere (its radius).
 std::string mesh_ratio_problem(double v) {
   return (v > 0.0 && v <= 0.5) ? std::string() : fmt::format("must lie in (0, 0.5] (got {})", v);
-}
-
-std::string unit_interval_problem(double v) {
-  return (v >= 0.0 && v <= 1.0) ? std::string() : fmt::format("must lie in [0, 1] (got {})", v);
 }
 
 std::string non_negative_problem(double v) {
@@ -36,19 +30,21 @@ std::string non_negative_problem(double v) {
 std::string axis_problem(GridAxis axis, double value) {
   switch (axis) {
     case GridAxis::nu:
-      return poisson_problem(value);
+      return kPoissonRange.problem(value);
     case GridAxis::impactor_mesh_ratio:
       return mesh_ratio_problem(value);
     case GridAxis::artifact_mesh_size:
     case GridAxis::mesh_scale:
     case GridAxis::penalty:
       return positive_problem(value);
-    case GridAxis::penalty_scale:
-    case GridAxis::damping:
-    case GridAxis::friction:
+    case GridAxis::penalty_scale:  // 0: the per-point K_P
       return non_negative_problem(value);
+    case GridAxis::damping:
+      return kDampingRange.problem(value);
+    case GridAxis::friction:
+      return kFrictionRange.problem(value);
     case GridAxis::restitution:
-      return unit_interval_problem(value);
+      return kRestitutionRange.problem(value);
   }
   return fmt::format("unknown grid axis {}", static_cast<int>(axis));
 }

@@ -12,6 +12,7 @@
 #include "engine/contact/dcr/ccd.hpp"
 #include "engine/contact/dcr/ccd_prefilter.hpp"
 #include "engine/contact/dcr/step_limit.hpp"
+#include "engine/core/parameter_ranges.hpp"
 
 namespace ccm::dcr {
 namespace {
@@ -181,9 +182,11 @@ DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
       output_(mesh, contact_bodies(features_), settings_.output),
       anchored_(anchored_bodies(mesh, fixed_nodes)),
       held_(mesh.bodies.size()) {
-  if (settings_.restitution < 0.0 || settings_.restitution > 1.0)
-    throw std::invalid_argument("dcr: restitution must lie in [0, 1]");
-  if (settings_.friction < 0.0) throw std::invalid_argument("dcr: friction must be >= 0");
+  if (!kRestitutionRange.contains(settings_.restitution))
+    throw std::invalid_argument("dcr: restitution " +
+                                kRestitutionRange.problem(settings_.restitution));
+  if (!kFrictionRange.contains(settings_.friction))
+    throw std::invalid_argument("dcr: friction " + kFrictionRange.problem(settings_.friction));
   if (!(settings_.proximity > 0.0 && settings_.proximity <= 0.5))
     throw std::invalid_argument("dcr: proximity must lie in (0, 0.5] (fraction of an edge)");
   broad_phase_.use_loops(loops_);

@@ -8,6 +8,7 @@
 
 #include "engine/body/mass_properties.hpp"
 #include "engine/contact/penalty/surface_quadrature.hpp"
+#include "engine/core/parameter_ranges.hpp"
 
 namespace ccm {
 namespace {
@@ -44,8 +45,8 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
         "penalty: body '" + mesh.bodies[static_cast<size_t>(rigid_body)].name + "' is not rigid");
   if (!(params_.penalty > 0.0) || !std::isfinite(params_.penalty))
     throw std::invalid_argument("penalty: K_P must be > 0");
-  if (!(params_.damping >= 0.0) || !std::isfinite(params_.damping))
-    throw std::invalid_argument("penalty: the damping must be >= 0");
+  if (!kDampingRange.contains(params_.damping))
+    throw std::invalid_argument("penalty: the damping " + kDampingRange.problem(params_.damping));
   damping_factor_ = std::sqrt(1.0 + params_.damping * params_.damping) - params_.damping;
   for (const auto* list : {&tris_, &rigid_tris_})
     for (const Triangle& t : *list) nodes_.insert(nodes_.end(), t.begin(), t.end());

@@ -653,7 +653,8 @@ TEST_CASE("scene [contact]: errors name the file, the line and the key", "[conta
         "s.toml:17: contact.sphere.radius: must be > 0 (got -1)");
   CHECK(scene_error_of(head + "penalty = 0\n" + sphere) ==
         "s.toml:16: contact.penalty: must be > 0 (got 0)");
-  CHECK(scene_error_of(head) == "s.toml:13: contact.sphere: required table is missing");
+  // Neither the analytic sphere nor a meshed rigid body (docs/rigid-bodies.md, "Penalty").
+  CHECK(scene_error_of(head) == "s.toml:13: contact: needs one of: sphere, rigid");
   CHECK_THAT(scene_error_of(head + "[contact.sphere]\nradius = 0.01\nmass = 0.1\ndensity = 1.0\n"
                                    "center = [0, 0, 1]\n"),
              Contains("s.toml:19: contact.sphere.density: give only one of: mass, density"));

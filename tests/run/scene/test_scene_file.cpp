@@ -185,7 +185,7 @@ TEST_CASE("scene errors name the file, the line and the key", "[scene]") {
   }
   SECTION("time and names") {
     CHECK(error_of(with(kBase, "end = 1e-3", "end = 1e-3\ndt_safety = 2.5")) ==
-          f + ":3: time.dt_safety: must be <= 2 (got 2.5)");
+          f + ":3: time.dt_safety: must lie in (0, 2] (got 2.5)");
     CHECK(error_of(kBase + "[[bodies]]\nname = \"cube\"\n") ==
           f + ":14: bodies[1].name: duplicate name 'cube' (also used by bodies[0])");
     CHECK_THAT(error_of(with(kBase, "name = \"cube\"", "name = \"a b\"")),
