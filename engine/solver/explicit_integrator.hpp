@@ -75,7 +75,7 @@ struct RunSummary {
   double ns_per_element_step = 0.0;
   double energy_balance_error = 0.0;  // largest relative error seen at the checks
   int n_nodes = 0;
-  int n_elements = 0;
+  int n_elements = 0;  // the elements stepped (a rigid body's are not)
   int threads = 1;  // the threads the run used
 };
 

@@ -2,7 +2,8 @@
 // distance to a box's boundary against the closed form; a meshed rigid sphere against the
 // analytic sphere (RigidSpherePenalty) on the same artifact with the same K_P, mass and speed:
 // the artifact's kinetic-energy history and final state agree to the sphere's faceting; total
-// momentum of sphere and artifact kept to round-off.
+// momentum of sphere and artifact kept to round-off ([heavy]: 16 s under the sanitizers, whose
+// pass runs the same model in tests/run/scene/test_scene_rigid.cpp).
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 #include <cmath>
