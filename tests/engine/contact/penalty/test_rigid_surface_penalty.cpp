@@ -119,7 +119,7 @@ Impact run(const Model& model, ContactModel& contact, double sphere_mass, bool m
 TEST_CASE(
     "penalty: a meshed rigid sphere and the analytic sphere give the artifact the same "
     "impact",
-    "[rigid-body][penalty]") {
+    "[rigid-body][penalty][heavy]") {
   // The meshed sphere: a rigid body of the Gmsh sphere, free, with the analytic sphere's speed.
   ModelMesh mesh;
   add_body(mesh, "artifact", test::neo_hookean(1e4, 0.3, kRho), structured_box(kArtifact, 8, 8, 4));
