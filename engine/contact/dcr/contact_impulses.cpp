@@ -6,6 +6,26 @@
 namespace ccm::dcr {
 namespace {
 
+// Tangential: the impulse that stops the sliding of the two contact points (their relative
+// tangential velocity `slip`, in the (t1, t2) basis), projected onto the Coulomb disc of the
+// normal impulse lambda_n; sets the row's tangential impulses and returns their change (N s),
+// with the largest velocity change it makes at the contact points in `change`.
+inline Vec3 friction_update(ContactRow& r, const RowInverse& inv, const Vec3& slip, double mu,
+                            double lambda_n, double& change) {
+  double l1 = r.lambda_t1 - slip.dot(r.t1) * inv.W_t, l2 = r.lambda_t2 - slip.dot(r.t2) * inv.W_t;
+  const double bound = mu * r.S * lambda_n, norm2 = l1 * l1 + l2 * l2;
+  if (norm2 > bound * bound) {  // sliding: onto the disc (a sticking contact takes no root)
+    const double scale = bound / std::sqrt(norm2);
+    l1 *= scale;
+    l2 *= scale;
+  }
+  const double d_t1 = l1 - r.lambda_t1, d_t2 = l2 - r.lambda_t2;
+  r.lambda_t1 = l1;
+  r.lambda_t2 = l2;
+  change = std::max(change, std::sqrt(d_t1 * d_t1 + d_t2 * d_t2) * r.W_t);
+  return d_t1 * r.t1 + d_t2 * r.t2;
+}
+
 // One row's update from the current velocities, applied to its four nodes (distinct: a node
 // and a face holding it, or two edges sharing a node, are never a pair); returns the largest
 // velocity change of its contact points. The four velocities are read once, updated in place and
@@ -39,23 +59,9 @@ double update_row(ContactRow& r, const RowInverse& inv, const std::vector<double
   for (int a = 0; a < 4; ++a) u[a] += w[a] * d_n * r.grad[a];
   double change = std::abs(d_n) * inv.change_n;
   if (friction) {
-    // Tangential: the impulse that stops the sliding of the two contact points (their relative
-    // tangential velocity, in the (t1, t2) basis), projected onto the Coulomb disc of the
-    // updated normal impulse.
     slip += d_n * inv.slip_per_normal;
-    double l1 = r.lambda_t1 - slip.dot(r.t1) * inv.W_t, l2 = r.lambda_t2 - slip.dot(r.t2) * inv.W_t;
-    const double bound = mu * r.S * lambda_n, norm2 = l1 * l1 + l2 * l2;
-    if (norm2 > bound * bound) {  // sliding: onto the disc (a sticking contact takes no root)
-      const double scale = bound / std::sqrt(norm2);
-      l1 *= scale;
-      l2 *= scale;
-    }
-    const double d_t1 = l1 - r.lambda_t1, d_t2 = l2 - r.lambda_t2;
-    r.lambda_t1 = l1;
-    r.lambda_t2 = l2;
-    const Vec3 tangential = d_t1 * r.t1 + d_t2 * r.t2;
+    const Vec3 tangential = friction_update(r, inv, slip, mu, lambda_n, change);
     for (int a = 0; a < 4; ++a) u[a] += w[a] * r.beta[a] * tangential;
-    change = std::max(change, std::sqrt(d_t1 * d_t1 + d_t2 * d_t2) * r.W_t);
   }
   for (int a = 0; a < 4; ++a) v[static_cast<size_t>(r.nodes[a])] = u[a];
   return change;
@@ -90,20 +96,9 @@ double update_rigid_row(ContactRow& r, const RowInverse& inv, const std::vector<
   double change = std::abs(d_n) * inv.change_n;
   if (friction) {
     slip += d_n * inv.slip_per_normal;
-    double l1 = r.lambda_t1 - slip.dot(r.t1) * inv.W_t, l2 = r.lambda_t2 - slip.dot(r.t2) * inv.W_t;
-    const double bound = mu * r.S * lambda_n, norm2 = l1 * l1 + l2 * l2;
-    if (norm2 > bound * bound) {
-      const double scale = bound / std::sqrt(norm2);
-      l1 *= scale;
-      l2 *= scale;
-    }
-    const double d_t1 = l1 - r.lambda_t1, d_t2 = l2 - r.lambda_t2;
-    r.lambda_t1 = l1;
-    r.lambda_t2 = l2;
-    const Vec3 tangential = d_t1 * r.t1 + d_t2 * r.t2;
+    const Vec3 tangential = friction_update(r, inv, slip, mu, lambda_n, change);
     for (int a = 0; a < 4; ++a) u[a] += w[a] * r.beta[a] * tangential;
     bodies.apply_tangential(part, tangential);
-    change = std::max(change, std::sqrt(d_t1 * d_t1 + d_t2 * d_t2) * r.W_t);
   }
   for (int a = 0; a < 4; ++a)
     if (part.of_node[a] < 0) v[static_cast<size_t>(r.nodes[a])] = u[a];
