@@ -57,8 +57,9 @@ void HistoryRecorder::sample_body(const State& s, const Body& b, double internal
                                   std::vector<double>& row) const {
   if (request_.kinetic_energy && b.rigid) {
     double ke = 0.0;
+    const auto index = static_cast<int>(&b - mesh_.bodies.data());
     for (const RigidState& r : s.rigid)
-      if (&mesh_.bodies[static_cast<size_t>(r.body)] == &b) ke = r.kinetic_energy;
+      if (r.body == index) ke = r.kinetic_energy;
     row.push_back(ke);
   } else if (request_.kinetic_energy) {
     row.push_back(kinetic_energy(s, b.first_node, b.n_nodes));

@@ -28,7 +28,6 @@ std::string point_title(const GridPoint& point, ImpactModel model) {
   if (model == ImpactModel::rigid)
     return fmt::format("grid point (rigid): RLS = {}, KE = {} J", num(point.length_ratio),
                        num(point.kinetic_energy));
-  // (The meshed rigid impactor shows in the scene's own keys.)
   return fmt::format("grid point (ccm): ER = {}, RLS = {}, KE = {} J", num(point.modulus_ratio),
                      num(point.length_ratio), num(point.kinetic_energy));
 }

@@ -96,7 +96,6 @@ void RigidSurfacePenalty::add_forces(State& s) {
   const RigidState* r = pose(s);
   if (!r) throw std::logic_error("penalty: the rigid body has no state in this run");
   free_body_ = r->inverse_mass > 0.0;
-  body_inv_mass_ = r->inverse_mass;
   std::fill(f_now_.begin(), f_now_.end(), Vec3::Zero());
   n_active_ = 0;
   const double K = params_.penalty;

@@ -79,7 +79,7 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   std::vector<char> rigid_node_;      // per entry of nodes_: a rigid body's node
   std::vector<double> triangles_at_;  // per entry of nodes_: the deformable triangles at it
   std::vector<Vec3> f_now_, f_prev_, x_prev_;
-  double work_ = 0.0, penetration_max_ = 0.0, damping_factor_ = 1.0, body_inv_mass_ = 0.0;
+  double work_ = 0.0, penetration_max_ = 0.0, damping_factor_ = 1.0;
   double bound2_ = 0.0;  // squared radius of the body's bounding sphere about its centre of mass
   int n_active_ = 0;
   std::string failure_;

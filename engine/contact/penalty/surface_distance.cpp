@@ -55,7 +55,6 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
   // Pseudo-normals: faces, edges (sum of the two faces'), vertices (angle-weighted).
   vertex_normal_.assign(vertices_.size(), Vec3::Zero());
   std::map<std::pair<int, int>, std::vector<int>> edges;
-  min_edge_ = std::numeric_limits<double>::infinity();
   double max_edge = 0.0;
   std::vector<double> lengths;
   for (size_t t = 0; t < triangles_.size(); ++t) {
@@ -69,7 +68,6 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
       edges[{std::min(i, j), std::max(i, j)}].push_back(static_cast<int>(t));
       const double length =
           (vertices_[static_cast<size_t>(i)] - vertices_[static_cast<size_t>(j)]).norm();
-      min_edge_ = std::min(min_edge_, length);
       max_edge = std::max(max_edge, length);
       lengths.push_back(length);
       vertex_normal_[static_cast<size_t>(i)] +=

@@ -46,7 +46,6 @@ class SurfaceDistance {
 
   double cell_size() const { return h_; }
   double deep_depth() const { return deep_; }
-  double shortest_edge() const { return min_edge_; }
   const std::vector<Triangle>& triangles() const { return triangles_; }
 
  private:
@@ -71,7 +70,7 @@ class SurfaceDistance {
   std::vector<Vec3> face_normal_;
   std::vector<std::array<Vec3, 3>> edge_normal_;  // per triangle: edge (k, k+1) pseudo-normal
   std::vector<Vec3> vertex_normal_;
-  double h_ = 0.0, min_edge_ = 0.0;
+  double h_ = 0.0;
   double deep_ = 0.0;  // depth beyond which a point is `deep`: the longest edge
   Vec3 origin_ = Vec3::Zero();
   std::array<int, 3> dims_{};
