@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "app/output_file.hpp"
-#include "app/partitioned_contact.hpp"
 #include "app/progress_line.hpp"
 #include "config/text_file.hpp"
 #include "engine/distributed/distributed_run.hpp"
@@ -314,10 +313,9 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   fields.attach(options);
   ProgressLine progress;
   options.progress = progress.on_terminal(args.quiet);
-  const RunSummary summary =
-      partition.ranks > 1 ? distributed::run_partitioned(
-                                p.model, options, partitioned_contact(p.scene, p.model), &partition)
-                          : run_explicit(p.model, options);
+  const RunSummary summary = partition.ranks > 1
+                                 ? distributed::run_partitioned(p.model, options, &partition)
+                                 : run_explicit(p.model, options);
   progress.finish();
   return summary;
 }

@@ -58,7 +58,7 @@ double thread_seconds() { return seconds_on(g_clock); }
 // whole steps (`loop`: from one begin_step to the next, and the last one to its end_step).
 class TimedContact : public ContactModel {
  public:
-  explicit TimedContact(ContactModel& inner) : ContactModel(inner.name()), inner_(inner) {}
+  explicit TimedContact(ContactModel& inner) : ContactModel(inner.name(), inner.phases()), inner_(inner) {}
   void begin_step(const State& s, double dt) override {
     const double now = thread_seconds();
     if (step_start_ >= 0.0) loop += now - step_start_;

@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "app/partitioned_contact.hpp"
 #include "bench/bench_statistics.hpp"
 #include "engine/distributed/distributed_run.hpp"
 #include "engine/distributed/partition.hpp"
+#include "engine/distributed/replicated_contact.hpp"
 #include "engine/distributed/subdomain.hpp"
 #include "run/parallel/rank_context.hpp"
 #include "run/scene/scene_builder.hpp"
@@ -73,8 +73,7 @@ void print_partitions(const Model& model, const std::vector<int>& contact_region
 // The machine's speed drifts between minutes (docs/parallel.md, "Measured"), more than the
 // effect measured; a round puts the serial reference and the partitioned run seconds apart, in
 // one process, so that each round's ratio T_serial / (P T_P) compares runs on the same machine.
-void alternate(const Scene& scene, const Model& model,
-               const distributed::PartitionedContact& replicated, const study::RankContext& ranks,
+void alternate(const Scene& scene, const Model& model, const study::RankContext& ranks,
                int rounds) {
   std::vector<double> efficiency;
   for (int round = 1; round <= rounds; ++round) {
@@ -90,7 +89,7 @@ void alternate(const Scene& scene, const Model& model,
     ranks.barrier_asleep();  // the waiting ranks leave the machine to rank 0
     ContactSetup contact = build_contact(scene, model);
     options.contact = contact.model.get();
-    const RunSummary s = distributed::run_partitioned(model, options, replicated, nullptr);
+    const RunSummary s = distributed::run_partitioned(model, options, nullptr);
     if (!ranks.is_root()) continue;
     const double e = serial / (ranks.size() * s.step_wall_seconds);
     efficiency.push_back(e);
@@ -124,13 +123,14 @@ int main(int argc, char** argv) {
   const Scene scene = parse_scene_file(argv[1]);
   const Model model = build_model(scene);
   ContactSetup contact = build_contact(scene, model);
-  const distributed::PartitionedContact replicated = partitioned_contact(scene, model);
   if (partitions) {
-    if (ranks.is_root()) print_partitions(model, replicated.region, argv[3]);
+    const std::vector<int> region =
+        contact.model ? distributed::contact_region(model.mesh) : std::vector<int>{};
+    if (ranks.is_root()) print_partitions(model, region, argv[3]);
     return 0;
   }
   if (alternating) {
-    alternate(scene, model, replicated, ranks, std::max(1, std::atoi(argv[3])));
+    alternate(scene, model, ranks, std::max(1, std::atoi(argv[3])));
     return 0;
   }
   RunOptions options;
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   distributed::PartitionReport r;
-  const RunSummary s = distributed::run_partitioned(model, options, replicated, &r);
+  const RunSummary s = distributed::run_partitioned(model, options, &r);
   if (!ranks.is_root()) return 0;
   // The slowest rank's phases: structure = step loop - communication - contact, in wall time and
   // in thread CPU time (the CPU time of the communication includes Open MPI's busy waiting).

@@ -6,10 +6,11 @@
 //   ->  accelerations  ->  correct (x_{n+1}, v*)  ->  boundary conditions  ->  v correction
 //   ->  end_step.
 //
-// Five pure virtual methods (and one optional hook, use_replica_team): a model that leaves one out
-// does not compile (tests/engine/contact/test_contact_interface.cpp). The name and the ledger are
-// data of this base class that the model keeps current, so a wrapper has nothing to forward (docs/
-// architecture.md).
+// Five pure virtual methods (and two optional hooks, use_replica_team and add_held_impulses): a
+// model that leaves one out does not compile (tests/engine/contact/test_contact_interface.cpp).
+// The name, the phases and the ledger are data of this base class, given at construction or kept
+// current by the model, so a wrapper has nothing to forward and no caller restates per model what
+// it does (docs/architecture.md).
 #pragma once
 
 #include <limits>
@@ -46,6 +47,16 @@ struct HeldImpulse {
   Vec3 moment = Vec3::Zero();
 };
 
+// Which phases of a step a model acts in: penalty-type models add forces (add_forces), constraint
+// types correct positions and velocities (correct). A partitioned run replicates only those
+// (engine/distributed/replicated_contact.hpp); a set of models acts in the union of its members'.
+struct ContactPhases {
+  bool adds_forces = false;
+  bool corrects = false;
+};
+inline constexpr ContactPhases kForcePhases{.adds_forces = true, .corrects = false};
+inline constexpr ContactPhases kCorrectionPhases{.adds_forces = false, .corrects = true};
+
 // The ceiling that asks for a model's kinematic bound whatever its value
 // (ContactModel::step_bound).
 inline constexpr double kNoStepCeiling = std::numeric_limits<double>::infinity();
@@ -66,12 +77,13 @@ struct ContactLedger {
 
 class ContactModel {
  public:
-  explicit ContactModel(std::string name) : name_(std::move(name)) {}
+  ContactModel(std::string name, ContactPhases phases) : name_(std::move(name)), phases_(phases) {}
   virtual ~ContactModel() = default;
   ContactModel(const ContactModel&) = delete;
   ContactModel& operator=(const ContactModel&) = delete;
 
   const std::string& name() const { return name_; }
+  const ContactPhases& phases() const { return phases_; }
   const ContactLedger& ledger() const { return ledger_; }
 
   // Called with the state at t_n before the predictor of a step of size dt.
@@ -102,6 +114,7 @@ class ContactModel {
 
  private:
   std::string name_;
+  ContactPhases phases_;
 };
 
 }  // namespace ccm

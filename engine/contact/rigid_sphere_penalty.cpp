@@ -73,7 +73,7 @@ RigidSpherePenalty::RigidSpherePenalty(const ModelMesh& mesh, std::vector<Triang
 
 RigidSpherePenalty::RigidSpherePenalty(const ModelMesh* mesh, std::vector<Triangle> surface,
                                        RigidSpherePenaltyParams params)
-    : ContactModel("rigid_penalty"), params_(std::move(params)) {
+    : ContactModel("rigid_penalty", kForcePhases), params_(std::move(params)) {
   const RigidSphere& s = params_.sphere;
   if (surface.empty()) throw std::invalid_argument("rigid sphere penalty: the surface is empty");
   if (!(s.radius > 0.0) || !std::isfinite(s.radius))

@@ -64,7 +64,7 @@ void fill_report(const Subdomain& d, const std::vector<int>& part, const ModelMe
 }  // namespace
 
 RunSummary run_partitioned(const Model& global, const RunOptions& options,
-                           const PartitionedContact& contact, PartitionReport* report) {
+                           PartitionReport* report) {
   if (!options.constraints.empty() || !options.loads.empty())
     throw std::invalid_argument(
         "a partitioned run supports no kinematic constraints or state loads yet");
@@ -84,7 +84,7 @@ RunSummary run_partitioned(const Model& global, const RunOptions& options,
   std::unique_ptr<ReplicatedContact> replicated;
   if (options.contact)
     replicated =
-        std::make_unique<ReplicatedContact>(*options.contact, contact.phases, contact.region, d,
+        std::make_unique<ReplicatedContact>(*options.contact, contact_region(global.mesh), d,
                                             owners, global.mesh, global.bcs.fixed_nodes, times);
   RunOptions local = options;
   local.coupling = &coupling;

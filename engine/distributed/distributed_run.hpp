@@ -18,11 +18,6 @@ namespace ccm::distributed {
 int world_rank();
 int world_size();
 
-struct PartitionedContact {
-  ContactPhases phases;
-  std::vector<int> region;  // contact_region(): the nodes the contact model reads or writes
-};
-
 // What the partition and its communication cost; per rank where a vector, else rank 0's.
 struct PartitionReport {
   int ranks = 1;
@@ -46,6 +41,6 @@ struct PartitionReport {
 // std::invalid_argument for what a partitioned run does not support (kinematic constraints,
 // state loads).
 RunSummary run_partitioned(const Model& global, const RunOptions& options,
-                           const PartitionedContact& contact, PartitionReport* report = nullptr);
+                           PartitionReport* report = nullptr);
 
 }  // namespace ccm::distributed

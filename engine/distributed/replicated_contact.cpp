@@ -55,13 +55,12 @@ std::vector<int> contact_region(const ModelMesh& mesh) {
   return region;
 }
 
-ReplicatedContact::ReplicatedContact(ContactModel& inner, ContactPhases phases,
-                                     const std::vector<int>& region, const Subdomain& subdomain,
-                                     const std::vector<int>& owners, const ModelMesh& global_mesh,
+ReplicatedContact::ReplicatedContact(ContactModel& inner, const std::vector<int>& region,
+                                     const Subdomain& subdomain, const std::vector<int>& owners,
+                                     const ModelMesh& global_mesh,
                                      const std::vector<int>& fixed_nodes, PhaseTimes& times)
-    : ContactModel(inner.name()),
+    : ContactModel(inner.name(), inner.phases()),
       inner_(inner),
-      phases_(phases),
       times_(times),
       rank_(subdomain.rank),
       size_(subdomain.n_ranks),
@@ -236,7 +235,7 @@ void ReplicatedContact::begin_step(const State& state, double dt) {
 // exchange, so they are counted once per copy, never summed across ranks. The first call comes
 // from the initial evaluation, before any step: the view is gathered for it.
 void ReplicatedContact::add_forces(State& state) {
-  if (!phases_.adds_forces) return;
+  if (!phases().adds_forces) return;
   view_.t = state.t;
   if (started_)
     catch_up(dt_);
@@ -253,7 +252,7 @@ void ReplicatedContact::add_forces(State& state) {
 }
 
 void ReplicatedContact::correct(State& state, double dt) {
-  if (!phases_.corrects) return;
+  if (!phases().corrects) return;
   view_.t = state.t;
   local_ = &state;
   rest_current_ = false;

@@ -21,13 +21,6 @@
 
 namespace ccm::distributed {
 
-// What a contact model does to the state: penalty-type models add forces (add_forces), constraint
-// types correct positions and velocities (correct).
-struct ContactPhases {
-  bool adds_forces = false;
-  bool corrects = false;
-};
-
 // The contact region of a mesh: every boundary node, the nodes a contact model reads every step
 // (the other nodes of the elements a DCR projection re-evaluates are fetched when it does).
 // Sorted global ids.
@@ -45,10 +38,9 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
  public:
   // inner: the model built on the global mesh (every rank has its own, identical one).
   // fixed_nodes: the global model's.
-  ReplicatedContact(ContactModel& inner, ContactPhases phases, const std::vector<int>& region,
-                    const Subdomain& subdomain, const std::vector<int>& owners,
-                    const ModelMesh& global_mesh, const std::vector<int>& fixed_nodes,
-                    PhaseTimes& times);
+  ReplicatedContact(ContactModel& inner, const std::vector<int>& region, const Subdomain& subdomain,
+                    const std::vector<int>& owners, const ModelMesh& global_mesh,
+                    const std::vector<int>& fixed_nodes, PhaseTimes& times);
 
   void begin_step(const State& state, double dt) override;
   void add_forces(State& state) override;
@@ -87,7 +79,6 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   void contact_time(Hook hook) const;
 
   ContactModel& inner_;
-  ContactPhases phases_;
   PhaseTimes& times_;
   int rank_ = 0, size_ = 1;
   GatherPlan region_, rest_;      // the contact region; every other node

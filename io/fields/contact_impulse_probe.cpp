@@ -5,7 +5,7 @@
 namespace ccm::fields {
 
 ContactImpulseProbe::ContactImpulseProbe(ContactModel& inner, std::vector<int> nodes)
-    : ContactModel(inner.name()),
+    : ContactModel(inner.name(), inner.phases()),
       inner_(inner),
       nodes_(std::move(nodes)),
       impulse_(nodes_.size(), Vec3::Zero()),

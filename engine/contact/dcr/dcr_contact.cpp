@@ -172,7 +172,7 @@ std::pair<Vec3, Vec3> tangent_basis(const Vec3& n) {
 
 DcrContact::DcrContact(const ModelMesh& mesh, DcrSettings settings,
                        const std::vector<int>& fixed_nodes)
-    : ContactModel("dcr"),
+    : ContactModel("dcr", kCorrectionPhases),
       settings_(std::move(settings)),
       features_(make_surface_features(mesh, settings_.surfaces)),
       loops_(settings_.threads),

@@ -34,7 +34,7 @@ int local_index(const std::vector<int>& sorted, int global) {
 
 RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Triangle> surface,
                                          int rigid_body, RigidSurfacePenaltyParams params)
-    : ContactModel("rigid_surface_penalty"),
+    : ContactModel("rigid_surface_penalty", kForcePhases),
       params_(std::move(params)),
       rigid_body_(rigid_body),
       tris_(std::move(surface)),

@@ -26,7 +26,7 @@ static_assert(std::is_same_v<decltype(&ContactModel::ledger),
 
 // A model that implements four of the five is abstract.
 struct FourOfFive : ContactModel {
-  FourOfFive() : ContactModel("four") {}
+  FourOfFive() : ContactModel("four", kForcePhases) {}
   void begin_step(const State&, double) override {}
   void add_forces(State&) override {}
   void correct(State&, double) override {}

@@ -15,7 +15,7 @@ namespace {
 class Accelerator : public ContactModel {
  public:
   Accelerator(double gain, bool injection_counts)
-      : ContactModel("accelerator"), gain_(gain), counts_(injection_counts) {}
+      : ContactModel("accelerator", kCorrectionPhases), gain_(gain), counts_(injection_counts) {}
   void begin_step(const State& /*s*/, double /*dt*/) override {}
   void add_forces(State& /*s*/) override {}
   void end_step(const State& /*s*/, double /*dt*/) override {
