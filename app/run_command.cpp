@@ -309,7 +309,7 @@ RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& hi
   options.monitor = p.scene.monitor;
   options.history = &history;
   options.contact = p.contact.model.get();
-  if (p.contact.history) history.add_source(*p.contact.history);
+  for (const HistorySource* h : p.contact.histories) history.add_source(*h);
   fields.attach(options);
   ProgressLine progress;
   options.progress = progress.on_terminal(args.quiet);

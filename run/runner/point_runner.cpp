@@ -87,7 +87,7 @@ RunRecord run_point(const GridSpec& spec, const GridPoint& point, ImpactModel mo
   const Model built = build_model(scene);
   const ContactSetup contact = build_contact(scene, built);
   HistoryRecorder history(built.mesh, build_output_request(scene, built.mesh));
-  if (contact.history) history.add_source(*contact.history);
+  for (const HistorySource* h : contact.histories) history.add_source(*h);
 
   RunOptions run;
   run.time = time_control(scene.time);

@@ -147,8 +147,12 @@ struct RigidSphereSpec {
   Vec3 velocity = Vec3::Zero();  // [m/s]
 };
 
+// One contact model of a scene: the [contact] table, or one entry of [[contact.pairs]].
 struct ContactSpec {
   ContactKind kind = ContactKind::none;
+  // The pair's name: the prefix of its DCR history columns ("contact" for the [contact] table;
+  // a rigid_penalty's columns start with its sphere's or "contact").
+  std::string name = "contact";
   // rigid_penalty:
   std::string body;                                   // the deformable body
   std::optional<std::string> surface;                 // default "<body>/boundary"
@@ -181,7 +185,9 @@ struct Scene {
   std::vector<FixedSpec> fixed;
   std::vector<SurfaceLoadSpec> surface_loads;
   OutputSpec output;
-  ContactSpec contact;
+  // The contact models in the order they act: none, the [contact] table's, or one per entry of
+  // [[contact.pairs]].
+  std::vector<ContactSpec> contacts;
   std::vector<std::string> warnings;  // legal but suspicious settings, each "<file>:<line>: ..."
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/bc/node_selection.hpp"
+#include "engine/contact/contact_set.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/contact/penalty/rigid_surface_penalty.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
@@ -269,8 +270,7 @@ std::vector<int> held_nodes(const Model& model) {
 }
 
 // model = "dcr": every listed surface must exist and have triangles.
-ContactSetup build_dcr(const Scene& scene, const Model& model) {
-  const ContactSpec& c = scene.contact;
+ContactSetup build_dcr(const Scene& scene, const ContactSpec& c, const Model& model) {
   const ModelMesh& mesh = model.mesh;
   dcr::DcrSettings settings;
   size_t triangles = 0;
@@ -292,6 +292,7 @@ ContactSetup build_dcr(const Scene& scene, const Model& model) {
   settings.restitution = c.restitution;
   settings.friction = c.friction;
   settings.output.force_axis = c.force_axis;
+  settings.history_prefix = c.name;
   for (const std::string& name : c.sensors) {
     if (!mesh.surfaces.contains(name))
       fail(scene, c.where, "sensors",
@@ -309,7 +310,7 @@ ContactSetup build_dcr(const Scene& scene, const Model& model) {
   setup.description = fmt::format(
       "dcr: {} ({} triangles), self_contact {}, restitution {:.4g}, friction {:.4g}",
       fmt::join(settings.surfaces, ", "), triangles, c.self_contact, c.restitution, c.friction);
-  setup.history = dcr.get();
+  setup.histories = {dcr.get()};
   setup.solve_warning = [model = dcr.get()] {
     const long v = model->unconverged_velocity_solves(), p = model->unconverged_projections();
     if (v == 0 && p == 0) return std::string();
@@ -337,16 +338,15 @@ std::string penalty_description(const RigidSpherePenalty& model) {
 }
 
 // model = "rigid_penalty" with rigid = "<body>": the penalty against a meshed rigid body.
-ContactSetup build_rigid_surface_penalty(const Scene& scene, const Model& model,
-                                         const std::vector<Triangle>& surface,
+ContactSetup build_rigid_surface_penalty(const Scene& scene, const ContactSpec& c,
+                                         const Model& model, const std::vector<Triangle>& surface,
                                          const std::string& surface_name) {
-  const ContactSpec& c = scene.contact;
   const int rigid = body_index(scene, model.mesh, c.where, "rigid", *c.rigid);
   if (!model.mesh.bodies[static_cast<size_t>(rigid)].rigid)
     fail(scene, c.where, "rigid",
          fmt::format("body '{}' is not rigid (give it kind = \"rigid\")", *c.rigid));
   RigidSurfacePenaltyParams p;
-  p.name = "contact";
+  p.name = c.name;
   p.penalty = c.penalty;
   p.damping = c.damping;
   std::unique_ptr<RigidSurfacePenalty> penalty;
@@ -362,18 +362,13 @@ ContactSetup build_rigid_surface_penalty(const Scene& scene, const Model& model,
       "point, damping {:.4g} of critical",
       *c.rigid, model.mesh.bodies[static_cast<size_t>(rigid)].boundary.size(), surface_name,
       surface.size(), p.penalty, p.damping);
-  setup.history = penalty.get();
+  setup.histories = {penalty.get()};
   setup.model = std::move(penalty);
   return setup;
 }
 
-}  // namespace
-
-ContactSetup build_contact(const Scene& scene, const Model& model) {
-  const ContactSpec& c = scene.contact;
-  ContactSetup setup;
-  if (c.kind == ContactKind::none) return setup;
-  if (c.kind == ContactKind::dcr) return build_dcr(scene, model);
+// model = "rigid_penalty": the deformable surface against the analytic sphere or a rigid body.
+ContactSetup build_rigid_penalty(const Scene& scene, const ContactSpec& c, const Model& model) {
   const ModelMesh& mesh = model.mesh;
   const int body = body_index(scene, mesh, c.where, "body", c.body);
   const std::string_view key = c.surface ? "surface" : "body";
@@ -391,7 +386,8 @@ ContactSetup build_contact(const Scene& scene, const Model& model) {
                      "deformable surface (use model = \"dcr\" between rigid and deformable bodies)",
                      c.body));
 
-  if (c.rigid) return build_rigid_surface_penalty(scene, model, it->second.triangles, name);
+  if (c.rigid) return build_rigid_surface_penalty(scene, c, model, it->second.triangles, name);
+  ContactSetup setup;
 
   RigidSpherePenaltyParams p;
   p.name = c.sphere.name;
@@ -414,9 +410,84 @@ ContactSetup build_contact(const Scene& scene, const Model& model) {
       "{:.4g} of critical",
       p.name, p.sphere.radius, p.sphere.mass, name, it->second.triangles.size(),
       penalty_description(*penalty), p.damping);
-  setup.history = penalty.get();
+  setup.histories = {penalty.get()};
   setup.model = std::move(penalty);
   return setup;
+}
+
+ContactSetup build_one_contact(const Scene& scene, const ContactSpec& c, const Model& model) {
+  return c.kind == ContactKind::dcr ? build_dcr(scene, c, model)
+                                    : build_rigid_penalty(scene, c, model);
+}
+
+// The bodies a DCR entry's surfaces lie on.
+std::vector<int> dcr_bodies(const ContactSpec& c, const ModelMesh& mesh) {
+  std::vector<int> bodies;
+  for (const std::string& given : c.surfaces) {
+    const std::string name = given.find('/') == std::string::npos ? given + "/boundary" : given;
+    const auto it = mesh.surfaces.find(name);
+    if (it != mesh.surfaces.end()) bodies.push_back(it->second.body);
+  }
+  return bodies;
+}
+
+// Two DCR entries must not share a body: their solves, one after the other, would each undo
+// the other's corrections on it. One entry listing all the surfaces is one solve over all of
+// their contacts (docs/scene-file.md, "Contact pairs").
+void check_dcr_entries_apart(const Scene& scene, const ModelMesh& mesh) {
+  std::vector<std::pair<int, const ContactSpec*>> seen;  // body, the entry that has it
+  for (const ContactSpec& c : scene.contacts) {
+    if (c.kind != ContactKind::dcr) continue;
+    for (int b : dcr_bodies(c, mesh))
+      for (const auto& [body, other] : seen)
+        if (body == b && other != &c)
+          fail(scene, c.where, "surfaces",
+               fmt::format("body '{}' is also in DCR pair '{}': two DCR pairs cannot share a "
+                           "body (list all of their surfaces in one DCR pair: one solve holds "
+                           "every contact among them)",
+                           mesh.bodies[static_cast<size_t>(b)].name, other->name));
+    for (int b : dcr_bodies(c, mesh)) seen.emplace_back(b, &c);
+  }
+}
+
+// Several entries: one ContactSet of their models, in order (engine/contact/contact_set.hpp).
+ContactSetup combined(std::vector<ContactSetup> parts) {
+  ContactSetup setup;
+  setup.model_name.clear();
+  std::vector<std::unique_ptr<ContactModel>> models;
+  std::vector<std::function<std::string()>> warnings;
+  for (ContactSetup& part : parts) {
+    setup.model_name += (models.empty() ? "" : " + ") + part.model_name;
+    setup.description += (models.empty() ? "" : "; ") + part.description;
+    setup.histories.insert(setup.histories.end(), part.histories.begin(), part.histories.end());
+    if (part.solve_warning) warnings.push_back(std::move(part.solve_warning));
+    models.push_back(std::move(part.model));
+  }
+  setup.model = std::make_unique<ContactSet>(std::move(models));
+  if (!warnings.empty())
+    setup.solve_warning = [warnings = std::move(warnings)] {
+      std::string all;
+      for (const auto& w : warnings) {
+        const std::string one = w();
+        if (!one.empty()) all += (all.empty() ? "" : "; ") + one;
+      }
+      return all;
+    };
+  return setup;
+}
+
+}  // namespace
+
+ContactSetup build_contact(const Scene& scene, const Model& model) {
+  if (scene.contacts.empty()) return {};
+  if (scene.contacts.size() == 1) return build_one_contact(scene, scene.contacts.front(), model);
+  check_dcr_entries_apart(scene, model.mesh);
+  std::vector<ContactSetup> parts;
+  for (const ContactSpec& c : scene.contacts) {
+    parts.push_back(build_one_contact(scene, c, model));
+    parts.back().description = c.name + ": " + parts.back().description;
+  }
+  return combined(std::move(parts));
 }
 
 TimeControl time_control(const SceneTime& time) {

@@ -26,12 +26,13 @@ OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh);
 
 TimeControl time_control(const SceneTime& time);
 
-// The contact model a scene's [contact] table asks for; no model for "none" (or no table).
+// The contact model a scene's [contact] table asks for, or the set of one model per entry of
+// [[contact.pairs]]; no model for "none" (or no table).
 struct ContactSetup {
-  std::unique_ptr<ContactModel> model;     // null: no contact
-  const HistorySource* history = nullptr;  // the model's history columns, if it has any
-  std::string model_name = "none";         // "none", "rigid_penalty"
-  std::string description;                 // one line for the run summary
+  std::unique_ptr<ContactModel> model;          // null: no contact
+  std::vector<const HistorySource*> histories;  // the models' history columns
+  std::string model_name = "none";  // "none", "dcr", "rigid_penalty"; a set joins with " + "
+  std::string description;          // one line for the run summary
   // Non-empty after a run when some contact solves stopped at their sweep cap without
   // converging (DCR): a warning for the run summary, with the counts.
   std::function<std::string()> solve_warning;

@@ -601,9 +601,20 @@ std::vector<std::string> surface_names(const Table& t, const std::string& key) {
   return names;
 }
 
-void parse_dcr(const Table& t, ContactSpec& c) {
-  t.allow_only(
-      {"model", "surfaces", "self_contact", "restitution", "friction", "force_axis", "sensors"});
+// The keys of each model's table; a pair of [[contact.pairs]] also has "name".
+const std::vector<std::string_view> kDcrKeys = {
+    "model", "surfaces", "self_contact", "restitution", "friction", "force_axis", "sensors"};
+const std::vector<std::string_view> kPenaltyKeys = {
+    "model",         "body",    "surface",    "penalty_mode", "penalty",
+    "penalty_scale", "damping", "force_axis", "sphere",       "rigid"};
+
+std::vector<std::string_view> with_name_key(std::vector<std::string_view> keys, bool pair) {
+  if (pair) keys.emplace_back("name");
+  return keys;
+}
+
+void parse_dcr(const Table& t, ContactSpec& c, bool pair) {
+  t.allow_only(with_name_key(kDcrKeys, pair));
   c.kind = ContactKind::dcr;
   if (!t.node("surfaces")) t.fail("surfaces", "required key is missing");
   c.surfaces = surface_names(t, "surfaces");
@@ -638,50 +649,84 @@ void parse_penalty(const Table& t, ContactSpec& c) {
   c.penalty_scale = positive(t, "penalty_scale", t.get_or("penalty_scale", c.penalty_scale));
 }
 
+// model = "rigid_penalty" (or "penalty"): a deformable surface against the analytic sphere or a
+// meshed rigid body.
+void parse_rigid_penalty(const Table& t, ContactSpec& c, const Scene& scene, bool pair) {
+  t.allow_only(with_name_key(kPenaltyKeys, pair));
+  c.kind = ContactKind::rigid_penalty;
+  c.body = t.need<std::string>("body");
+  if (t.has("surface")) c.surface = t.need<std::string>("surface");
+  parse_penalty(t, c);
+  c.damping = t.get_or("damping", c.damping);
+  if (!kDampingRange.contains(c.damping)) t.fail("damping", kDampingRange.problem(c.damping));
+  c.where = t.ref();
+  // Against a meshed rigid body (docs/rigid-bodies.md, "Penalty") instead of the analytic sphere.
+  if (one_of(t, {"sphere", "rigid"}) == "rigid") {
+    c.rigid = t.need<std::string>("rigid");
+    if (c.penalty_mode == PenaltyMode::element)
+      t.fail("penalty_mode",
+             "the element mode applies to the analytic sphere only; use "
+             "\"per_point\" with rigid");
+    if (t.has("force_axis"))
+      t.fail("force_axis",
+             "applies to the analytic sphere only (a rigid body's history has its "
+             "contact force)");
+    return;
+  }
+  if (t.has("force_axis")) c.force_axis = non_zero(t, "force_axis", t.need<Vec3>("force_axis"));
+  const Table sphere = t.need_table("sphere");
+  c.sphere = parse_sphere(sphere, scene);
+  c.sphere_where = sphere.ref();
+}
+
+const std::vector<std::string_view> kContactModelNames = {"none", "dcr", "rigid_penalty",
+                                                          "penalty"};
+
+// One contact table: [contact] (pair = false) or one entry of [[contact.pairs]]. Empty for
+// model = "none" (only in [contact]).
+std::optional<ContactSpec> parse_contact_table(const Table& t, const Scene& scene, bool pair) {
+  const std::string model = t.need<std::string>("model");
+  ContactSpec c;
+  if (model == "none" && !pair) {
+    t.allow_only({"model"});
+    return std::nullopt;
+  }
+  if (pair && t.has("name")) c.name = checked_name(t, "name");
+  if (model == "dcr")
+    parse_dcr(t, c, pair);
+  else if (model == "rigid_penalty" || model == "penalty")
+    parse_rigid_penalty(t, c, scene, pair);
+  else
+    t.fail("model",
+           unknown_value_problem(model, std::span(kContactModelNames).subspan(pair ? 1 : 0)));
+  return c;
+}
+
+// [[contact.pairs]]: one contact model per entry, acting in the order given (docs/scene-file.md,
+// "Contact pairs"). Each entry's history columns start with its name (default "pair<k>").
+void parse_contact_pairs(const Table& contact, Scene& scene) {
+  contact.allow_only({"pairs"});
+  const std::vector<Table> tables = contact.tables("pairs");
+  if (tables.empty()) contact.fail("pairs", "needs at least one [[contact.pairs]] table");
+  for (size_t k = 0; k < tables.size(); ++k) {
+    const Table& t = tables[k];
+    ContactSpec c = *parse_contact_table(t, scene, true);
+    if (!t.has("name")) c.name = fmt::format("pair{}", k + 1);
+    check_column_prefix(t, t.has("name") ? "name" : "", c.name, scene);
+    for (const ContactSpec& other : scene.contacts)
+      if (other.name == c.name)
+        t.fail(t.has("name") ? "name" : "",
+               fmt::format("pair name '{}' is used twice (it starts the pair's history columns)",
+                           c.name));
+    scene.contacts.push_back(std::move(c));
+  }
+}
+
 void parse_contact(const Table& root, Scene& scene) {
   const auto t = root.table("contact");
   if (!t) return;
-  const std::string model = t->need<std::string>("model");
-  if (model == "none") {
-    t->allow_only({"model"});
-    return;
-  }
-  if (model == "dcr") {
-    parse_dcr(*t, scene.contact);
-    return;
-  }
-  if (model != "rigid_penalty")
-    t->fail("model", fmt::format("must be one of none, rigid_penalty, dcr (got '{}')", model));
-  t->allow_only({"model", "body", "surface", "penalty_mode", "penalty", "penalty_scale", "damping",
-                 "force_axis", "sphere", "rigid"});
-  ContactSpec& c = scene.contact;
-  c.kind = ContactKind::rigid_penalty;
-  c.body = t->need<std::string>("body");
-  if (t->has("surface")) c.surface = t->need<std::string>("surface");
-  parse_penalty(*t, c);
-  // Against a meshed rigid body (docs/rigid-bodies.md, "Penalty") instead of the analytic sphere.
-  if (one_of(*t, {"sphere", "rigid"}) == "rigid") {
-    c.rigid = t->need<std::string>("rigid");
-    if (c.penalty_mode == PenaltyMode::element)
-      t->fail("penalty_mode",
-              "the element mode applies to the analytic sphere only; use "
-              "\"per_point\" with rigid");
-    if (t->has("force_axis"))
-      t->fail("force_axis",
-              "applies to the analytic sphere only (a rigid body's history has its "
-              "contact force)");
-    c.damping = t->get_or("damping", c.damping);
-    if (!kDampingRange.contains(c.damping)) t->fail("damping", kDampingRange.problem(c.damping));
-    c.where = t->ref();
-    return;
-  }
-  c.damping = t->get_or("damping", c.damping);
-  if (!kDampingRange.contains(c.damping)) t->fail("damping", kDampingRange.problem(c.damping));
-  if (t->has("force_axis")) c.force_axis = non_zero(*t, "force_axis", t->need<Vec3>("force_axis"));
-  const Table sphere = t->need_table("sphere");
-  c.sphere = parse_sphere(sphere, scene);
-  c.where = t->ref();
-  c.sphere_where = sphere.ref();
+  if (t->has("pairs")) return parse_contact_pairs(*t, scene);
+  if (auto c = parse_contact_table(*t, scene, false)) scene.contacts.push_back(std::move(*c));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -52,9 +52,9 @@ struct SteelErrors {
 SteelErrors run_steel(const std::string& mesh, double speed = 5.0) {
   test::TempDir dir;
   const std::string scene =
-      std::string(CCM_SOURCE_DIR) + "/scenes/validation/hertz_steel_" + mesh + ".toml";
+      fmt::format("{}/scenes/validation/hertz_steel_{}.toml", CCM_SOURCE_DIR, mesh);
   const test::CommandOutput run =
-      test::run_ccm("run '" + scene + "' --out '" + (dir.path / "out").string() + "'", dir);
+      test::run_ccm(fmt::format("run '{}' --out '{}'", scene, (dir.path / "out").string()), dir);
   REQUIRE(run.status == 0);
   const Columns h = read_history(dir.path / "out" / "history.csv");
   test::HertzCase c;

@@ -843,8 +843,9 @@ void DcrContact::end_step(const State& /*state*/, double dt) {
 }
 
 std::vector<std::string> DcrContact::history_columns() const {
-  std::vector<std::string> c = {"contact.active", "contact.normal_impulse", "contact.work",
-                                "contact.residual_penetration"};
+  const std::string& p = settings_.history_prefix;
+  std::vector<std::string> c = {p + ".active", p + ".normal_impulse", p + ".work",
+                                p + ".residual_penetration"};
   for (std::string& name : output_.columns()) c.push_back(std::move(name));
   return c;
 }

@@ -57,6 +57,7 @@ struct DcrSettings {
   double step_fraction = 0.5;   // dt limit: a pair's approach per step <= gap + this x its edge
   double proximity = 0.1;       // persistent contacts: gap <= this x min edge
   ContactOutputRequest output;  // pair forces and sensor pressures, when asked
+  std::string history_prefix = "contact";  // of the history columns: "<prefix>.active", ...
   // Threads of the detection (swept boxes, broad phase, CCD, the bodies' reach): the result is
   // the same for any count (thread_chunks.hpp). The solves run on one thread.
   ThreadUse threads;

@@ -581,9 +581,8 @@ using test::scene_error_of;
 
 TEST_CASE("scene [contact]: rigid_penalty parses, builds and records", "[contact][scene]") {
   const Scene none = parse_scene(kScene, "s.toml");
-  CHECK(none.contact.kind == ContactKind::none);
-  CHECK(parse_scene(kScene + "[contact]\nmodel = \"none\"\n", "s.toml").contact.kind ==
-        ContactKind::none);
+  CHECK(none.contacts.empty());
+  CHECK(parse_scene(kScene + "[contact]\nmodel = \"none\"\n", "s.toml").contacts.empty());
 
   const std::string text = kScene + R"([contact]
 model = "rigid_penalty"
@@ -597,7 +596,7 @@ center = [0.005, 0.005, 0.031]
 velocity = [0.0, 0.0, -1.0]
 )";
   const Scene scene = parse_scene(text, "s.toml");
-  const ContactSpec& c = scene.contact;
+  const ContactSpec& c = scene.contacts.at(0);
   REQUIRE(c.kind == ContactKind::rigid_penalty);
   CHECK(c.body == "cube");
   CHECK(!c.surface);
@@ -609,10 +608,10 @@ velocity = [0.0, 0.0, -1.0]
   const Model model = build_model(scene);
   ContactSetup setup = build_contact(scene, model);
   REQUIRE(setup.model);
-  REQUIRE(setup.history);
+  REQUIRE(setup.histories.size() == 1);
   CHECK(setup.model_name == "rigid_penalty");
   CHECK_THAT(setup.description, Contains("'ball'") && Contains("cube/boundary"));
-  const std::vector<std::string> columns = setup.history->history_columns();
+  const std::vector<std::string> columns = setup.histories[0]->history_columns();
   CHECK(columns.front() == "ball.sphere_x");
   CHECK(columns.back() == "ball.penetration_max");
   CHECK(std::find(columns.begin(), columns.end(), "ball.contact_force_axis") != columns.end());
@@ -627,9 +626,9 @@ surface = "boundary"
 sphere = { radius = 0.01, mass = 0.1, center = [0.0, 0.0, 1.0] }
 )",
                                      "s.toml");
-  CHECK(defaults.contact.penalty == 1e6);
-  CHECK(defaults.contact.sphere.name == "sphere");
-  CHECK(defaults.contact.sphere.velocity == Vec3::Zero());
+  CHECK(defaults.contacts.at(0).penalty == 1e6);
+  CHECK(defaults.contacts.at(0).sphere.name == "sphere");
+  CHECK(defaults.contacts.at(0).sphere.velocity == Vec3::Zero());
   ContactSetup d = build_contact(defaults, build_model(defaults));
   const auto& rp = dynamic_cast<const RigidSpherePenalty&>(*d.model);
   CHECK(rp.force_axis() == Vec3(0.0, -1.0, 0.0));
@@ -643,7 +642,7 @@ TEST_CASE("scene [contact]: errors name the file, the line and the key", "[conta
   CHECK(scene_error_of(kScene + "[contact]\nmodel = \"dcr\"\n") ==
         "s.toml:13: contact.surfaces: required key is missing");
   CHECK_THAT(scene_error_of(kScene + "[contact]\nmodel = \"rigid\"\n"),
-             Contains("s.toml:14: contact.model: must be one of none, rigid_penalty, dcr"));
+             Contains("s.toml:14: contact.model: must be one of \"none\", \"dcr\", \"rigid_penalty\""));
   CHECK(scene_error_of(head + "penalti = 1e6\n" + sphere) ==
         "s.toml:16: contact.penalti: unknown key 'penalti' (did you mean 'penalty'?)");
   CHECK(
@@ -680,7 +679,7 @@ TEST_CASE("scene [contact]: the sphere_on_plate example parses and builds", "[co
   const Scene scene =
       parse_scene_file(std::string(CCM_SOURCE_DIR) + "/scenes/examples/sphere_on_plate.toml");
   CHECK(scene.warnings.empty());
-  REQUIRE(scene.contact.kind == ContactKind::rigid_penalty);
+  REQUIRE(scene.contacts.at(0).kind == ContactKind::rigid_penalty);
   const Model model = build_model(scene);
   const ContactSetup setup = build_contact(scene, model);
   REQUIRE(setup.model);

@@ -72,8 +72,8 @@ TEST_CASE("ccm scene of a point: meshed sphere of D_I = RLS L_A, E_I = ER E_A, v
   CHECK(c.y() == 0.5);
   const double gap = c.z() - 0.25 - 0.25;
   CHECK(relative_error(gap / -v.z(), 0.1) < 1e-12);
-  CHECK(s.contact.kind == ContactKind::dcr);
-  CHECK(s.contact.surfaces == std::vector<std::string>{"impactor", "artifact"});
+  CHECK(s.contacts.at(0).kind == ContactKind::dcr);
+  CHECK(s.contacts.at(0).surfaces == std::vector<std::string>{"impactor", "artifact"});
   CHECK(s.time.end == 0.15);
   CHECK(s.time.output_interval == 1e-3);
   REQUIRE(s.fixed.size() == 1);  // support "base": the bottom face
@@ -95,10 +95,10 @@ TEST_CASE("rigid scene of a point: the same artifact, an analytic sphere with th
   CHECK(a_rigid.material.E == a_ccm.material.E);
   CHECK(a_rigid.geometry.primitive.size == a_ccm.geometry.primitive.size);
   CHECK(a_rigid.geometry.primitive.mesh_size == a_ccm.geometry.primitive.mesh_size);
-  REQUIRE(rigid.contact.kind == ContactKind::rigid_penalty);
-  CHECK(rigid.contact.body == "artifact");
-  CHECK(rigid.contact.penalty == 1e6);
-  const RigidSphereSpec& sphere = rigid.contact.sphere;
+  REQUIRE(rigid.contacts.at(0).kind == ContactKind::rigid_penalty);
+  CHECK(rigid.contacts.at(0).body == "artifact");
+  CHECK(rigid.contacts.at(0).penalty == 1e6);
+  const RigidSphereSpec& sphere = rigid.contacts.at(0).sphere;
   const BodySpec& impactor = body_named(ccm_scene, "impactor");
   CHECK(sphere.radius == 0.75);  // D_I = 1.5 x 1 m
   CHECK(sphere.center == impactor.placement.translation);
@@ -122,7 +122,7 @@ TEST_CASE("other axes and support reach the scene", "[grid]") {
   CHECK(body_named(s, "impactor").material.nu == 0.3);
   CHECK(body_named(s, "artifact").geometry.primitive.mesh_size == 0.05);
   CHECK(body_named(s, "impactor").geometry.primitive.mesh_size == Approx(0.1).epsilon(kExact));
-  CHECK(s.contact.restitution == 0.25);
+  CHECK(s.contacts.at(0).restitution == 0.25);
   REQUIRE(s.fixed.size() == 2);  // support "edges": x = 0 and x = L_A
   CHECK(std::get<PlaneSpec>(s.fixed[1].selection).point.x() == 1.0);
   CHECK(std::get<PlaneSpec>(s.fixed[1].selection).normal == Vec3(1, 0, 0));
@@ -183,7 +183,7 @@ TEST_CASE("contact zones, the sphere's mass and the penalty's damping reach the 
   REQUIRE(ball.mass);
   CHECK(relative_error(*ball.mass, 1000.0 * std::numbers::pi * 1.5 * 1.5 * 1.5 / 6.0) < 1e-15);
   const Scene rigid = point_scene(g, p, ImpactModel::rigid);
-  CHECK(rigid.contact.damping == 1.0);
+  CHECK(rigid.contacts.at(0).damping == 1.0);
   REQUIRE(body_named(rigid, "artifact").geometry.primitive.refinement);
   // A mesh scale refines the zones too; a zone never comes out coarser than its body.
   p.other_axes = {{"mesh_scale", 0.5}};
@@ -219,8 +219,8 @@ TEST_CASE("the rigid model's penalty mode: [contact] keys and the penalty_scale 
     CHECK(g.contact.penalty_mode == PenaltyMode::element);
     CHECK(g.contact.penalty_scale == 0.2);
     const Scene rigid = point_scene(g, p, ImpactModel::rigid);
-    CHECK(rigid.contact.penalty_mode == PenaltyMode::element);
-    CHECK(rigid.contact.penalty_scale == 0.2);
+    CHECK(rigid.contacts.at(0).penalty_mode == PenaltyMode::element);
+    CHECK(rigid.contacts.at(0).penalty_scale == 0.2);
     CHECK_THAT(point_scene_text(g, p, ImpactModel::rigid),
                Catch::Contains("penalty_mode = \"element\"\npenalty_scale = 0.2\n"));
   }
@@ -241,11 +241,11 @@ TEST_CASE("the rigid model's penalty mode: [contact] keys and the penalty_scale 
     REQUIRE(points[0].other_axes.at("penalty_scale") == 0.0);
     REQUIRE(points[1].other_axes.at("penalty_scale") == 0.1);
     const Scene thesis = point_scene(g, points[0], ImpactModel::rigid);
-    CHECK(thesis.contact.penalty_mode == PenaltyMode::per_point);
-    CHECK(thesis.contact.penalty == 2e5);
+    CHECK(thesis.contacts.at(0).penalty_mode == PenaltyMode::per_point);
+    CHECK(thesis.contacts.at(0).penalty == 2e5);
     const Scene element = point_scene(g, points[1], ImpactModel::rigid);
-    CHECK(element.contact.penalty_mode == PenaltyMode::element);
-    CHECK(element.contact.penalty_scale == 0.1);
+    CHECK(element.contacts.at(0).penalty_mode == PenaltyMode::element);
+    CHECK(element.contacts.at(0).penalty_scale == 0.1);
   }
   SECTION("errors") {
     const std::string with_axis =
@@ -320,8 +320,8 @@ TEST_CASE("default-rigid-options.toml: the default grid with damping and penalty
   CHECK(points[4].other_axes ==
         std::map<std::string, double>{{"damping", 1.0}, {"penalty_scale", 0.1}});
   const Scene rigid = point_scene(g, points[4], ImpactModel::rigid);
-  CHECK(rigid.contact.penalty_mode == PenaltyMode::element);
-  CHECK(rigid.contact.damping == 1.0);
+  CHECK(rigid.contacts.at(0).penalty_mode == PenaltyMode::element);
+  CHECK(rigid.contacts.at(0).damping == 1.0);
   // The ccm scene of every one of the six is the default grid's, word for word; the rigid one at
   // penalty_scale 0 and damping 1 is the default grid's but for the title.
   const GridPoint first = expand_grid(base)[0];

@@ -64,7 +64,7 @@ restitution = 0.5
 friction = 0.3
 )",
                                   "s.toml");
-  const ContactSpec& c = scene.contact;
+  const ContactSpec& c = scene.contacts.at(0);
   REQUIRE(c.kind == ContactKind::dcr);
   CHECK(c.surfaces == std::vector<std::string>{"a", "b/boundary"});
   CHECK(c.self_contact);
@@ -74,18 +74,18 @@ friction = 0.3
   const Model model = build_model(scene);
   const ContactSetup setup = build_contact(scene, model);
   REQUIRE(setup.model);
-  REQUIRE(setup.history);
+  REQUIRE(setup.histories.size() == 1);
   CHECK(setup.model_name == "dcr");
   CHECK_THAT(setup.description, Contains("a/boundary, b/boundary") && Contains("restitution 0.5"));
-  CHECK(!setup.history->history_columns().empty());
+  CHECK(!setup.histories[0]->history_columns().empty());
   CHECK(setup.model->ledger().failure.empty());
 
   // Defaults: no self contact, e = 0, mu = 0.
   const Scene d =
       parse_scene(kTwoCubes + "[contact]\nmodel = \"dcr\"\nsurfaces = [\"a\", \"b\"]\n", "s.toml");
-  CHECK(!d.contact.self_contact);
-  CHECK(d.contact.restitution == 0.0);
-  CHECK(d.contact.friction == 0.0);
+  CHECK(!d.contacts.at(0).self_contact);
+  CHECK(d.contacts.at(0).restitution == 0.0);
+  CHECK(d.contacts.at(0).friction == 0.0);
 }
 
 TEST_CASE("scene [contact]: dcr errors name the file, the line and the key",
@@ -127,11 +127,11 @@ force_axis = [0.0, 0.0, -1.0]
 sensors = ["b/boundary"]
 )",
                                   "s.toml");
-  REQUIRE(scene.contact.force_axis);
-  CHECK(scene.contact.sensors == std::vector<std::string>{"b/boundary"});
+  REQUIRE(scene.contacts.at(0).force_axis);
+  CHECK(scene.contacts.at(0).sensors == std::vector<std::string>{"b/boundary"});
   const Model model = build_model(scene);
   const ContactSetup setup = build_contact(scene, model);
-  const std::vector<std::string> cols = setup.history->history_columns();
+  const std::vector<std::string> cols = setup.histories[0]->history_columns();
   for (const char* c :
        {"contact.a.b.force", "contact.a.b.force_axis", "contact.b/boundary.pressure"})
     CHECK(std::find(cols.begin(), cols.end(), c) != cols.end());
@@ -142,7 +142,7 @@ TEST_CASE("scene [contact]: the ball_on_plate_dcr example parses and builds",
   const Scene scene =
       parse_scene_file(std::string(CCM_SOURCE_DIR) + "/scenes/examples/ball_on_plate_dcr.toml");
   CHECK(scene.warnings.empty());
-  REQUIRE(scene.contact.kind == ContactKind::dcr);
+  REQUIRE(scene.contacts.at(0).kind == ContactKind::dcr);
   const Model model = build_model(scene);
   const ContactSetup setup = build_contact(scene, model);
   REQUIRE(setup.model);

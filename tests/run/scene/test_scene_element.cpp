@@ -58,7 +58,7 @@ TEST_CASE("scene: dcr contact takes a nodal_pressure body", "[nodal_pressure][sc
   const std::string text = cube_with("element = \"nodal_pressure\"") +
                            "[contact]\nmodel = \"dcr\"\nsurfaces = [\"cube\"]\n";
   const Scene scene = parse_scene(text, "s.toml");
-  CHECK(scene.contact.kind == ContactKind::dcr);
+  CHECK(scene.contacts.at(0).kind == ContactKind::dcr);
   CHECK(scene.bodies[0].element == ElementKind::nodal_pressure);
 }
 

@@ -413,16 +413,16 @@ TEST_CASE("[contact] rigid_penalty: penalty_mode and penalty_scale", "[scene][el
       "[contact.sphere]\nradius = 0.01\nmass = 0.1\ncenter = [0.005, 0.005, 0.02]\n";
   SECTION("defaults: the thesis's K_P per point; the element mode's s is 0.1") {
     const Scene s = parse_scene(head + sphere, "s.toml");
-    CHECK(s.contact.penalty_mode == PenaltyMode::per_point);
-    CHECK(s.contact.penalty == 1e6);
+    CHECK(s.contacts.at(0).penalty_mode == PenaltyMode::per_point);
+    CHECK(s.contacts.at(0).penalty == 1e6);
     const Scene e = parse_scene(head + "penalty_mode = \"element\"\n" + sphere, "s.toml");
-    CHECK(e.contact.penalty_mode == PenaltyMode::element);
-    CHECK(e.contact.penalty_scale == 0.1);
+    CHECK(e.contacts.at(0).penalty_mode == PenaltyMode::element);
+    CHECK(e.contacts.at(0).penalty_scale == 0.1);
   }
   SECTION("the element mode builds, with k = s K A^2 / V per triangle in its description") {
     const Scene s =
         parse_scene(head + "penalty_mode = \"element\"\npenalty_scale = 0.5\n" + sphere, "s.toml");
-    CHECK(s.contact.penalty_scale == 0.5);
+    CHECK(s.contacts.at(0).penalty_scale == 0.5);
     const Model model = build_model(s);
     const ContactSetup setup = build_contact(s, model);
     const auto& rp = dynamic_cast<const RigidSpherePenalty&>(*setup.model);

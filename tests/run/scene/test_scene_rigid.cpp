@@ -132,7 +132,7 @@ TEST_CASE(
   const std::string contact =
       "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\nrigid = \"slab\"\npenalty = 1e4\n";
   const Scene scene = parse_scene(base + contact, "s.toml");
-  REQUIRE(scene.contact.rigid);
+  REQUIRE(scene.contacts.at(0).rigid);
   const Model model = build_model(scene);
   ContactSetup setup = build_contact(scene, model);
   REQUIRE(setup.model);
