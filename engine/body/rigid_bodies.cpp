@@ -14,6 +14,8 @@ std::string_view to_string(RigidMotion m) {
       return "fixed";
     case RigidMotion::prescribed:
       return "prescribed";
+    case RigidMotion::pinned:
+      return "pinned";
   }
   return "?";
 }
@@ -39,6 +41,11 @@ RigidBodies::RigidBodies(const ModelMesh& mesh, const std::vector<RigidBodyModel
       b.set_velocity(at(m.prescribed_velocity, 0.0));
       b.set_angular_velocity(at(m.prescribed_angular_velocity, 0.0));
     }
+    pins_.emplace_back();
+    if (m.motion == RigidMotion::pinned) {
+      pins_.back().emplace(b, m.pin, m.pin.axis.normalized().dot(m.angular_velocity));
+      pins_.back()->place(b);
+    }
   }
   force_.assign(bodies_.size(), Vec3::Zero());
   torque_.assign(bodies_.size(), Vec3::Zero());
@@ -59,7 +66,7 @@ void RigidBodies::publish(int k, State& s) const {
   r.kinetic_energy = b.kinetic_energy();
   r.contact_impulse = contact_impulse_[static_cast<size_t>(k)];
   r.contact_angular_impulse = contact_angular_impulse_[static_cast<size_t>(k)];
-  if (model(k).kinematic()) return;
+  if (model(k).motion != RigidMotion::free) return;  // a contact holds the others as anchored
   const Mat3 R = b.orientation().toRotationMatrix();
   r.inverse_mass = 1.0 / b.mass();
   r.inverse_inertia = R * b.principal_moments().cwiseInverse().asDiagonal() * R.transpose();
@@ -114,7 +121,11 @@ void RigidBodies::predict(State& s, double dt, double t_n) {
     RigidBody& b = bodies_[static_cast<size_t>(k)];
     const RigidBodyModel& m = *models_[static_cast<size_t>(k)];
     if (m.motion == RigidMotion::fixed) continue;
-    if (m.motion == RigidMotion::free) {
+    if (m.motion == RigidMotion::pinned) {
+      pins_[static_cast<size_t>(k)]->kick(b, force_[static_cast<size_t>(k)],
+                                          torque_[static_cast<size_t>(k)], 0.5 * dt);
+      pins_[static_cast<size_t>(k)]->drift(b, dt);
+    } else if (m.motion == RigidMotion::free) {
       b.kick(force_[static_cast<size_t>(k)], torque_[static_cast<size_t>(k)], 0.5 * dt);
       if (!b.drift(dt) && failure_.empty())
         failure_ = fmt::format(
@@ -155,6 +166,14 @@ void RigidBodies::finish(State& s, double dt) {
       b.kick(J.impulse, angular, 1.0);
       contact_work_ += b.kinetic_energy() - before;
       b.kick(force_[static_cast<size_t>(k)], torque_[static_cast<size_t>(k)], 0.5 * dt);
+    } else if (m.motion == RigidMotion::pinned) {
+      PinnedMotion& pin = *pins_[static_cast<size_t>(k)];
+      const double before = b.kinetic_energy();
+      pin.take_impulse(J.impulse, J.moment);
+      pin.place(b);
+      contact_work_ += b.kinetic_energy() - before;
+      pin.kick(b, force_[static_cast<size_t>(k)], torque_[static_cast<size_t>(k)], 0.5 * dt);
+      pin.place(b);
     } else if (m.motion == RigidMotion::prescribed) {
       b.set_velocity(at(m.prescribed_velocity, s.t));
       b.set_angular_velocity(at(m.prescribed_angular_velocity, s.t));
@@ -169,6 +188,13 @@ double RigidBodies::kinetic_energy() const {
   for (int k = 0; k < size(); ++k)
     if (!model(k).kinematic()) e += body(k).kinetic_energy();
   return e;
+}
+
+double RigidBodies::joint_work() const {
+  double w = 0.0;
+  for (const std::optional<PinnedMotion>& pin : pins_)
+    if (pin) w += pin->friction_work();
+  return w;
 }
 
 double RigidBodies::gravity_work(const Vec3& gravity) const {

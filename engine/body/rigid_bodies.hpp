@@ -8,11 +8,15 @@
 //   finish   (after the nodes' corrector)  the contact's impulses J on the body (a constraint
 //            model holds its nodes within the step, engine/contact/contact_model.hpp), then
 //            kick h/2 with F_{n+1}; set the nodes' velocities
+// A pinned body turns about its pin by the same splitting on its one angle (pinned_motion.hpp).
 // A fixed body stays where it is; a prescribed one follows its velocity histories. Both are
 // kinematic: a contact model treats their nodes as infinitely heavy, and what it gives them is
-// their driver's. Every rigid body's state is written into State::rigid.
+// their driver's. A DCR contact holds a pinned body's nodes as anchored too; the body then takes
+// the impulses at finish(), as a free one does. Every rigid body's state is written into
+// State::rigid.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,19 +46,26 @@ class RigidBodies {
   // accelerations are set to zero (their motion is the body's).
   void gather(State& s, const Vec3& gravity);
   // This step's impulses of a constraint-type contact on the held bodies (one entry per mesh
-  // body): taken by the free bodies at finish().
+  // body): taken by the free and pinned bodies at finish().
   void take_impulses(const std::vector<HeldImpulse>& per_body);
   void predict(State& s, double dt, double t_n);
   void finish(State& s, double dt);
 
-  // Kinetic energy of the free bodies [J]; work of gravity on them, m g . (c - c_0) [J]. A
-  // kinematic body's energy is its driver's business and enters neither.
+  // Kinetic energy of the free and pinned bodies [J]; work of gravity on them, m g . (c - c_0) [J].
+  // A kinematic body's energy is its driver's business and enters neither.
   double kinetic_energy() const;
   double gravity_work(const Vec3& gravity) const;
-  // Work of a constraint-type contact's impulses on the free bodies so far [J]: the kinetic
-  // energy each impulse changed. (The only force-type model, the analytic sphere, acts on
+  // Work of a constraint-type contact's impulses on the free and pinned bodies so far [J]: the
+  // kinetic energy each impulse changed. (The only force-type model, the analytic sphere, acts on
   // deformable surfaces alone.)
   double contact_work() const { return contact_work_; }
+  // Work of the pins' friction on the pinned bodies so far [J], <= 0.
+  double joint_work() const;
+  // The pinned motion of body k, or nullptr when it is not pinned.
+  const PinnedMotion* pin(int k) const {
+    const auto& p = pins_[static_cast<size_t>(k)];
+    return p ? &*p : nullptr;
+  }
   // Non-empty once a drift has failed (the midpoint iteration did not converge).
   const std::string& failure() const { return failure_; }
 
@@ -65,7 +76,8 @@ class RigidBodies {
   const ModelMesh& mesh_;
   std::vector<const RigidBodyModel*> models_;
   std::vector<RigidBody> bodies_;
-  std::vector<Vec3> force_, torque_;  // resultant about c, at the last gather
+  std::vector<std::optional<PinnedMotion>> pins_;  // per body: set for a pinned one
+  std::vector<Vec3> force_, torque_;               // resultant about c, at the last gather
   std::vector<HeldImpulse> impulse_;  // this step's contact impulses, moments about the origin
   std::vector<Vec3> contact_impulse_, contact_angular_impulse_;  // since t = 0
   double contact_work_ = 0.0;

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "engine/body/mass_properties.hpp"
+#include "engine/body/pinned_motion.hpp"
 #include "engine/core/time_table.hpp"
 #include "engine/core/types.hpp"
 
@@ -18,6 +19,7 @@ enum class RigidMotion {
   free,        // six degrees of freedom under its loads, gravity and contact
   fixed,       // never moves
   prescribed,  // its centre of mass and rotation follow given velocity histories
+  pinned,      // turns about a fixed pin axis under its loads, gravity and contact
 };
 std::string_view to_string(RigidMotion m);
 
@@ -26,7 +28,9 @@ struct RigidBodyModel {
   RigidMotion motion = RigidMotion::free;
   MassProperties mass;                   // about the centre of mass, in the reference configuration
   Vec3 velocity = Vec3::Zero();          // free: initial velocity of the centre of mass [m/s]
-  Vec3 angular_velocity = Vec3::Zero();  // free: initial angular velocity, world axes [rad/s]
+  Vec3 angular_velocity = Vec3::Zero();  // free, pinned: initial angular velocity, world axes
+                                         // [rad/s] (pinned: along the pin's axis)
+  RigidPin pin;                          // pinned: the axis and the pin's friction
   // prescribed: velocity of the centre of mass and angular velocity (world axes), each component
   // a piecewise-linear history [m/s], [rad/s].
   std::array<TimeTable, 3> prescribed_velocity{TimeTable({{0.0, 0.0}}), TimeTable({{0.0, 0.0}}),
@@ -34,7 +38,10 @@ struct RigidBodyModel {
   std::array<TimeTable, 3> prescribed_angular_velocity{
       TimeTable({{0.0, 0.0}}), TimeTable({{0.0, 0.0}}), TimeTable({{0.0, 0.0}})};
 
-  bool kinematic() const { return motion != RigidMotion::free; }
+  // Fixed or prescribed: moved by its driver, whatever acts on it.
+  bool kinematic() const {
+    return motion == RigidMotion::fixed || motion == RigidMotion::prescribed;
+  }
 };
 
 }  // namespace ccm

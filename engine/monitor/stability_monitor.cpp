@@ -71,6 +71,8 @@ std::optional<Instability> check_contact_energy(std::string_view model, double i
 
 std::optional<Instability> check_time_step(double dt, double dt_initial, double ratio, double t) {
   if (std::isfinite(dt) && dt >= ratio * dt_initial) return std::nullopt;
+  // No stepped element (rigid bodies alone): no stable step, nothing to collapse.
+  if (std::isinf(dt) && dt > 0.0 && std::isinf(dt_initial)) return std::nullopt;
   return Instability{
       t, fmt::format("stable time step collapsed to {:.3g} s (initial {:.3g} s)", dt, dt_initial),
       -1, -1};

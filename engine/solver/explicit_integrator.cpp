@@ -180,7 +180,10 @@ void CentralDifference::initialise() {
   apply_fixed_nodes();
   for (KinematicConstraint* c : opt_.constraints) c->initialise(s_);
   summary_.dt_initial = opt_.time.dt_safety * last_eval_.stable_dt;
-  last_dt_ = summary_.dt_initial;
+  // A model of rigid bodies alone has no stable step: its first step is max_dt (or, with none,
+  // one step to the end, for which the leapfrog measure takes no correction).
+  last_dt_ = std::min(summary_.dt_initial, opt_.time.max_dt);
+  if (!std::isfinite(last_dt_)) last_dt_ = 0.0;
   double kinetic = leapfrog_kinetic_energy(s_, last_dt_, threads_, owned_nodes());
   if (opt_.coupling) opt_.coupling->sum_over_domains(std::span<double>(&kinetic, 1));
   energy_.start(kinetic + rigid_.kinetic_energy(), total_internal_energy(), energy_floor());
@@ -408,7 +411,7 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   if (not_finite) return not_finite;
   if (replicated_contact) w_ext += opt_.contact->ledger().work;
   kinetic += rigid_.kinetic_energy();
-  w_ext += rigid_.contact_work();
+  w_ext += rigid_.contact_work() + rigid_.joint_work();
   const double err = energy_.update(kinetic, total_internal_energy(), w_ext);
   summary_.energy_balance_error = energy_.max_relative_error();
   if (auto bad = check_energy(err, opt_.monitor.energy_tolerance, s_.t)) return bad;

@@ -74,7 +74,8 @@ struct BodySpec {
   // kind = "rigid" (docs/rigid-bodies.md): the body moves as one; its material gives its density.
   bool rigid = false;
   RigidMotion motion = RigidMotion::free;
-  Vec3 initial_angular_velocity = Vec3::Zero();  // [rad/s], world axes (free)
+  Vec3 initial_angular_velocity = Vec3::Zero();  // [rad/s], world axes (free, pinned)
+  RigidPin pin;                                  // motion = "pinned": [bodies.pin]
   // motion = "prescribed": [t, x, y, z] points of the centre-of-mass velocity [m/s] and of the
   // angular velocity [rad/s]; a missing one is zero.
   std::vector<std::array<double, 4>> prescribed_velocity, prescribed_angular_velocity;

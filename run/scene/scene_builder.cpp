@@ -209,6 +209,7 @@ std::vector<RigidBodyModel> make_rigid_bodies(const Scene& scene, ModelMesh& mes
     RigidBodyModel& r = out.back();
     r.velocity = spec.initial_velocity;
     r.angular_velocity = spec.initial_angular_velocity;
+    r.pin = spec.pin;
     r.prescribed_velocity = vector_history(spec.prescribed_velocity);
     r.prescribed_angular_velocity = vector_history(spec.prescribed_angular_velocity);
   }

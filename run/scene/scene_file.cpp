@@ -335,6 +335,31 @@ std::vector<std::array<double, 4>> parse_vector_history(const Table& t, std::str
   return points;
 }
 
+// motion = "pinned": [bodies.pin] (docs/rigid-bodies.md, "Pinned"); an initial angular velocity
+// must turn the body about the pin.
+void parse_pin(const Table& body, BodySpec& b) {
+  if (!body.has("pin")) body.fail("motion", "pinned needs a [bodies.pin] table (point, axis)");
+  const Table t = body.need_table("pin");
+  t.allow_only({"point", "axis", "mu_s", "mu_k", "radius"});
+  RigidPin& pin = b.pin;
+  pin.point = t.need<Vec3>("point");
+  pin.axis = non_zero(t, "axis", t.need<Vec3>("axis"));
+  pin.mu_s = t.get_or("mu_s", pin.mu_s);
+  if (!kFrictionRange.contains(pin.mu_s)) t.fail("mu_s", kFrictionRange.problem(pin.mu_s));
+  pin.mu_k = t.get_or("mu_k", pin.mu_s);
+  if (!kFrictionRange.contains(pin.mu_k)) t.fail("mu_k", kFrictionRange.problem(pin.mu_k));
+  if (pin.mu_k > pin.mu_s) t.fail("mu_k", fmt::format("must be at most mu_s ({})", pin.mu_s));
+  pin.radius = t.get_or("radius", pin.radius);
+  if (!(pin.radius >= 0.0)) t.fail("radius", fmt::format("must be >= 0 (got {})", pin.radius));
+  if ((pin.mu_s > 0.0) != (pin.radius > 0.0))
+    t.fail(pin.radius > 0.0 ? "radius" : "mu_s",
+           "the pin's friction needs both a coefficient and a radius (its arm)");
+  const Vec3 w = b.initial_angular_velocity;
+  const Vec3 e = pin.axis.normalized();
+  if ((w - w.dot(e) * e).norm() > 1e-12 * w.norm())
+    body.fail("initial_angular_velocity", "must be along the pin's axis");
+}
+
 // kind = "rigid" and its keys (docs/rigid-bodies.md); the keys of a rigid body's motion are
 // refused on a deformable body, and the keys of one motion under another.
 void parse_rigid(const Table& t, BodySpec& b) {
@@ -344,26 +369,36 @@ void parse_rigid(const Table& t, BodySpec& b) {
            unknown_value_problem(kind, std::array<std::string_view, 2>{"deformable", "rigid"}));
   b.rigid = kind == "rigid";
   for (std::string_view key :
-       {"motion", "initial_angular_velocity", "velocity", "angular_velocity"})
+       {"motion", "initial_angular_velocity", "velocity", "angular_velocity", "pin"})
     if (!b.rigid && t.has(key)) t.fail(key, "applies only to kind = \"rigid\"");
   if (!b.rigid) return;
   const std::string motion = t.get_or<std::string>("motion", "free");
-  static constexpr std::array<std::string_view, 3> kMotions = {"free", "fixed", "prescribed"};
+  static constexpr std::array<std::string_view, 4> kMotions = {"free", "fixed", "prescribed",
+                                                               "pinned"};
   if (motion == "free")
     b.motion = RigidMotion::free;
   else if (motion == "fixed")
     b.motion = RigidMotion::fixed;
   else if (motion == "prescribed")
     b.motion = RigidMotion::prescribed;
+  else if (motion == "pinned")
+    b.motion = RigidMotion::pinned;
   else
     t.fail("motion", unknown_value_problem(motion, kMotions));
   const bool prescribed = b.motion == RigidMotion::prescribed;
+  const bool pinned = b.motion == RigidMotion::pinned;
   for (std::string_view key : {"velocity", "angular_velocity"})
     if (!prescribed && t.has(key)) t.fail(key, "applies only to motion = \"prescribed\"");
-  for (std::string_view key : {"initial_velocity", "initial_angular_velocity"})
-    if (b.motion != RigidMotion::free && t.has(key))
-      t.fail(key, fmt::format("applies only to motion = \"free\" (this body's is \"{}\")", motion));
+  if (!pinned && t.has("pin")) t.fail("pin", "applies only to motion = \"pinned\"");
+  if (b.motion != RigidMotion::free && t.has("initial_velocity"))
+    t.fail("initial_velocity",
+           fmt::format("applies only to motion = \"free\" (this body's is \"{}\")", motion));
+  if (!pinned && b.motion != RigidMotion::free && t.has("initial_angular_velocity"))
+    t.fail("initial_angular_velocity",
+           fmt::format("applies only to motion = \"free\" or \"pinned\" (this body's is \"{}\")",
+                       motion));
   b.initial_angular_velocity = t.get_or<Vec3>("initial_angular_velocity", Vec3::Zero());
+  if (pinned) return parse_pin(t, b);
   if (!prescribed) return;
   if (!t.has("velocity") && !t.has("angular_velocity"))
     t.fail("motion", "prescribed needs velocity = [[t, vx, vy, vz], ...] or angular_velocity");
@@ -374,7 +409,7 @@ void parse_rigid(const Table& t, BodySpec& b) {
 
 BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
   t.allow_only({"name", "kind", "motion", "initial_velocity", "initial_angular_velocity",
-                "velocity", "angular_velocity", "mass", "material", "element", "geometry",
+                "velocity", "angular_velocity", "pin", "mass", "material", "element", "geometry",
                 "placement"});
   BodySpec b;
   b.name = checked_name(t, "name");

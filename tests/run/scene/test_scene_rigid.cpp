@@ -164,3 +164,59 @@ TEST_CASE(
                                   "center = [0.0, 0.0, 0.1]\n"),
              Contains("give only one of: sphere, rigid"));
 }
+
+TEST_CASE("scene: a pinned rigid body reads its pin, turns about it, and refuses what does not fit",
+          "[rigid-body][scene]") {
+  // The cube (0..1 cm) on a pin along y through its edge at x = 0, z = 1 cm, under gravity.
+  const std::string pin =
+      "kind = \"rigid\"\nmotion = \"pinned\"\n[bodies.pin]\npoint = [0.0, 0.0, 0.01]\n"
+      "axis = [0.0, 1.0, 0.0]\n";
+  const std::string gravity = "[gravity]\nacceleration = [0.0, 0.0, -9.81]\n";
+  const Scene scene = parse_scene(rigid_cube(pin) + gravity, "s.toml");
+  CHECK(scene.bodies[0].motion == RigidMotion::pinned);
+  const Model model = build_model(scene);
+  REQUIRE(model.rigid_bodies.size() == 1);
+  CHECK(model.rigid_bodies[0].pin.point == Vec3(0.0, 0.0, 0.01));
+  CHECK(model.rigid_bodies[0].pin.mu_s == 0.0);
+  RunOptions opt;
+  opt.time.end_time = 0.02;
+  opt.time.max_dt = 1e-4;
+  const Vec3 p(0.0, 0.0, 0.01), c0(0.005, 0.005, 0.005);
+  double worst = 0.0;
+  Vec3 c = c0;
+  opt.on_sample = [&](const State& s) {
+    c = s.rigid.at(0).center;
+    // The centre keeps its distance to the axis and its place along it (round-off).
+    const Vec3 d = c - p, d0 = c0 - p;
+    worst = std::max({worst, std::abs(d.y() - d0.y()),
+                      std::abs(std::hypot(d.x(), d.z()) - std::hypot(d0.x(), d0.z()))});
+  };
+  const RunSummary run = run_explicit(model, opt);
+  REQUIRE(run.verdict == Verdict::completed);
+  CHECK(worst < 1e-15);
+  CHECK(c.x() < c0.x());  // it swings down, its centre toward the point under the pin
+
+  const std::string body = rigid_cube("kind = \"rigid\"\nmotion = \"pinned\"\n");
+  CHECK_THAT(rigid_scene_error_of(body),
+             Contains("s.toml:6: bodies[0].motion") && Contains("[bodies.pin]"));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\n[bodies.pin]\n"
+                                             "point = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
+             Contains("bodies[0].pin") && Contains("motion = \"pinned\""));
+  CHECK_THAT(
+      rigid_scene_error_of(rigid_cube(
+          "kind = \"rigid\"\nmotion = \"pinned\"\ninitial_angular_velocity = [1.0, 0.0, 0.0]\n"
+          "[bodies.pin]\npoint = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
+      Contains("initial_angular_velocity") && Contains("along the pin's axis"));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube(pin + "mu_s = 0.2\n")),
+             Contains("bodies[0].pin.mu_s") && Contains("both a coefficient and a radius"));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube(pin + "mu_s = 0.2\nmu_k = 0.3\nradius = 0.001\n")),
+             Contains("bodies[0].pin.mu_k") && Contains("at most mu_s"));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube(
+                 "kind = \"rigid\"\nmotion = \"pinned\"\n[bodies.pin]\npoint = [0.0, 0.0, 0.0]\n"
+                 "axis = [0.0, 0.0, 0.0]\n")),
+             Contains("bodies[0].pin.axis"));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube(
+                 "kind = \"rigid\"\nmotion = \"pinned\"\ninitial_velocity = [1.0, 0.0, 0.0]\n"
+                 "[bodies.pin]\npoint = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
+             Contains("initial_velocity") && Contains("motion = \"free\""));
+}
