@@ -24,7 +24,7 @@
 #include "engine/distributed/distributed_run.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
-#include "engine/solver/thread_count.hpp"
+#include "engine/threads/thread_count.hpp"
 #include "io/fields/field_recorder.hpp"
 #include "records/content_hash.hpp"
 #include "records/provenance/timestamp.hpp"

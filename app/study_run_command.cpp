@@ -24,7 +24,7 @@
 #include "app/study_tables.hpp"
 #include "db/store/provenance.hpp"
 #include "db/store/study_store.hpp"
-#include "engine/solver/thread_count.hpp"
+#include "engine/threads/thread_count.hpp"
 #include "records/content_hash.hpp"
 #include "run/parallel/rank_context.hpp"
 #include "run/runner/point_runner.hpp"

@@ -22,7 +22,7 @@
 
 #include "engine/body/rigid_body.hpp"
 #include "engine/body/rigid_body_model.hpp"
-#include "engine/contact/contact_model.hpp"
+#include "engine/core/held_impulse.hpp"
 #include "engine/core/state.hpp"
 #include "engine/mesh/model_mesh.hpp"
 

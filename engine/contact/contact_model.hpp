@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "engine/contact/replica_team.hpp"
+#include "engine/core/held_impulse.hpp"
 #include "engine/core/state.hpp"
 
 namespace ccm {
@@ -36,15 +37,6 @@ struct ContactStepBound {
   // The longest step for which the model's detection stays valid (e.g. no point can arrive
   // unseen, or no feature can pass another within the step).
   double kinematic_dt = std::numeric_limits<double>::infinity();
-};
-
-// What a constraint-type model's correction gave, in one step, to a body whose nodes it holds
-// without moving them (fixed nodes, rigid bodies): the sum of its impulses on the body's nodes
-// [N s] and of their moments about the origin [N m s]. A free rigid body takes them as its
-// reaction, so that the momentum the contact exchanges is kept exactly.
-struct HeldImpulse {
-  Vec3 impulse = Vec3::Zero();
-  Vec3 moment = Vec3::Zero();
 };
 
 // Which phases of a step a model acts in: penalty-type models add forces (add_forces), constraint

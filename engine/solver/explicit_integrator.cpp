@@ -12,7 +12,7 @@
 #include "engine/body/rigid_bodies.hpp"
 #include "engine/monitor/fixed_order_sum.hpp"
 #include "engine/solver/lumped_mass.hpp"
-#include "engine/solver/thread_count.hpp"
+#include "engine/threads/thread_count.hpp"
 
 namespace ccm {
 

@@ -137,7 +137,58 @@ TEST_CASE("layers: every CMake link line names only the targets its layer may us
   CHECK(violations.empty());
 }
 
+namespace {
+
+// The folders inside engine/, lowest first (docs/architecture.md, "Inside the engine"): a file of
+// one folder includes headers of its own folder or of folders below it, never above.
+const std::vector<std::string> kEngineLayers = {"core",    "threads", "material", "mesh",
+                                                "element", "monitor", "bc",       "observe",
+                                                "body",    "contact", "solver",   "distributed"};
+
+// The rank of an engine path's folder ("engine/contact/dcr/x.hpp": contact), or -1.
+int engine_layer(const std::string& path) {
+  if (path.rfind("engine/", 0) != 0) return -1;
+  const std::string rest = path.substr(7);
+  const std::string folder = rest.substr(0, rest.find('/'));
+  for (size_t k = 0; k < kEngineLayers.size(); ++k)
+    if (kEngineLayers[k] == folder) return static_cast<int>(k);
+  return -2;  // a folder the list does not know: a new one must be placed in it
+}
+
+}  // namespace
+
+TEST_CASE("layers: inside the engine, no folder includes a header of a folder above it",
+          "[architecture]") {
+  const std::regex include_line(R"re(^\s*#\s*include\s*"(engine/[^"]+)")re");
+  std::vector<std::string> violations;
+  int files = 0;
+  for (const std::string& rel : layered_sources()) {
+    const int from = engine_layer(rel);
+    if (from == -1) continue;
+    ++files;
+    if (from == -2) violations.push_back(rel + ": its folder is not in kEngineLayers");
+    std::ifstream in(source_root() / rel);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include_line)) continue;
+      const int to = engine_layer(m[1].str());
+      if (to > from)
+        violations.push_back(rel + ":" + std::to_string(n) + ": includes " + m[1].str() + " (" +
+                             kEngineLayers[static_cast<size_t>(to)] + " is above " +
+                             kEngineLayers[static_cast<size_t>(from)] + ")");
+    }
+  }
+  CHECK(files > 100);  // the walk found the engine
+  for (const std::string& v : violations) UNSCOPED_INFO(v);
+  CHECK(violations.empty());
+}
+
 TEST_CASE("layers: the checker sees a violation", "[architecture]") {
+  CHECK(engine_layer("engine/contact/dcr/dcr_contact.hpp") >
+        engine_layer("engine/body/rigid_body.hpp"));
+  CHECK(engine_layer("engine/solver/model.hpp") > engine_layer("engine/contact/contact_model.hpp"));
+  CHECK(engine_layer("engine/newfolder/x.hpp") == -2);
   // The rule itself, on the cases the tree must never contain.
   CHECK_FALSE(may_use("db", "engine"));
   CHECK_FALSE(may_use("reports", "run"));

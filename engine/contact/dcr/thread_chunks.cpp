@@ -2,7 +2,7 @@
 
 #include <exception>
 
-#include "engine/solver/thread_count.hpp"
+#include "engine/threads/thread_count.hpp"
 
 namespace ccm::dcr {
 

@@ -27,7 +27,7 @@ inline constexpr std::size_t kCacheLine = 64;
 
 // How many threads the detection loops may use, and from what loop size.
 struct ThreadUse {
-  // Threads; 0: default_threads() (engine/solver/thread_count.hpp), read at each step.
+  // Threads; 0: default_threads() (engine/threads/thread_count.hpp), read at each step.
   int threads = 0;
   // Loops of less work stay on one thread, counted in light items (a box, a few ns each); a
   // heavy item (a CCD test, a grid query: a hundred ns to a microsecond) counts kHeavyItem. A

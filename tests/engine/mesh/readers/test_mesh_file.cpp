@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "engine/element/tet4.hpp"
-#include "engine/mesh/mesh_quality.hpp"
+#include "engine/element/mesh_quality.hpp"
 #include "engine/mesh/readers/mesh_file.hpp"
 #include "tests/engine/mesh/readers/mesh_test_files.hpp"
 

@@ -1,4 +1,4 @@
-#include "engine/solver/thread_count.hpp"
+#include "engine/threads/thread_count.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -1,4 +1,4 @@
-#include "engine/mesh/mesh_quality.hpp"
+#include "engine/element/mesh_quality.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
