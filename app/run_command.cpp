@@ -32,6 +32,7 @@
 #include "run/parallel/rank_context.hpp"
 #include "run/scene/scene_builder.hpp"
 #include "run/scene/scene_file.hpp"
+#include "run/scene/scene_run.hpp"
 
 namespace ccm {
 namespace {
@@ -56,12 +57,9 @@ struct UsageError : std::runtime_error {
 // ---------------------------------------------------------------------------------------------
 // Preparation: everything that bad input can make fail, before anything is written
 
-struct Prepared {
+// The scene's text as read, and the scene assembled for its run (run/scene/scene_run.hpp).
+struct Prepared : SceneRun {
   std::string text;
-  Scene scene;
-  Model model;
-  OutputRequest output;
-  ContactSetup contact;
 };
 
 void check_out_dir(const fs::path& out) {
@@ -105,13 +103,11 @@ void prepare(const RunArgs& args, const std::string& piped, Prepared& p) {
     throw UsageError(e.what());
   }
   const fs::path source = read_scene(args, piped, p.text);
-  p.scene = parse_scene(p.text, source);
-  if (args.fields) p.scene.output.fields = fields::all_fields();
-  for (const std::string& w : p.scene.warnings) fmt::print(stderr, "ccm: warning: {}\n", w);
+  Scene scene = parse_scene(p.text, source);
+  if (args.fields) scene.output.fields = fields::all_fields();
+  for (const std::string& w : scene.warnings) fmt::print(stderr, "ccm: warning: {}\n", w);
   check_out_dir(args.out);
-  p.model = build_model(p.scene);
-  p.output = build_output_request(p.scene, p.model.mesh);
-  p.contact = build_contact(p.scene, p.model);
+  static_cast<SceneRun&>(p) = assemble_scene_run(std::move(scene));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -194,6 +190,8 @@ void print_summary_table(const RunRecord& r) {
   fmt::print("  {:<15}{}\n", "elements", s.n_elements);
   const ContactSetup& contact = r.prepared.contact;
   fmt::print("  {:<15}{}\n", "contact", contact.model ? contact.description : "none");
+  for (const auto& joint : r.prepared.joints)
+    fmt::print("  {:<15}{} (work {:.6g} J)\n", "joint", joint->name(), joint->work());
   if (contact.model)
     fmt::print("  {:<15}{:.6g} J (work of the contact on the bodies)\n", "",
                contact.model->ledger().work);
@@ -304,12 +302,7 @@ std::string summary_toml(const RunRecord& r) {
 
 RunSummary run_scene(const RunArgs& args, const Prepared& p, HistoryRecorder& history,
                      fields::FieldRecorder& fields, distributed::PartitionReport& partition) {
-  RunOptions options;
-  options.time = time_control(p.scene.time);
-  options.monitor = p.scene.monitor;
-  options.history = &history;
-  options.contact = p.contact.model.get();
-  for (const HistorySource* h : p.contact.histories) history.add_source(*h);
+  RunOptions options = scene_run_options(p, &history);
   fields.attach(options);
   ProgressLine progress;
   options.progress = progress.on_terminal(args.quiet);
@@ -351,6 +344,10 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
       throw UsageError(
           "field output (--fields, [output] fields) is not available in a run "
           "partitioned over MPI ranks: run it on one rank");
+    if (ranks.size() > 1 && !p.joints.empty())
+      throw UsageError(
+          "a scene with [[joints]] does not yet run partitioned over MPI ranks: run it on one "
+          "rank (threads still apply)");
     if (ranks.size() > 1 && !p.model.rigid_bodies.empty())
       throw UsageError(
           "a scene with rigid bodies (kind = \"rigid\") does not yet run partitioned over MPI "

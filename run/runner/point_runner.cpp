@@ -13,8 +13,8 @@
 #include "records/content_hash.hpp"
 #include "records/provenance/timestamp.hpp"
 #include "run/scene/point_scene.hpp"
-#include "run/scene/scene_builder.hpp"
 #include "run/scene/scene_file.hpp"
+#include "run/scene/scene_run.hpp"
 
 namespace ccm::study {
 namespace {
@@ -83,21 +83,14 @@ RunRecord run_point(const GridSpec& spec, const GridPoint& point, ImpactModel mo
   r.started_at = utc_timestamp(SystemClock::now());
   const std::string text = point_scene_text(spec, point, model);
   r.scene_hash = fnv1a64(text);
-  const Scene scene = parse_scene(text, point_scene_name(spec, point, model));
-  const Model built = build_model(scene);
-  const ContactSetup contact = build_contact(scene, built);
-  HistoryRecorder history(built.mesh, build_output_request(scene, built.mesh));
-  for (const HistorySource* h : contact.histories) history.add_source(*h);
-
-  RunOptions run;
-  run.time = time_control(scene.time);
-  run.monitor = scene.monitor;
-  run.history = &history;
-  run.contact = contact.model.get();
+  const SceneRun scene =
+      assemble_scene_run(parse_scene(text, point_scene_name(spec, point, model)));
+  HistoryRecorder history(scene.model.mesh, scene.output);
+  RunOptions run = scene_run_options(scene, &history);
   run.progress_seconds = options.progress_seconds;
   if (options.progress)
     run.progress = [&](const Progress& p) { options.progress(point, model, p); };
-  record_summary(run_explicit(built, run), r);
+  record_summary(run_explicit(scene.model, run), r);
   r.artifact = artifact_history(history);
   r.ended_at = utc_timestamp(SystemClock::now());
   return r;

@@ -110,6 +110,23 @@ struct FixedSpec {
   SourceRef where;
 };
 
+// [[joints]] (docs/scene-file.md): a kinematic constraint on nodes of deformable bodies, applied
+// after the fixed nodes in file order (engine/bc/kinematic_constraint.hpp).
+enum class JointKind {
+  pin,    // the nodes turn as one rigid ring about an axis, with Coulomb friction (pin_joint.hpp)
+  slide,  // the nodes move only along one direction (slide_constraint.hpp)
+};
+
+struct JointSpec {
+  JointKind kind = JointKind::pin;
+  std::optional<std::string> body;  // restricts the selection to one body
+  NodeSelection selection;
+  Vec3 point = Vec3::Zero();      // pin: a point on the axis [m]
+  Vec3 axis = Vec3::UnitX();      // pin: the axis; slide: the direction of travel (non-zero)
+  double mu_s = 0.0, mu_k = 0.0;  // pin: static and kinetic friction coefficients
+  SourceRef where;
+};
+
 struct SurfaceLoadSpec {
   std::string name;
   std::optional<std::string> body;
@@ -185,6 +202,7 @@ struct Scene {
   std::vector<BodySpec> bodies;
   std::vector<FixedSpec> fixed;
   std::vector<SurfaceLoadSpec> surface_loads;
+  std::vector<JointSpec> joints;
   OutputSpec output;
   // The contact models in the order they act: none, the [contact] table's, or one per entry of
   // [[contact.pairs]].

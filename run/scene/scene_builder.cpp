@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "engine/bc/node_selection.hpp"
+#include "engine/bc/pin_joint.hpp"
+#include "engine/bc/slide_constraint.hpp"
 #include "engine/contact/contact_set.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/contact/penalty/rigid_surface_penalty.hpp"
@@ -90,26 +92,29 @@ std::string known_names(const Map& map) {
   return fmt::format("{}", fmt::join(names, ", "));
 }
 
-std::vector<int> select_nodes(const Scene& scene, const ModelMesh& mesh, const FixedSpec& f) {
-  const int body = optional_body(scene, mesh, f.where, f.body);
-  if (const auto* set = std::get_if<NodeSetRef>(&f.selection)) {
-    const std::string name = qualified(f.body, set->name);
+// The nodes a selection (of one body, when given) picks; where: the table, for errors.
+std::vector<int> select_nodes(const Scene& scene, const ModelMesh& mesh,
+                              const std::optional<std::string>& body_name,
+                              const NodeSelection& selection, const SourceRef& where) {
+  const int body = optional_body(scene, mesh, where, body_name);
+  if (const auto* set = std::get_if<NodeSetRef>(&selection)) {
+    const std::string name = qualified(body_name, set->name);
     const auto it = mesh.node_sets.find(name);
     if (it == mesh.node_sets.end())
       fail(
-          scene, f.where, "node_set",
+          scene, where, "node_set",
           fmt::format("no node set named '{}' (node sets: {})", name, known_names(mesh.node_sets)));
     return in_body(mesh, body, it->second);
   }
-  if (const auto* box = std::get_if<BoxSpec>(&f.selection))
+  if (const auto* box = std::get_if<BoxSpec>(&selection))
     return nodes_in_box(mesh, body, box->min, box->max);
-  const auto& plane = std::get<PlaneSpec>(f.selection);
+  const auto& plane = std::get<PlaneSpec>(selection);
   return nodes_on_plane(mesh, body, plane.point, plane.normal, plane.tolerance);
 }
 
-std::string_view selection_key(const FixedSpec& f) {
+std::string_view selection_key(const NodeSelection& selection) {
   static constexpr std::string_view keys[] = {"node_set", "box", "plane"};
-  return keys[f.selection.index()];
+  return keys[selection.index()];
 }
 
 // The rigid body holding node n, or nullptr.
@@ -121,11 +126,11 @@ const Body* rigid_body_of(const ModelMesh& mesh, int n) {
 
 void apply_fixed(const Scene& scene, Model& model) {
   for (const FixedSpec& f : scene.fixed) {
-    const std::vector<int> nodes = select_nodes(scene, model.mesh, f);
-    if (nodes.empty()) fail(scene, f.where, selection_key(f), "selects no node");
+    const std::vector<int> nodes = select_nodes(scene, model.mesh, f.body, f.selection, f.where);
+    if (nodes.empty()) fail(scene, f.where, selection_key(f.selection), "selects no node");
     for (int n : nodes)
       if (const Body* b = rigid_body_of(model.mesh, n))
-        fail(scene, f.where, selection_key(f),
+        fail(scene, f.where, selection_key(f.selection),
              fmt::format("selects nodes of the rigid body '{}': a rigid body is held by its "
                          "motion (motion = \"fixed\" or \"prescribed\"), not by nodes",
                          b->name));
@@ -478,6 +483,32 @@ ContactSetup combined(std::vector<ContactSetup> parts) {
 }
 
 }  // namespace
+
+std::vector<std::unique_ptr<KinematicConstraint>> build_joints(const Scene& scene,
+                                                               const Model& model) {
+  std::vector<std::unique_ptr<KinematicConstraint>> joints;
+  for (const JointSpec& j : scene.joints) {
+    const std::string_view key = selection_key(j.selection);
+    const std::vector<int> nodes = select_nodes(scene, model.mesh, j.body, j.selection, j.where);
+    if (nodes.empty()) fail(scene, j.where, key, "selects no node");
+    for (int n : nodes)
+      if (const Body* b = rigid_body_of(model.mesh, n))
+        fail(scene, j.where, key,
+             fmt::format("selects nodes of the rigid body '{}': a rigid body turns on a pin by "
+                         "its motion (motion = \"pinned\" and [bodies.pin])",
+                         b->name));
+    try {
+      if (j.kind == JointKind::pin)
+        joints.push_back(std::make_unique<PinJoint>(
+            PinJointSpec{nodes, j.point, j.axis, j.mu_s, j.mu_k}, model.mesh.X));
+      else
+        joints.push_back(std::make_unique<SlideConstraint>(nodes, j.axis));
+    } catch (const std::invalid_argument& e) {
+      fail(scene, j.where, key, e.what());
+    }
+  }
+  return joints;
+}
 
 ContactSetup build_contact(const Scene& scene, const Model& model) {
   if (scene.contacts.empty()) return {};

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "engine/bc/kinematic_constraint.hpp"
 #include "engine/contact/contact_model.hpp"
 #include "engine/observe/history.hpp"
 #include "engine/solver/explicit_integrator.hpp"
@@ -41,5 +42,11 @@ struct ContactSetup {
 // Throws ConfigError naming the scene file, line and key for an unknown body, a surface that does
 // not exist or is not on that body, or an empty surface.
 ContactSetup build_contact(const Scene& scene, const Model& model);
+
+// The scene's [[joints]], in file order. Throws ConfigError naming the scene file, line and key
+// for a selection that selects no node or a rigid body's, or a pin whose nodes all lie on its
+// axis.
+std::vector<std::unique_ptr<KinematicConstraint>> build_joints(const Scene& scene,
+                                                               const Model& model);
 
 }  // namespace ccm

@@ -458,23 +458,55 @@ std::optional<std::string> parse_body_ref(const Table& t) {
   return t.need<std::string>("body");
 }
 
+// One of node_set, box, plane: the nodes a [[fixed]] or [[joints]] table selects.
+NodeSelection parse_node_selection(const Table& t) {
+  const std::string_view kind = one_of(t, {"node_set", "box", "plane"});
+  if (kind == "node_set") return NodeSetRef{t.need<std::string>("node_set")};
+  if (kind == "box") return parse_box(t.need_table("box"));
+  return parse_plane(t.need_table("plane"));
+}
+
 FixedSpec parse_fixed_one(const Table& t) {
   t.allow_only({"body", "node_set", "box", "plane"});
   FixedSpec f;
   f.body = parse_body_ref(t);
-  const std::string_view kind = one_of(t, {"node_set", "box", "plane"});
-  if (kind == "node_set")
-    f.selection = NodeSetRef{t.need<std::string>("node_set")};
-  else if (kind == "box")
-    f.selection = parse_box(t.need_table("box"));
-  else
-    f.selection = parse_plane(t.need_table("plane"));
+  f.selection = parse_node_selection(t);
   f.where = t.ref();
   return f;
 }
 
 void parse_fixed(const Table& root, Scene& scene) {
   for (const Table& t : root.tables("fixed")) scene.fixed.push_back(parse_fixed_one(t));
+}
+
+// [[joints]]: kind = "pin" (point, axis, mu_s, mu_k) or "slide" (direction) on selected nodes.
+JointSpec parse_joint(const Table& t) {
+  const std::string kind = t.need<std::string>("kind");
+  JointSpec j;
+  if (kind == "pin") {
+    t.allow_only({"kind", "body", "node_set", "box", "plane", "point", "axis", "mu_s", "mu_k"});
+    j.point = t.need<Vec3>("point");
+    j.axis = non_zero(t, "axis", t.need<Vec3>("axis"));
+    j.mu_s = t.get_or("mu_s", j.mu_s);
+    if (!kFrictionRange.contains(j.mu_s)) t.fail("mu_s", kFrictionRange.problem(j.mu_s));
+    j.mu_k = t.get_or("mu_k", j.mu_s);
+    if (!kFrictionRange.contains(j.mu_k)) t.fail("mu_k", kFrictionRange.problem(j.mu_k));
+    if (j.mu_k > j.mu_s) t.fail("mu_k", fmt::format("must be at most mu_s ({})", j.mu_s));
+  } else if (kind == "slide") {
+    t.allow_only({"kind", "body", "node_set", "box", "plane", "direction"});
+    j.kind = JointKind::slide;
+    j.axis = non_zero(t, "direction", t.need<Vec3>("direction"));
+  } else {
+    t.fail("kind", unknown_value_problem(kind, std::array<std::string_view, 2>{"pin", "slide"}));
+  }
+  j.body = parse_body_ref(t);
+  j.selection = parse_node_selection(t);
+  j.where = t.ref();
+  return j;
+}
+
+void parse_joints(const Table& root, Scene& scene) {
+  for (const Table& t : root.tables("joints")) scene.joints.push_back(parse_joint(t));
 }
 
 std::vector<std::pair<double, double>> parse_force_table(const Table& t) {
@@ -772,13 +804,14 @@ struct Section {
   void (*parse)(const Table& root, Scene& scene);
 };
 
-const std::array<Section, 9> kSections = {{
+const std::array<Section, 10> kSections = {{
     {"title", parse_title},
     {"time", parse_time},
     {"monitor", parse_monitor},
     {"gravity", parse_gravity},
     {"bodies", parse_bodies},
     {"fixed", parse_fixed},
+    {"joints", parse_joints},
     {"surface_loads", parse_surface_loads},
     {"output", parse_output},
     {"contact", parse_contact},  // after bodies and output: its names must not clash with theirs

@@ -1,5 +1,7 @@
 // The scene of a grid point: sphere diameter D_I = RLS L_A, E_I = ER E_A, speed from KE and the
 // sphere's mass, contact starting at t_c (gap / speed = t_c); both models share the artifact.
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <numbers>
 #include <string>
@@ -213,9 +215,10 @@ TEST_CASE("the rigid model's penalty mode: [contact] keys and the penalty_scale 
           "[grid][element_penalty]") {
   const GridPoint p = point(1e2, 1.0, 50.0);
   SECTION("[contact] penalty_mode = \"element\" reaches the rigid scene") {
-    const GridSpec g = parse_grid(
-        std::string(kSmallGrid) + "\n[contact]\npenalty_mode = \"element\"\npenalty_scale = 0.2\n",
-        "g.toml");
+    const GridSpec g =
+        parse_grid(fmt::format("{}{}", kSmallGrid,
+                               "\n[contact]\npenalty_mode = \"element\"\npenalty_scale = 0.2\n"),
+                   "g.toml");
     CHECK(g.contact.penalty_mode == PenaltyMode::element);
     CHECK(g.contact.penalty_scale == 0.2);
     const Scene rigid = point_scene(g, p, ImpactModel::rigid);
@@ -254,19 +257,21 @@ TEST_CASE("the rigid model's penalty mode: [contact] keys and the penalty_scale 
     CHECK_THAT(grid_error_of(with_axis + "\n[contact]\npenalty_mode = \"element\"\n"),
                Catch::Contains("g.toml:26: contact.penalty_mode: the penalty_scale axis chooses "
                                "the mode at every point"));
-    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\npenalty_mode = \"elment\"\n"),
-               Catch::Contains("g.toml:25: contact.penalty_mode: must be one of \"per_point\", "
-                               "\"element\" (got \"elment\"; did you mean \"element\"?)"));
-    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\npenalty_scale = 0.1\n"),
+    CHECK_THAT(
+        grid_error_of(fmt::format("{}{}", kSmallGrid, "\n[contact]\npenalty_mode = \"elment\"\n")),
+        Catch::Contains("g.toml:25: contact.penalty_mode: must be one of \"per_point\", "
+                        "\"element\" (got \"elment\"; did you mean \"element\"?)"));
+    CHECK_THAT(grid_error_of(fmt::format("{}{}", kSmallGrid, "\n[contact]\npenalty_scale = 0.1\n")),
                Catch::Contains("g.toml:25: contact.penalty_scale: applies only with "
                                "penalty_mode = \"element\""));
-    CHECK_THAT(grid_error_of(std::string(kSmallGrid) +
-                             "\n[contact]\npenalty_mode = \"element\"\npenalty = 1e6\n"),
+    CHECK_THAT(grid_error_of(fmt::format(
+                   "{}{}", kSmallGrid, "\n[contact]\npenalty_mode = \"element\"\npenalty = 1e6\n")),
                Catch::Contains("g.toml:26: contact.penalty: applies only with penalty_mode = "
                                "\"per_point\""));
-    CHECK_THAT(grid_error_of(std::string(kSmallGrid) +
-                             "\n[contact]\npenalty_mode = \"element\"\npenalty_scale = -1\n"),
-               Catch::Contains("g.toml:26: contact.penalty_scale: must be > 0 (got -1)"));
+    CHECK_THAT(
+        grid_error_of(fmt::format("{}{}", kSmallGrid,
+                                  "\n[contact]\npenalty_mode = \"element\"\npenalty_scale = -1\n")),
+        Catch::Contains("g.toml:26: contact.penalty_scale: must be > 0 (got -1)"));
     CHECK_THAT(
         grid_error_of(small_grid_with("KE = [10.0, 100.0]", "KE = [10.0]\npenalty_scale = [-0.1]")),
         Catch::Contains("g.toml:5: axes.penalty_scale: [0] must be >= 0 (got -0.1)"));
@@ -280,7 +285,7 @@ TEST_CASE("the rigid model's penalty mode: [contact] keys and the penalty_scale 
                       "\n[contact]\npenalty_mode = \"element\"\n"),
         Catch::Contains("contact.penalty_mode: a penalty (K_P) axis needs the per-point "
                         "mode"));
-    CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\ndampnig = 1.0\n"),
+    CHECK_THAT(grid_error_of(fmt::format("{}{}", kSmallGrid, "\n[contact]\ndampnig = 1.0\n")),
                Catch::Contains("g.toml:25: contact.dampnig: unknown key 'dampnig' (did you mean "
                                "'damping'?)"));
   }
@@ -340,8 +345,8 @@ TEST_CASE(
     "the rigid model's meshed impactor: the ccm model's sphere made rigid, on the per-point "
     "penalty, its scene the same at every ER",
     "[grid][rigid-body]") {
-  const GridSpec g =
-      parse_grid(std::string(kSmallGrid) + "\n[contact]\nrigid_impactor = \"meshed\"\n", "g.toml");
+  const GridSpec g = parse_grid(
+      fmt::format("{}{}", kSmallGrid, "\n[contact]\nrigid_impactor = \"meshed\"\n"), "g.toml");
   CHECK(g.contact.meshed_rigid_impactor);
   const std::string text = point_scene_text(g, point(1e2, 1.0, 50.0), ImpactModel::rigid);
   CHECK_THAT(text, Catch::Contains("kind = \"rigid\"") && Catch::Contains("rigid = \"impactor\""));
@@ -355,10 +360,11 @@ TEST_CASE(
   const Scene ccm = point_scene(g, point(1e2, 1.0, 50.0), ImpactModel::ccm);
   CHECK(impactor.mass == body_named(ccm, kImpactorName).mass);
   CHECK(impactor.initial_velocity == body_named(ccm, kImpactorName).initial_velocity);
-  CHECK_THAT(grid_error_of(std::string(kSmallGrid) + "\n[contact]\nrigid_impactor = \"meshd\"\n"),
-             Catch::Contains("did you mean \"meshed\""));
   CHECK_THAT(
-      grid_error_of(std::string(kSmallGrid) +
-                    "\n[contact]\npenalty_mode = \"element\"\nrigid_impactor = \"meshed\"\n"),
-      Catch::Contains("per-point K_P"));
+      grid_error_of(fmt::format("{}{}", kSmallGrid, "\n[contact]\nrigid_impactor = \"meshd\"\n")),
+      Catch::Contains("did you mean \"meshed\""));
+  CHECK_THAT(grid_error_of(fmt::format(
+                 "{}{}", kSmallGrid,
+                 "\n[contact]\npenalty_mode = \"element\"\nrigid_impactor = \"meshed\"\n")),
+             Catch::Contains("per-point K_P"));
 }

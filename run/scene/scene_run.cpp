@@ -1,0 +1,30 @@
+#include "run/scene/scene_run.hpp"
+
+#include <utility>
+
+namespace ccm {
+
+SceneRun assemble_scene_run(Scene scene) {
+  SceneRun r;
+  r.scene = std::move(scene);
+  r.model = build_model(r.scene);
+  r.output = build_output_request(r.scene, r.model.mesh);
+  r.contact = build_contact(r.scene, r.model);
+  r.joints = build_joints(r.scene, r.model);
+  return r;
+}
+
+RunOptions scene_run_options(const SceneRun& run, HistoryRecorder* history) {
+  RunOptions o;
+  o.time = time_control(run.scene.time);
+  o.monitor = run.scene.monitor;
+  o.contact = run.contact.model.get();
+  for (const auto& joint : run.joints) o.constraints.push_back(joint.get());
+  if (history) {
+    o.history = history;
+    for (const HistorySource* h : run.contact.histories) history->add_source(*h);
+  }
+  return o;
+}
+
+}  // namespace ccm
