@@ -6,12 +6,15 @@
 // `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]
 // [--json]`,
 // `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`,
-// `ccm mesh info FILE [--json]`.
+// `ccm mesh info FILE [--json]`,
+// `ccm compare SCENE --rigid BODY[,BODY...] [--observe COL,...] [--max-error E] [--out DIR]
+// [--json]`.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 
 #include "app/command_words.hpp"
+#include "app/compare_command.hpp"
 #include "app/data_paths.hpp"
 #include "app/mesh_commands.hpp"
 #include "app/rig_commands.hpp"
@@ -90,6 +93,44 @@ int main(int argc, char** argv) {
   run->footer(
       "Exit codes: 0 completed, 1 internal error, 2 bad input (nothing written), 3 unstable "
       "(results up to the instability written).");
+
+  ccm::CompareArgs compare_args;
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "Run a scene as written and with bodies rigid: the rigid run's errors, the cost ratio and "
+      "whether rigid is good enough (docs/compare.md)");
+  compare->add_option("SCENE", compare_args.scene, "Scene file (TOML; docs/scene-file.md)")
+      ->required();
+  compare
+      ->add_option("--rigid", compare_args.rigid,
+                   "Bodies to make rigid, comma-separated (each deformable in the scene)")
+      ->required()
+      ->delimiter(',');
+  compare
+      ->add_option("--observe", compare_args.observe,
+                   "History columns to compare, comma-separated (default: u_mean, u_max and "
+                   "kinetic_energy of every body that stays deformable)")
+      ->delimiter(',');
+  compare
+      ->add_option("--max-error", compare_args.max_error,
+                   "Rigid is good enough where every final-state error is within this and it is "
+                   "cheaper")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  compare->add_option("--out,-o", compare_args.out,
+                      "Folder for the two runs (kept under their content hash: asking again "
+                      "reuses them) and comparison.json; default compare-<scene name>");
+  compare
+      ->add_option("--db", compare_args.db,
+                   "Study store whose prediction for this scene's ER, RLS and KE is shown beside "
+                   "the measured answer")
+      ->capture_default_str();
+  compare->add_flag("--json", compare_args.json, "Print the comparison as JSON");
+  compare->add_flag("--quiet,-q", compare_args.quiet, "No progress line");
+  compare->add_option("--threads", compare_args.threads, "As `ccm run --threads`");
+  compare->footer(
+      "Exit codes: 0 compared, 1 internal error, 2 bad input (nothing run, nothing written), 3 a "
+      "run went unstable (no answer; what it left is written).");
 
   ccm::StudyRunArgs study_run_args;
   ccm::StudyStatusArgs study_status_args;
@@ -244,5 +285,6 @@ int main(int argc, char** argv) {
   if (*rig_calibrate) return ccm::rig_calibrate_command(rig_calibrate_args);
   if (*report) return ccm::report_command(report_args);
   if (*mesh_info) return ccm::mesh_info_command(mesh_info_args);
+  if (*compare) return ccm::compare_command(compare_args);
   return ccm::run_command(args);
 }

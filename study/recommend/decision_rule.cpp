@@ -38,11 +38,17 @@ std::string cost_margin(double runtime_ratio, double uncertainty) {
 }  // namespace
 
 Decision decide_model(const DecisionInputs& in, double max_error) {
-  Decision d;
   const ArtifactErrors& e = in.final_state;
-  d.worst_error = std::max({e.u_mean, e.u_max, e.kinetic_energy});
+  const std::array<double, 3> errors = {e.u_mean, e.u_max, e.kinetic_energy};
+  return decide_model(errors, in.runtime_ratio, max_error);
+}
+
+Decision decide_model(std::span<const double> final_state_errors, double runtime_ratio,
+                      double max_error) {
+  Decision d;
+  for (double e : final_state_errors) d.worst_error = std::max(d.worst_error, e);
   d.rigid_within_error = d.worst_error <= max_error;
-  d.rigid_cheaper = in.runtime_ratio > 1.0;
+  d.rigid_cheaper = runtime_ratio > 1.0;
   d.model = d.rigid_within_error && d.rigid_cheaper ? ImpactModel::rigid : ImpactModel::ccm;
   return d;
 }

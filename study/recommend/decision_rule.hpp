@@ -9,6 +9,7 @@
 // never used for it.
 #pragma once
 
+#include <span>
 #include <string>
 
 #include "records/grid_point.hpp"
@@ -33,6 +34,9 @@ struct Decision {
 };
 
 Decision decide_model(const DecisionInputs& inputs, double max_error);
+// The same rule on any number of final-state errors (`ccm compare`'s observables, docs/compare.md).
+Decision decide_model(std::span<const double> final_state_errors, double runtime_ratio,
+                      double max_error);
 
 // The uncertainty of each input, in the units the rule compares: the errors' own units and
 // decades of RTR (leave-one-out RMSE of the fitted surfaces).

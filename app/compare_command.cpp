@@ -1,0 +1,265 @@
+#include "app/compare_command.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "app/compare_prediction.hpp"
+#include "app/json_output.hpp"
+#include "app/output_file.hpp"
+#include "app/progress_line.hpp"
+#include "app/run_command.hpp"
+#include "config/config_error.hpp"
+#include "config/text_file.hpp"
+#include "engine/threads/thread_count.hpp"
+#include "records/content_hash.hpp"
+#include "run/compare/rigid_variant.hpp"
+#include "run/compare/scene_comparison.hpp"
+#include "run/compare/scene_groups.hpp"
+#include "run/scene/scene_file.hpp"
+#include "run/scene/scene_run.hpp"
+
+namespace ccm {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What identifies a run: the scene's text, the mesh files it reads, and which bodies are rigid.
+std::string compare_hash(const std::string& text, const Scene& scene,
+                         const std::vector<std::string>& rigid) {
+  std::string all = text;
+  for (const BodySpec& b : scene.bodies)
+    if (b.geometry.shape == Shape::mesh) all += "\n#mesh " + read_config_text(b.geometry.file);
+  all += fmt::format("\n#ccm compare --rigid {}\n", fmt::join(rigid, ","));
+  return study::fnv1a64(all);
+}
+
+// Both runs' outputs switched on (u_mean, u_max, kinetic energy of every body), so that the
+// default observables exist whatever the scene asked.
+Scene with_metrics(Scene s) {
+  s.output.kinetic_energy = true;
+  s.output.displacement = true;
+  return s;
+}
+
+struct Side {
+  std::string label;  // "deformable", "rigid"
+  SceneRun run;
+  std::unique_ptr<HistoryRecorder> history;
+  RunOptions options;
+  std::string hash;
+};
+
+Side prepare_side(std::string label, Scene scene, std::string hash) {
+  Side s{std::move(label), assemble_scene_run(with_metrics(std::move(scene))), nullptr, {}, {}};
+  s.history = std::make_unique<HistoryRecorder>(s.run.model.mesh, s.run.output);
+  s.options = scene_run_options(s.run, s.history.get());
+  s.hash = std::move(hash);
+  return s;
+}
+
+fs::path cached_history(const fs::path& out, const std::string& hash) {
+  return out / "runs" / (hash + ".csv");
+}
+fs::path cached_summary(const fs::path& out, const std::string& hash) {
+  return out / "runs" / (hash + ".json");
+}
+
+// A run kept by an earlier comparison, or nothing.
+std::optional<ComparedRun> read_cached(const fs::path& out, const std::string& hash) {
+  std::ifstream summary(cached_summary(out, hash)), csv(cached_history(out, hash));
+  if (!summary || !csv) return std::nullopt;
+  ComparedRun r;
+  const nlohmann::json j = nlohmann::json::parse(summary, nullptr, false);
+  if (j.is_discarded()) return std::nullopt;
+  r.hash = hash;
+  r.verdict = j.value("verdict", "");
+  r.reason = j.value("reason", "");
+  r.steps = j.value("steps", 0L);
+  r.step_cpu_seconds = j.value("step_cpu_seconds", 0.0);
+  r.wall_seconds = j.value("wall_seconds", 0.0);
+  std::string line;
+  if (!std::getline(csv, line)) return std::nullopt;
+  std::stringstream header(line);
+  for (std::string c; std::getline(header, c, ',');) r.columns.push_back(c);
+  while (std::getline(csv, line)) {
+    std::stringstream cells(line);
+    std::vector<double> row;
+    for (std::string c; std::getline(cells, c, ',');) row.push_back(std::stod(c));
+    if (row.size() != r.columns.size()) return std::nullopt;  // a torn file: run again
+    r.rows.push_back(std::move(row));
+  }
+  r.reused = true;
+  return r;
+}
+
+ComparedRun run_side(Side& side, const CompareArgs& args, const fs::path& out) {
+  if (auto cached = read_cached(out, side.hash)) return *cached;
+  ProgressLine progress(side.label);
+  side.options.progress = progress.on_terminal(args.quiet);
+  const RunSummary s = run_explicit(side.run.model, side.options);
+  progress.finish();
+  ComparedRun r;
+  r.hash = side.hash;
+  r.verdict = std::string(to_string(s.verdict));
+  if (s.verdict == Verdict::unstable) r.reason = s.instability.reason;
+  r.steps = s.steps;
+  r.step_cpu_seconds = s.step_cpu_seconds;
+  r.wall_seconds = s.wall_seconds;
+  r.columns = side.history->columns();
+  r.rows = side.history->rows();
+  fs::create_directories(out / "runs");
+  write_history_csv(cached_history(out, side.hash), *side.history);
+  const nlohmann::json j = {{"scene", args.scene.string()},
+                            {"bodies_rigid", side.label == "rigid"},
+                            {"verdict", r.verdict},
+                            {"reason", r.reason},
+                            {"steps", r.steps},
+                            {"step_cpu_seconds", r.step_cpu_seconds},
+                            {"wall_seconds", r.wall_seconds}};
+  write_atomic(cached_summary(out, side.hash), j.dump(2) + "\n");
+  return r;
+}
+
+// The one rule (study/recommend/decision_rule.hpp), said of the observables compared.
+std::string compare_rule_text(double max_error) {
+  return fmt::format(
+      "rule: rigid is good enough where the rigid run's final-state error is within {:g} on "
+      "every observable AND the rigid run is cheaper (cost ratio > 1); otherwise keep it "
+      "deformable",
+      max_error);
+}
+
+nlohmann::json run_json(const ComparedRun& r) {
+  return {{"hash", r.hash},
+          {"verdict", r.verdict},
+          {"reason", r.reason},
+          {"steps", r.steps},
+          {"step_cpu_seconds", r.step_cpu_seconds},
+          {"wall_seconds", r.wall_seconds},
+          {"reused", r.reused}};
+}
+
+nlohmann::json comparison_json(const CompareArgs& args, const std::vector<std::string>& observables,
+                               const ComparedRun& d, const ComparedRun& r,
+                               const ComparisonOutcome& o) {
+  nlohmann::json errors = nlohmann::json::array();
+  for (const ObservableErrors& e : o.errors)
+    errors.push_back(
+        {{"observable", e.column}, {"final_state", e.final_state}, {"cumulative", e.cumulative}});
+  nlohmann::json j = {{"scene", args.scene.string()},
+                      {"rigid_bodies", args.rigid},
+                      {"observables", observables},
+                      {"max_error", args.max_error},
+                      {"deformable_run", run_json(d)},
+                      {"rigid_run", run_json(r)},
+                      {"cost_ratio", o.cost_ratio},
+                      {"errors", errors},
+                      {"rule", compare_rule_text(args.max_error)}};
+  if (!o.unusable.empty()) {
+    j["unusable"] = o.unusable;
+    return j;
+  }
+  j["decision"] = {
+      {"model", o.decision.model == study::ImpactModel::rigid ? "rigid" : "deformable"},
+      {"worst_final_state_error", o.decision.worst_error},
+      {"rigid_within_error", o.decision.rigid_within_error},
+      {"rigid_cheaper", o.decision.rigid_cheaper}};
+  return j;
+}
+
+// t_c: the first sample at which the artifact has moved (u_max above 1e-6 of its largest).
+std::optional<double> contact_time(const ComparedRun& d, const GroupsOrReason& g) {
+  if (!g.groups || d.rows.empty()) return std::nullopt;
+  const auto col = std::find(d.columns.begin(), d.columns.end(), g.groups->artifact + ".u_max");
+  if (col == d.columns.end()) return std::nullopt;
+  const auto c = static_cast<size_t>(col - d.columns.begin());
+  double largest = 0.0;
+  for (const auto& row : d.rows) largest = std::max(largest, row[c]);
+  for (const auto& row : d.rows)
+    if (largest > 0.0 && row[c] > 1e-6 * largest) return row[0];
+  return std::nullopt;
+}
+
+void print_table(const CompareArgs& args, const ComparedRun& d, const ComparedRun& r,
+                 const ComparisonOutcome& o) {
+  fmt::print("ccm compare {}  (rigid: {})\n", args.scene.string(), fmt::join(args.rigid, ", "));
+  for (const auto& [label, run] : {std::pair{"deformable", &d}, std::pair{"rigid", &r}})
+    fmt::print("  {:<11} {} in {} steps, step loop {:.3f} s CPU{}\n", label, run->verdict,
+               run->steps, run->step_cpu_seconds, run->reused ? " (reused)" : "");
+  if (!o.unusable.empty()) {
+    fmt::print("  not comparable: {}\n", o.unusable);
+    return;
+  }
+  fmt::print("\n  {:<40} {:>12} {:>12}\n", "observable", "final-state", "cumulative");
+  for (const ObservableErrors& e : o.errors)
+    fmt::print("  {:<40} {:>12.4g} {:>12.4g}\n", e.column, e.final_state, e.cumulative);
+  fmt::print("\n  cost ratio (deformable / rigid step loop, CPU): {:.3g}\n", o.cost_ratio);
+  const bool rigid = o.decision.model == study::ImpactModel::rigid;
+  fmt::print("  answer: {} (worst final-state error {:.3g})\n  {}\n",
+             rigid ? "rigid is good enough" : "keep it deformable", o.decision.worst_error,
+             compare_rule_text(args.max_error));
+}
+
+int compare(const CompareArgs& args) {
+  set_default_threads(resolve_threads(args.threads, available_cores()));
+  const std::string text = read_config_text(args.scene);
+  const Scene scene = parse_scene(text, args.scene);
+  const Scene variant = with_rigid_bodies(scene, args.rigid);
+  // Everything is built and checked before either run starts.
+  Side deformable = prepare_side("deformable", scene, compare_hash(text, scene, {}));
+  Side rigid = prepare_side("rigid", variant, compare_hash(text, scene, args.rigid));
+  const std::vector<std::string> observables =
+      args.observe.empty() ? default_observables(variant) : args.observe;
+  check_observables(observables, deformable.history->columns(), rigid.history->columns());
+  const fs::path out =
+      args.out.empty() ? fs::path("compare-" + args.scene.stem().string()) : args.out;
+  if (fs::exists(out) && !fs::is_directory(out))
+    throw std::invalid_argument(
+        fmt::format("--out {}: exists and is not a directory", out.string()));
+
+  const ComparedRun d = run_side(deformable, args, out);
+  const ComparedRun r = run_side(rigid, args, out);
+  const ComparisonOutcome o = compare_runs(d, r, observables, args.max_error);
+  const GroupsOrReason without_tc = scene_groups(scene, deformable.run.model, args.rigid, {});
+  const ComparePrediction prediction = predict_for_scene(
+      args.db, scene_groups(scene, deformable.run.model, args.rigid, contact_time(d, without_tc)),
+      o, args.max_error);
+  nlohmann::json j = comparison_json(args, observables, d, r, o);
+  j["study_prediction"] = prediction_json(args.db, prediction);
+  write_atomic(out / "comparison.json", j.dump(2) + "\n");
+  if (args.json)
+    print_json(j);
+  else {
+    print_table(args, d, r, o);
+    print_prediction(args.db, prediction);
+  }
+  if (!o.unusable.empty()) return exit_code::unstable;
+  return exit_code::completed;
+}
+
+}  // namespace
+
+int compare_command(const CompareArgs& args) {
+  try {
+    return compare(args);
+  } catch (const ConfigError& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ccm: internal error: {}\n", e.what());
+    return exit_code::internal_error;
+  } catch (const std::string& e) {  // Gmsh throws its messages as strings
+    fmt::print(stderr, "ccm: internal error: {}\n", e);
+    return exit_code::internal_error;
+  }
+}
+
+}  // namespace ccm

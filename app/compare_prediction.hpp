@@ -1,0 +1,38 @@
+// What a study store predicts for a scene `ccm compare` ran (docs/compare.md, "What a study
+// predicts"): the scene's own groups (run/compare/scene_groups.hpp) carried onto the study's
+// grid through the dimensionless ones (ER, RLS, KE* = KE / (E_A L_A^3) at the grid's E_A and
+// L_A), the study's recommendation there, whether each group lies inside the grid's range, and
+// whether the prediction agrees with the measured answer.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "run/compare/scene_comparison.hpp"
+#include "run/compare/scene_groups.hpp"
+#include "study/recommend/recommendation.hpp"
+
+namespace ccm {
+
+struct ComparePrediction {
+  GroupsOrReason groups;
+  // The query on the grid: ER and RLS as they are, KE = KE* E_A,grid L_A,grid^3 [J].
+  double er = 0.0, rls = 0.0, ke = 0.0;
+  double grid_density_ratio = 0.0;
+  double grid_window = 0.0;
+  std::vector<std::string> outside;  // each group outside the grid's range, with both
+  std::optional<study::Recommendation> recommendation;
+  std::optional<bool> agrees;  // the predicted model is the measured one
+  std::string note;            // why there is no prediction (no store, no groups, no fits)
+};
+
+ComparePrediction predict_for_scene(const std::filesystem::path& db, GroupsOrReason groups,
+                                    const ComparisonOutcome& measured, double max_error);
+
+void print_prediction(const std::filesystem::path& db, const ComparePrediction& p);
+nlohmann::json prediction_json(const std::filesystem::path& db, const ComparePrediction& p);
+
+}  // namespace ccm
