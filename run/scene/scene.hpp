@@ -76,6 +76,10 @@ struct BodySpec {
   RigidMotion motion = RigidMotion::free;
   Vec3 initial_angular_velocity = Vec3::Zero();  // [rad/s], world axes (free, pinned)
   RigidPin pin;                                  // motion = "pinned": [bodies.pin]
+  // Given instead of computed from the meshed volume (rigid only): about the centre of mass,
+  // world axes [kg m^2]; the centre [m] (else the meshed volume's).
+  std::optional<Mat3> inertia;
+  std::optional<Vec3> center_of_mass;
   // motion = "prescribed": [t, x, y, z] points of the centre-of-mass velocity [m/s] and of the
   // angular velocity [rad/s]; a missing one is zero.
   std::vector<std::array<double, 4>> prescribed_velocity, prescribed_angular_velocity;

@@ -215,6 +215,8 @@ std::vector<RigidBodyModel> make_rigid_bodies(const Scene& scene, ModelMesh& mes
     r.velocity = spec.initial_velocity;
     r.angular_velocity = spec.initial_angular_velocity;
     r.pin = spec.pin;
+    if (spec.inertia) r.mass.inertia = *spec.inertia;
+    if (spec.center_of_mass) r.mass.center = *spec.center_of_mass;
     r.prescribed_velocity = vector_history(spec.prescribed_velocity);
     r.prescribed_angular_velocity = vector_history(spec.prescribed_angular_velocity);
   }

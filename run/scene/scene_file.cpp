@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -360,6 +361,39 @@ void parse_pin(const Table& body, BodySpec& b) {
     body.fail("initial_angular_velocity", "must be along the pin's axis");
 }
 
+// A rigid body's inertia given instead of computed (docs/rigid-bodies.md, "Given mass
+// properties"): inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] about the centre of mass [kg m^2], world
+// axes in the placed reference configuration, and optionally center_of_mass [m]. The tensor must
+// be that of a body: symmetric positive definite with principal moments obeying the triangle
+// inequality (I_1 + I_2 >= I_3: every mass distribution does).
+void parse_given_inertia(const Table& t, BodySpec& b) {
+  for (std::string_view key : {"inertia", "center_of_mass"})
+    if (!b.rigid && t.has(key)) t.fail(key, "applies only to kind = \"rigid\"");
+  if (t.has("center_of_mass") && !t.has("inertia"))
+    t.fail("center_of_mass", "applies with a given inertia (inertia = [...])");
+  if (!t.has("inertia")) return;
+  const toml::node* n = t.node("inertia");
+  const toml::array* a = n->as_array();
+  const std::string path = t.key_path("inertia");
+  if (!a || a->size() != 6) t.wrong_type(*n, path, "[Ixx, Iyy, Izz, Ixy, Ixz, Iyz] (6 numbers)");
+  std::array<double, 6> c{};
+  for (size_t k = 0; k < 6; ++k) c[k] = t.number((*a)[k], fmt::format("{}[{}]", path, k));
+  Mat3 I;
+  I << c[0], c[3], c[4], c[3], c[1], c[5], c[4], c[5], c[2];
+  const Vec3 m = Eigen::SelfAdjointEigenSolver<Mat3>(I).eigenvalues();  // ascending
+  if (!(m.minCoeff() > 0.0))
+    t.fail("inertia", fmt::format("must be positive definite (principal moments {:.4g}, {:.4g}, "
+                                  "{:.4g} kg m^2)",
+                                  m[0], m[1], m[2]));
+  if (m[0] + m[1] < m[2] * (1.0 - 1e-12))
+    t.fail("inertia",
+           fmt::format("no body has these principal moments ({:.4g} + {:.4g} < {:.4g}: the "
+                       "triangle inequality of a mass distribution)",
+                       m[0], m[1], m[2]));
+  b.inertia = I;
+  if (t.has("center_of_mass")) b.center_of_mass = t.need<Vec3>("center_of_mass");
+}
+
 // kind = "rigid" and its keys (docs/rigid-bodies.md); the keys of a rigid body's motion are
 // refused on a deformable body, and the keys of one motion under another.
 void parse_rigid(const Table& t, BodySpec& b) {
@@ -409,8 +443,8 @@ void parse_rigid(const Table& t, BodySpec& b) {
 
 BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
   t.allow_only({"name", "kind", "motion", "initial_velocity", "initial_angular_velocity",
-                "velocity", "angular_velocity", "pin", "mass", "material", "element", "geometry",
-                "placement"});
+                "velocity", "angular_velocity", "pin", "mass", "inertia", "center_of_mass",
+                "material", "element", "geometry", "placement"});
   BodySpec b;
   b.name = checked_name(t, "name");
   require_unique(t, "name", b.name, names);
@@ -419,6 +453,7 @@ BodySpec parse_body(const Table& t, std::map<std::string, std::string>& names) {
   b.material = parse_material(t.need_table("material"));
   b.element = parse_element(t, b.material);
   parse_rigid(t, b);
+  parse_given_inertia(t, b);
   const Table geometry = t.need_table("geometry");
   b.geometry = parse_geometry(geometry);
   if (auto p = t.table("placement")) b.placement = parse_placement(*p);

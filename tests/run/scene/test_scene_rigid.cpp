@@ -220,3 +220,39 @@ TEST_CASE("scene: a pinned rigid body reads its pin, turns about it, and refuses
                  "[bodies.pin]\npoint = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
              Contains("initial_velocity") && Contains("motion = \"free\""));
 }
+
+TEST_CASE("scene: a rigid body's inertia and centre may be given, and must be a body's",
+          "[rigid-body][scene]") {
+  // A 1 cm cube of 1 g given the inertia of a long rod about its centre, spun about z at
+  // 10 rad/s: its kinetic energy is Izz w^2 / 2 with the given Izz, not the cube's.
+  const std::string given =
+      "kind = \"rigid\"\ninertia = [2e-6, 2e-6, 3e-6, 0.0, 0.0, 0.0]\n"
+      "center_of_mass = [0.005, 0.005, 0.004]\ninitial_angular_velocity = [0.0, 0.0, 10.0]\n";
+  const Scene scene = parse_scene(rigid_cube(given), "s.toml");
+  const Model model = build_model(scene);
+  REQUIRE(model.rigid_bodies.size() == 1);
+  const RigidBodyModel& r = model.rigid_bodies[0];
+  CHECK(r.mass.inertia(2, 2) == 3e-6);
+  CHECK(r.mass.center == Vec3(0.005, 0.005, 0.004));
+  RunOptions opt;
+  opt.time.end_time = 1e-3;
+  opt.time.max_dt = 1e-5;
+  double ke = 0.0;
+  opt.on_sample = [&](const State& s) { ke = s.rigid.at(0).kinetic_energy; };
+  REQUIRE(run_explicit(model, opt).verdict == Verdict::completed);
+  CHECK(ke == Approx(0.5 * 3e-6 * 100.0).epsilon(1e-12));
+
+  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0, -1.0, 0.0, "
+                                             "0.0, 0.0]\n")),
+             Contains("s.toml:6: bodies[0].inertia") && Contains("positive definite"));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0, 3.0, 0.0, "
+                                             "0.0, 0.0]\n")),
+             Contains("bodies[0].inertia") && Contains("triangle inequality"));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube("inertia = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]\n")),
+             Contains("bodies[0].inertia") && Contains("kind = \"rigid\""));
+  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0]\n")),
+             Contains("bodies[0].inertia") && Contains("6 numbers"));
+  CHECK_THAT(
+      rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ncenter_of_mass = [0.0, 0.0, 0.0]\n")),
+      Contains("bodies[0].center_of_mass") && Contains("given inertia"));
+}
