@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the 12 benchtop cases of thesis Table 3.2 one after the other (low priority, one at a
 # time) on the measured trials of DATA, into OUT/rig.sqlite and OUT/<CASE>/, then prints the
-# README's rig performance table from the store. Extra arguments go to every `ccm rig run`.
+# the rig performance table of docs/benchtop-rig.md from the store. Extra arguments go to every `ccm rig run`.
 #   scripts/rig-cases.sh [build-dir] [data-dir] [out-dir] [-- ccm rig run options]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every scene in scenes/stress/ with `ccm run` and prints the README's "Stress cases"
+# Runs every scene in scenes/stress/ with `ccm run` and prints the "Stress cases" table of docs/evidence.md
 # table: verdict, reason, steps, dt min/max, wall time, energy error, and whether history.csv
 # holds a NaN. A run is killed after STRESS_TIMEOUT seconds (default 300) and reported as a
 # hang; an exit code other than 0 (completed) or 3 (unstable) is reported as a crash.

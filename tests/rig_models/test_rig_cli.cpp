@@ -318,7 +318,7 @@ TEST_CASE("ccm rig: a logger clock glitch, or no trial to score, exits 2 before 
 }
 
 // The full 12 cases of Table 3.2 on rig_models/geometry.toml over the whole dev trials (open
-// loop, trial 2), as in the README's rig performance table: every one must complete with the
+// loop, trial 2), as in the rig performance table of docs/benchtop-rig.md: every one must complete with the
 // automatic time step (the thesis's runs at 0.5 and 1.0 m/s went unstable at contact, 4.2.2),
 // its energy balance within the monitor's 5 %, scored on its 2 trials other than the driving one.
 TEST_CASE("ccm rig run: all 12 cases complete (full trials)", "[validation][rig-full]") {

@@ -5,7 +5,7 @@
 // contact duration, peak force (the force output, the upper sphere's momentum rate) and maximum
 // approach of the centres. Each error must shrink under refinement, and on the finest mesh each
 // must be below the CalculiX 2.20 figure of issue 15 (3.7 %, 4.2 %, 3.4 %): measured -3.1 %,
-// +3.9 %, -2.8 % (README "Evidence"). The energy balance stays within 0.5 % (measured 0.1-0.4 %).
+// +3.9 %, -2.8 % (docs/evidence.md). The energy balance stays within 0.5 % (measured 0.1-0.4 %).
 // About 10 minutes in Release. The second test runs the a / 5 mesh at a tenth of the speed with
 // the nodal-pressure tet (about 5 minutes): within the issue's 2 % there
 // (docs/contact-persistent.md, "Steel spheres at +-5 m/s", the bullet "the speed").

@@ -5,7 +5,7 @@
 // (tests/io/fields/paraview_field.py), and what it read is compared with the HDF5 file, exactly,
 // and renders one screenshot. Fails, never skips, when pvbatch or Xvfb is missing
 // (scripts/install-deps.sh installs them). With CCM_UPDATE_DOC_IMAGES=1 in the environment the
-// screenshot is also copied to docs/images/paraview-field.png (the README's figure).
+// screenshot is also copied to docs/images/paraview-field.png (the figure of docs/fields.md).
 #include <fmt/format.h>
 #include <sys/wait.h>
 
