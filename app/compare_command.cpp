@@ -15,6 +15,8 @@
 #include "app/run_command.hpp"
 #include "config/config_error.hpp"
 #include "config/text_file.hpp"
+#include "db/store/comparison_store.hpp"
+#include "db/store/study_store.hpp"
 #include "engine/threads/thread_count.hpp"
 #include "records/content_hash.hpp"
 #include "run/compare/rigid_variant.hpp"
@@ -205,6 +207,32 @@ void print_table(const CompareArgs& args, const ComparedRun& d, const ComparedRu
              compare_rule_text(args.max_error));
 }
 
+// The comparison as a row of the store (db/store/comparison_store.hpp).
+db::ComparisonRow comparison_row(const CompareArgs& args,
+                                 const std::vector<std::string>& observables, const ComparedRun& d,
+                                 const ComparedRun& r, const ComparisonOutcome& o,
+                                 const ComparePrediction& p, const nlohmann::json& document) {
+  db::ComparisonRow row;
+  row.scene = args.scene.string();
+  row.deformable_hash = d.hash;
+  row.rigid_hash = r.hash;
+  row.rigid_bodies = fmt::format("{}", fmt::join(args.rigid, ","));
+  row.observables = fmt::format("{}", fmt::join(observables, ","));
+  row.max_error = args.max_error;
+  row.cost_ratio = o.cost_ratio;
+  row.unusable = o.unusable;
+  if (o.unusable.empty()) {
+    row.worst_error = o.decision.worst_error;
+    row.answer = o.decision.model == study::ImpactModel::rigid ? "rigid" : "deformable";
+  }
+  if (p.recommendation)
+    row.predicted = p.recommendation->model == study::ImpactModel::rigid ? "rigid" : "deformable";
+  row.agrees = p.agrees;
+  row.prediction_note = p.note;
+  row.document = document.dump();
+  return row;
+}
+
 int compare(const CompareArgs& args) {
   set_default_threads(resolve_threads(args.threads, available_cores()));
   const std::string text = read_config_text(args.scene);
@@ -218,6 +246,8 @@ int compare(const CompareArgs& args) {
   check_observables(observables, deformable.history->columns(), rigid.history->columns());
   const fs::path out =
       args.out.empty() ? fs::path("compare-" + args.scene.stem().string()) : args.out;
+  // A --db that is there must be a ccm store this ccm can read and write: checked before the runs.
+  if (fs::exists(args.db)) db::StudyStore check(args.db, db::Access::read_only);
   if (fs::exists(out) && !fs::is_directory(out))
     throw std::invalid_argument(
         fmt::format("--out {}: exists and is not a directory", out.string()));
@@ -231,12 +261,22 @@ int compare(const CompareArgs& args) {
       o, args.max_error);
   nlohmann::json j = comparison_json(args, observables, d, r, o);
   j["study_prediction"] = prediction_json(args.db, prediction);
+  // Recorded in the study's store, for `ccm report`, when there is one.
+  std::string recorded = fmt::format("not recorded: no store at {}", args.db.string());
+  if (fs::is_regular_file(args.db)) {
+    const long long id =
+        db::record_comparison(args.db, comparison_row(args, observables, d, r, o, prediction, j));
+    recorded =
+        fmt::format("recorded in {} (comparison {}; `ccm report` shows it)", args.db.string(), id);
+  }
+  j["store"] = recorded;
   write_atomic(out / "comparison.json", j.dump(2) + "\n");
   if (args.json)
     print_json(j);
   else {
     print_table(args, d, r, o);
     print_prediction(args.db, prediction);
+    fmt::print("\n  {}\n", recorded);
   }
   if (!o.unusable.empty()) return exit_code::unstable;
   return exit_code::completed;
@@ -252,6 +292,9 @@ int compare_command(const CompareArgs& args) {
     return exit_code::bad_input;
   } catch (const std::invalid_argument& e) {
     fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const db::StoreError& e) {
+    fmt::print(stderr, "ccm: error: --db {}\n", e.what());
     return exit_code::bad_input;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ccm: internal error: {}\n", e.what());

@@ -322,7 +322,34 @@ CREATE TABLE study_grids (
 );
 )sql";
 
-constexpr std::array<const char*, 5> kSteps = {kStep1, kStep2, kStep3, kStep4, kStep5};
+// Step 6: `ccm compare` (docs/compare.md) records each comparison of a scene with some of its
+// bodies rigid: what was compared, the measured answer and the study's prediction beside it,
+// with the whole comparison.json document and provenance.
+constexpr const char* kStep6 = R"sql(
+CREATE TABLE comparisons (
+  id INTEGER PRIMARY KEY,
+  scene TEXT NOT NULL,
+  deformable_hash TEXT NOT NULL,
+  rigid_hash TEXT NOT NULL,
+  rigid_bodies TEXT NOT NULL,
+  observables TEXT NOT NULL,
+  max_error REAL NOT NULL,
+  worst_error REAL,
+  cost_ratio REAL,
+  answer TEXT,
+  unusable TEXT NOT NULL DEFAULT '',
+  predicted TEXT,
+  agrees INTEGER,
+  prediction_note TEXT NOT NULL DEFAULT '',
+  document TEXT NOT NULL,
+  ccm_version TEXT NOT NULL,
+  git_hash TEXT NOT NULL,
+  host TEXT NOT NULL,
+  recorded_at TEXT NOT NULL
+);
+)sql";
+
+constexpr std::array<const char*, 6> kSteps = {kStep1, kStep2, kStep3, kStep4, kStep5, kStep6};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "db/store/comparison_store.hpp"
 #include "db/store/rig_reader.hpp"
 #include "db/store/study_store.hpp"
 #include "records/point_metrics.hpp"
@@ -46,6 +47,7 @@ struct ReportData {
   // The grid file the study was run from (schema step 5); empty for an older store.
   std::optional<study::GridSpec> grid_spec{};
   RigReportData rig{};
+  std::vector<db::ComparisonRow> comparisons{};  // `ccm compare` records (schema step 6)
 };
 
 // True for the points of the convergence mode (they carry other_axes["mesh_scale"]).

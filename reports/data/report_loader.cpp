@@ -55,6 +55,7 @@ ReportData load_report_data(const db::StudyStore& store) {
   if (const auto grid = store.load_grid())
     data.grid_spec = study::parse_grid(grid->text, grid->source);
   data.rig = load_rig_report_data(store.connection());
+  data.comparisons = db::load_comparisons(store.connection());
   return data;
 }
 

@@ -81,7 +81,7 @@ TEST_CASE(
     const fs::path db = synthetic_store(dir, "old.sqlite");
     {
       db::Connection c(db);  // back to schema 4: without step 5's tables (the study's grid)
-      c.exec("DROP TABLE study_grids; PRAGMA user_version = 4");
+      c.exec("DROP TABLE comparisons; DROP TABLE study_grids; PRAGMA user_version = 4");
     }
     const auto before = snapshot(db.parent_path());
     const auto r = test::run_ccm(status_of(db), dir);

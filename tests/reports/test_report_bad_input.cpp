@@ -122,7 +122,7 @@ TEST_CASE("ccm report reads an older store holding runs and reports them", "[rep
   test::write_synthetic_study(file);
   {
     // A schema-1 store: the run ledger (schema step 1) without the tables and columns of steps
-    // 2-5.
+    // 2-6.
     db::Connection c(file);
     c.exec(
         "DROP TABLE rig_calibration_evaluations; DROP TABLE rig_calibration_parameters; "
@@ -135,6 +135,7 @@ TEST_CASE("ccm report reads an older store holding runs and reports them", "[rep
                                "dt_contact_min", "reuses_run_id"})  // step 4's
       c.exec(std::string("ALTER TABLE runs DROP COLUMN ") + column);
     c.exec("DROP TABLE study_grids;");  // step 5's
+    c.exec("DROP TABLE comparisons;");  // step 6's
     c.exec("PRAGMA user_version = 1");
   }
   const fs::path out = dir.path / "report";

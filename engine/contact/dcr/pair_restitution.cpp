@@ -20,13 +20,13 @@ PairRestitution::PairRestitution(const ModelMesh& mesh, double restitution,
 // centre, I = sum m (|r|^2 1 - r r^T)). A rigid body's nodes carry no lumped mass (its mass is
 // its own, engine/body/): it is anchored here, and its motion is read with equal node weights,
 // which recover a rigid velocity field exactly.
-RigidMotion PairRestitution::motion_of(int body, const State& s, double dt) const {
+BodyRigidPart PairRestitution::motion_of(int body, const State& s, double dt) const {
   const NodeRange& b = bodies_[static_cast<size_t>(body)];
   bool massless = true;
   for (int n = b.first; n < b.first + b.count && massless; ++n)
     massless = s.m_lumped[static_cast<size_t>(n)] == 0.0;
   auto weight = [&](size_t i) { return massless ? 1.0 : s.m_lumped[i]; };
-  RigidMotion r;
+  BodyRigidPart r;
   Vec3 p = Vec3::Zero(), mx = Vec3::Zero();
   for (int n = b.first; n < b.first + b.count; ++n) {
     const auto i = static_cast<size_t>(n);
@@ -61,7 +61,7 @@ void PairRestitution::before_solve(const std::vector<std::pair<int, int>>& near,
   }
 }
 
-double PairRestitution::apply_rigid_impulse(int body, const RigidMotion& motion,
+double PairRestitution::apply_rigid_impulse(int body, const BodyRigidPart& motion,
                                             const Vec3& impulse, const Vec3& point, State& s,
                                             double dt) const {
   const NodeRange& b = bodies_[static_cast<size_t>(body)];
@@ -84,7 +84,7 @@ bool PairRestitution::close(const Episode& ep, int a, int b, State& s, double dt
   if (!(ep.weight > 0.0) || !(ep.impulse.norm() > 0.0)) return true;
   const Vec3 n = ep.impulse.normalized(), P = ep.weighted_point / ep.weight;
   need_whole_bodies();
-  const RigidMotion A = motion_of(a, s, dt), B = motion_of(b, s, dt);
+  const BodyRigidPart A = motion_of(a, s, dt), B = motion_of(b, s, dt);
   const double u_out = n.dot(B.velocity_at(P) - A.velocity_at(P));
   if (u_out < 0.0) return false;  // still approaching: the episode goes on
   const double u_in = n.dot(ep.b_in.velocity_at(P) - ep.a_in.velocity_at(P));

@@ -33,9 +33,9 @@
 
 namespace ccm::dcr {
 
-// Rigid-body motion of one body: mass, centre, velocity of the centre, angular velocity, and the
-// inverse inertia about the centre.
-struct RigidMotion {
+// The rigid-body part of one (deformable) body's motion: mass, centre, velocity of the centre,
+// angular velocity, and the inverse inertia about the centre.
+struct BodyRigidPart {
   double mass = 0.0;
   Vec3 centre = Vec3::Zero(), velocity = Vec3::Zero(), omega = Vec3::Zero();
   Mat3 inv_inertia = Mat3::Zero();
@@ -77,14 +77,14 @@ class PairRestitution {
 
  private:
   struct Episode {
-    RigidMotion a_in, b_in;       // motions when the episode began
+    BodyRigidPart a_in, b_in;     // motions when the episode began
     Vec3 impulse = Vec3::Zero();  // accumulated impulse on B
     Vec3 weighted_point = Vec3::Zero();
     double weight = 0.0;
     bool started = false;  // a touching step has been seen
     bool touched = false;  // touching in the current step
   };
-  RigidMotion motion_of(int body, const State& s, double dt) const;
+  BodyRigidPart motion_of(int body, const State& s, double dt) const;
   void need_whole_bodies() const {
     if (team_) team_->make_whole_bodies_current();
   }
@@ -92,7 +92,7 @@ class PairRestitution {
   bool close(const Episode& ep, int a, int b, State& s, double dt, double& energy_change);
   // Applies the impulse at `point` to body `body` as a rigid velocity change; returns the
   // kinetic energy change.
-  double apply_rigid_impulse(int body, const RigidMotion& motion, const Vec3& impulse,
+  double apply_rigid_impulse(int body, const BodyRigidPart& motion, const Vec3& impulse,
                              const Vec3& point, State& s, double dt) const;
 
   struct NodeRange {
