@@ -47,11 +47,25 @@ RigidBodies::RigidBodies(const ModelMesh& mesh, const std::vector<RigidBodyModel
       pins_.back()->place(b);
     }
   }
+  for (const RigidBodyModel& m : models) split_nodes(mesh.bodies[static_cast<size_t>(m.body)]);
   force_.assign(bodies_.size(), Vec3::Zero());
   torque_.assign(bodies_.size(), Vec3::Zero());
   impulse_.assign(mesh.bodies.size(), HeldImpulse{});
   contact_impulse_.assign(bodies_.size(), Vec3::Zero());
   contact_angular_impulse_.assign(bodies_.size(), Vec3::Zero());
+}
+
+// A body's nodes on its boundary triangles (what contact and loads read every step) and the rest.
+void RigidBodies::split_nodes(const Body& body) {
+  std::vector<char> on_surface(static_cast<size_t>(body.n_nodes), 0);
+  for (const Triangle& t : body.boundary)
+    for (int n : t) on_surface[static_cast<size_t>(n - body.first_node)] = 1;
+  surface_nodes_.emplace_back();
+  interior_nodes_.emplace_back();
+  for (int n = body.first_node; n < body.first_node + body.n_nodes; ++n)
+    (on_surface[static_cast<size_t>(n - body.first_node)] ? surface_nodes_ : interior_nodes_)
+        .back()
+        .push_back(n);
 }
 
 void RigidBodies::publish(int k, State& s) const {
@@ -72,13 +86,12 @@ void RigidBodies::publish(int k, State& s) const {
   r.inverse_inertia = R * b.principal_moments().cwiseInverse().asDiagonal() * R.transpose();
 }
 
-void RigidBodies::place_nodes(int k, State& s) const {
+void RigidBodies::place_nodes(int k, State& s, const std::vector<int>& nodes) const {
   const RigidBody& b = bodies_[static_cast<size_t>(k)];
-  const Body& body = mesh_.bodies[static_cast<size_t>(models_[static_cast<size_t>(k)]->body)];
   const Mat3 R = b.rotation().toRotationMatrix();
   const Vec3 c0 = b.reference_center(), c = b.center(), V = b.velocity();
   const Vec3 w = b.angular_velocity();
-  for (int n = body.first_node; n < body.first_node + body.n_nodes; ++n) {
+  for (int n : nodes) {
     const auto i = static_cast<size_t>(n);
     const Vec3 r = R * (s.X[i] - c0);
     s.x[i] = c + r;
@@ -91,7 +104,8 @@ void RigidBodies::initialise(State& s) const {
   for (int k = 0; k < size(); ++k) {
     publish(k, s);
     if (model(k).motion != RigidMotion::fixed) {
-      place_nodes(k, s);
+      place_nodes(k, s, surface_nodes_[static_cast<size_t>(k)]);
+      place_nodes(k, s, interior_nodes_[static_cast<size_t>(k)]);
       continue;
     }
     const Body& body = mesh_.bodies[static_cast<size_t>(model(k).body)];  // x = X exactly
@@ -140,9 +154,15 @@ void RigidBodies::predict(State& s, double dt, double t_n) {
       b.set_velocity(V);
       b.set_angular_velocity(w);
     }
-    place_nodes(k, s);
+    place_nodes(k, s, surface_nodes_[static_cast<size_t>(k)]);
     publish(k, s);
   }
+}
+
+void RigidBodies::place_interior(State& s) const {
+  for (int k = 0; k < size(); ++k)
+    if (model(k).motion != RigidMotion::fixed)
+      place_nodes(k, s, interior_nodes_[static_cast<size_t>(k)]);
 }
 
 void RigidBodies::take_impulses(const std::vector<HeldImpulse>& per_body) {
@@ -178,7 +198,7 @@ void RigidBodies::finish(State& s, double dt) {
       b.set_velocity(at(m.prescribed_velocity, s.t));
       b.set_angular_velocity(at(m.prescribed_angular_velocity, s.t));
     }
-    if (m.motion != RigidMotion::fixed) place_nodes(k, s);
+    if (m.motion != RigidMotion::fixed) place_nodes(k, s, surface_nodes_[static_cast<size_t>(k)]);
     publish(k, s);
   }
 }

@@ -48,8 +48,11 @@ class RigidBodies {
   // This step's impulses of a constraint-type contact on the held bodies (one entry per mesh
   // body): taken by the free and pinned bodies at finish().
   void take_impulses(const std::vector<HeldImpulse>& per_body);
+  // Between output samples only the bodies' surface nodes move with them (what contact and
+  // loads read); place_interior() places the rest, before a sample reads every node.
   void predict(State& s, double dt, double t_n);
   void finish(State& s, double dt);
+  void place_interior(State& s) const;
 
   // Kinetic energy of the free and pinned bodies [J]; work of gravity on them, m g . (c - c_0) [J].
   // A kinematic body's energy is its driver's business and enters neither.
@@ -70,14 +73,16 @@ class RigidBodies {
   const std::string& failure() const { return failure_; }
 
  private:
-  void place_nodes(int k, State& s) const;
+  void place_nodes(int k, State& s, const std::vector<int>& nodes) const;
+  void split_nodes(const Body& body);
   void publish(int k, State& s) const;
 
   const ModelMesh& mesh_;
   std::vector<const RigidBodyModel*> models_;
   std::vector<RigidBody> bodies_;
-  std::vector<std::optional<PinnedMotion>> pins_;  // per body: set for a pinned one
-  std::vector<Vec3> force_, torque_;               // resultant about c, at the last gather
+  std::vector<std::optional<PinnedMotion>> pins_;                 // per body: set for a pinned one
+  std::vector<std::vector<int>> surface_nodes_, interior_nodes_;  // per body
+  std::vector<Vec3> force_, torque_;  // resultant about c, at the last gather
   std::vector<HeldImpulse> impulse_;  // this step's contact impulses, moments about the origin
   std::vector<Vec3> contact_impulse_, contact_angular_impulse_;  // since t = 0
   double contact_work_ = 0.0;

@@ -375,6 +375,7 @@ bool CentralDifference::output_due() const {
 }
 
 void CentralDifference::sample() {
+  rigid_.place_interior(s_);  // a sample reads every node
   if (opt_.coupling) return opt_.coupling->sample(s_, body_energy_);
   if (opt_.history) opt_.history->sample(s_, body_energy_);
   if (opt_.on_sample) opt_.on_sample(s_);
