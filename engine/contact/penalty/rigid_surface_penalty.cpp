@@ -103,15 +103,9 @@ void RigidSurfacePenalty::add_forces(State& s) {
     const Triangle& T = tris_[t];
     for (int k = 0; k < 3; ++k) {
       const auto N = surface_point_weights(k);
-      Vec3 x = Vec3::Zero(), v = Vec3::Zero();
-      double m = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        const auto i = static_cast<size_t>(T[static_cast<size_t>(a)]);
-        x += N[static_cast<size_t>(a)] * s.x[i];
-        v += N[static_cast<size_t>(a)] * s.v[i];
-        m += N[static_cast<size_t>(a)] * s.m_lumped[i] /
-             triangles_at_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
-      }
+      Vec3 x = Vec3::Zero();
+      for (int a = 0; a < 3; ++a)
+        x += N[static_cast<size_t>(a)] * s.x[static_cast<size_t>(T[static_cast<size_t>(a)])];
       // Beyond the body's bounding sphere a point is outside: no query.
       if ((x - r->center).squaredNorm() > bound2_) continue;
       SurfacePoint hit;
@@ -127,6 +121,14 @@ void RigidSurfacePenalty::add_forces(State& s) {
       }
       ++n_active_;
       penetration_max_ = std::max(penetration_max_, hit.depth);
+      Vec3 v = Vec3::Zero();
+      double m = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        const auto i = static_cast<size_t>(T[static_cast<size_t>(a)]);
+        v += N[static_cast<size_t>(a)] * s.v[i];
+        m += N[static_cast<size_t>(a)] * s.m_lumped[i] /
+             triangles_at_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
+      }
       const Vec3 n = r->rotation * hit.normal;
       const double u_n = n.dot(v - (r->velocity + r->angular_velocity.cross(x - r->center)));
       const double c = 2.0 * params_.damping * std::sqrt(K * m);

@@ -62,6 +62,7 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
     const Vec3 &a = vertices_[static_cast<size_t>(T[0])], &b = vertices_[static_cast<size_t>(T[1])],
                &c = vertices_[static_cast<size_t>(T[2])];
     face_normal_.push_back((b - a).cross(c - a).normalized());
+    triangle_box_.push_back({a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)});
     for (int k = 0; k < 3; ++k) {
       const int i = T[static_cast<size_t>(k)], j = T[static_cast<size_t>((k + 1) % 3)],
                 l = T[static_cast<size_t>((k + 2) % 3)];
@@ -198,8 +199,13 @@ double SurfaceDistance::box_distance2(const Vec3& p, const std::array<int, 3>& c
   return d2;
 }
 
-// Ties (a shared edge or vertex) go to the lowest triangle: a result independent of the order.
+// Ties (a shared edge or vertex) go to the lowest triangle: a result independent of the order. A
+// triangle whose bounding box is farther than the best so far can neither win nor tie: skipped
+// (the same result, without the closest-point test).
 void SurfaceDistance::consider(int t, const Vec3& p, Nearest& best) const {
+  const auto& box = triangle_box_[static_cast<size_t>(t)];
+  const Vec3 out = (box[0] - p).cwiseMax(p - box[1]).cwiseMax(0.0);
+  if (out.squaredNorm() > best.d2) return;
   std::array<double, 3> w{};
   const double d2 = closest(t, p, w);
   if (d2 < best.d2 || (d2 == best.d2 && t < best.triangle)) best = {d2, t, w};

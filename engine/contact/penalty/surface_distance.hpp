@@ -68,7 +68,8 @@ class SurfaceDistance {
   std::vector<Vec3> vertices_;
   std::vector<Triangle> triangles_;
   std::vector<Vec3> face_normal_;
-  std::vector<std::array<Vec3, 3>> edge_normal_;  // per triangle: edge (k, k+1) pseudo-normal
+  std::vector<std::array<Vec3, 2>> triangle_box_;  // per triangle: its bounding box (min, max)
+  std::vector<std::array<Vec3, 3>> edge_normal_;   // per triangle: edge (k, k+1) pseudo-normal
   std::vector<Vec3> vertex_normal_;
   double h_ = 0.0;
   double deep_ = 0.0;  // depth beyond which a point is `deep`: the longest edge
