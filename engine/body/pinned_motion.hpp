@@ -41,6 +41,7 @@ class PinnedMotion {
   double angle() const { return phi_; }        // [rad] since the reference
   double rate() const { return omega_; }       // [rad/s] about e
   const Vec3& axis() const { return e_; }
+  const Vec3& pivot() const { return pin_.point; }  // p
   double friction_work() const { return friction_work_; }  // [J], <= 0
 
   // RB.8-RB.9 over h with the resultant force F and the moment about c of the body's loads.

@@ -80,10 +80,17 @@ void RigidBodies::publish(int k, State& s) const {
   r.kinetic_energy = b.kinetic_energy();
   r.contact_impulse = contact_impulse_[static_cast<size_t>(k)];
   r.contact_angular_impulse = contact_angular_impulse_[static_cast<size_t>(k)];
+  if (const PinnedMotion* p = pin(k)) {  // turns about the pin only: e e^T / J about its point
+    r.inverse_inertia = p->axis() * p->axis().transpose() / p->axial_inertia();
+    r.pivot = p->pivot();
+    return;
+  }
   if (model(k).motion != RigidMotion::free) return;  // a contact holds the others as anchored
   const Mat3 R = b.orientation().toRotationMatrix();
   r.inverse_mass = 1.0 / b.mass();
   r.inverse_inertia = R * b.principal_moments().cwiseInverse().asDiagonal() * R.transpose();
+  r.pivot = b.center();
+  r.pivot_velocity = b.velocity();
 }
 
 void RigidBodies::place_nodes(int k, State& s, const std::vector<int>& nodes) const {

@@ -22,10 +22,15 @@ struct RigidState {
   // since t = 0 [N s], [N m s]: forces on its nodes and impulses on it alike.
   Vec3 contact_impulse = Vec3::Zero();
   Vec3 contact_angular_impulse = Vec3::Zero();
-  // Its mobility, for a contact model that solves with it: 1/m and I^-1 in world axes; both zero
+  // Its mobility, for a contact model that solves with it: 1/m and I^-1 in world axes about
+  // `pivot`, which moves at `pivot_velocity`. A free body: its centre of mass. A pinned one: 1/m
+  // = 0 and I^-1 = e e^T / J about a point of the pin (docs/rigid-bodies.md, "Pinned"). Both zero
   // for a fixed or prescribed body (infinitely heavy).
   double inverse_mass = 0.0;
   Mat3 inverse_inertia = Mat3::Zero();
+  Vec3 pivot = Vec3::Zero();
+  Vec3 pivot_velocity = Vec3::Zero();
+  bool mobile() const { return inverse_mass > 0.0 || !inverse_inertia.isZero(0.0); }
 };
 
 struct State {

@@ -3,8 +3,11 @@
 namespace ccm::dcr {
 
 double RigidPartner::kinetic_energy() const {
-  const double m = 1.0 / inv_mass;
-  return 0.5 * m * velocity.squaredNorm() + 0.5 * omega.dot(inv_inertia.inverse() * omega);
+  if (inv_mass > 0.0)
+    return 0.5 * velocity.squaredNorm() / inv_mass + 0.5 * omega.dot(inv_inertia.inverse() * omega);
+  // A pinned body: omega lies along e, and e^T I^-1 e = 1 / J.
+  const double w2 = omega.squaredNorm();
+  return w2 > 0.0 ? 0.5 * w2 * w2 / omega.dot(inv_inertia * omega) : 0.0;
 }
 
 void RigidPartners::reset(const State& s, const std::vector<int>& node_body, size_t n_bodies) {
@@ -13,10 +16,10 @@ void RigidPartners::reset(const State& s, const std::vector<int>& node_body, siz
   if (s.rigid.empty()) return;
   body_partner_.assign(n_bodies, -1);
   for (const RigidState& r : s.rigid) {
-    if (!(r.inverse_mass > 0.0) || static_cast<size_t>(r.body) >= n_bodies) continue;
+    if (!r.mobile() || static_cast<size_t>(r.body) >= n_bodies) continue;
     body_partner_[static_cast<size_t>(r.body)] = static_cast<int>(partners_.size());
     partners_.push_back(
-        {r.inverse_mass, r.inverse_inertia, r.center, r.velocity, r.angular_velocity});
+        {r.inverse_mass, r.inverse_inertia, r.pivot, r.pivot_velocity, r.angular_velocity});
   }
 }
 

@@ -1,4 +1,6 @@
-// Free rigid bodies as partners of the DCR velocity solve (docs/rigid-bodies.md, "Contact").
+// Free and pinned rigid bodies as partners of the DCR velocity solve (docs/rigid-bodies.md,
+// "Contact"). A pinned body is the same partner about its pin: 1/m = 0, I^-1 = e e^T / J and c
+// a point of the axis, which does not move (RB.10).
 //
 // The DCR holds every rigid body's nodes (inv_m = 0: the contact never moves them by a nodal
 // mass). A free rigid body still answers an impulse: a row whose nodes a include nodes of body b
@@ -41,7 +43,7 @@ struct RigidRowPart {
 
 class RigidPartners {
  public:
-  // From the state's free rigid bodies (State::rigid with inverse_mass > 0); node_body maps a node
+  // From the state's mobile rigid bodies (RigidState::mobile: free and pinned); node_body maps a node
   // to its body (of n_bodies). Empty when the state has none.
   void reset(const State& s, const std::vector<int>& node_body, size_t n_bodies);
   bool empty() const { return partners_.empty(); }

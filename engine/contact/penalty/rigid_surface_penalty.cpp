@@ -95,7 +95,7 @@ void RigidSurfacePenalty::begin_step(const State& s, double /*dt*/) {
 void RigidSurfacePenalty::add_forces(State& s) {
   const RigidState* r = pose(s);
   if (!r) throw std::logic_error("penalty: the rigid body has no state in this run");
-  free_body_ = r->inverse_mass > 0.0;
+  free_body_ = r->mobile();  // free or pinned: the work on it is in the energy balance
   std::fill(f_now_.begin(), f_now_.end(), Vec3::Zero());
   n_active_ = 0;
   const double K = params_.penalty;
@@ -188,6 +188,14 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
     }
   if (near == 0) return {};
   omega2 += K * near * r->inverse_mass;
+  // A pinned body answers by turning: its springs at up to `reach` from the axis load 1/J r^2.
+  if (r->inverse_mass == 0.0 && r->mobile()) {
+    double lever = 0.0;
+    for (size_t i = 0; i < nodes_.size(); ++i)
+      if (rigid_node_[i])
+        lever = std::max(lever, (s.x[static_cast<size_t>(nodes_[i])] - r->pivot).norm());
+    omega2 += K * near * lever * lever * r->inverse_inertia.norm();
+  }
   ContactStepBound b;
   b.stiffness_dt = 2.0 / std::sqrt(omega2) * damping_factor_;
   if (v_rel > 0.0) b.kinematic_dt = 0.5 * distance_.deep_depth() / v_rel;
