@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ccm::dcr {
 namespace {
@@ -16,11 +17,31 @@ PairRestitution::PairRestitution(const ModelMesh& mesh, double restitution,
   for (const Body& b : mesh.bodies) bodies_.push_back({b.first_node, b.n_nodes});
 }
 
+namespace {
+
+// A free or pinned rigid body (engine/body/): its own mobility, about its pivot (the centre of
+// mass, or a point of the pin, which does not move), from the published state. Null otherwise.
+const RigidState* mobile_rigid(int body, const State& s) {
+  for (const RigidState& r : s.rigid)
+    if (r.body == body && r.mobile()) return &r;
+  return nullptr;
+}
+
+}  // namespace
+
 // Mass, centre, linear and angular velocity of one body (angular: omega = I^-1 L about the
-// centre, I = sum m (|r|^2 1 - r r^T)). A rigid body's nodes carry no lumped mass (its mass is
-// its own, engine/body/): it is anchored here, and its motion is read with equal node weights,
-// which recover a rigid velocity field exactly.
+// centre, I = sum m (|r|^2 1 - r r^T)). A free or pinned rigid body's are its own (a pinned one's
+// mass is infinite: 1/m = 0). A fixed or prescribed rigid body's nodes carry no lumped mass: it
+// is anchored here, and its motion is read with equal node weights, which recover a rigid
+// velocity field exactly.
 BodyRigidPart PairRestitution::motion_of(int body, const State& s, double dt) const {
+  if (const RigidState* r = mobile_rigid(body, s))
+    return {.mass = r->inverse_mass > 0.0 ? 1.0 / r->inverse_mass
+                                          : std::numeric_limits<double>::infinity(),
+            .centre = r->pivot,
+            .velocity = r->pivot_velocity,
+            .omega = r->angular_velocity,
+            .inv_inertia = r->inverse_inertia};
   const NodeRange& b = bodies_[static_cast<size_t>(body)];
   bool massless = true;
   for (int n = b.first; n < b.first + b.count && massless; ++n)
@@ -90,9 +111,13 @@ bool PairRestitution::close(const Episode& ep, int a, int b, State& s, double dt
   const double u_in = n.dot(ep.b_in.velocity_at(P) - ep.a_in.velocity_at(P));
   const double target = e_ * std::max(0.0, -u_in);
   if (u_out <= target) return true;
-  double K = 0.0;  // n . (relative velocity at P) per unit impulse along n
-  for (const auto& [X, anchored] : {std::pair{&A, anchored_[static_cast<size_t>(a)]},
-                                    std::pair{&B, anchored_[static_cast<size_t>(b)]}}) {
+  // n . (relative velocity at P) per unit impulse along n. A free or pinned rigid body is anchored
+  // for the nodal impulse (its nodes are held) but answers with its own mobility: its share of the
+  // impulse reaches it as a held impulse (DcrContact::add_held_impulses).
+  double K = 0.0;
+  for (const auto& [X, anchored] :
+       {std::pair{&A, anchored_[static_cast<size_t>(a)] && !mobile_rigid(a, s)},
+        std::pair{&B, anchored_[static_cast<size_t>(b)] && !mobile_rigid(b, s)}}) {
     if (anchored) continue;
     const Vec3 r = P - X->centre;
     K += 1.0 / X->mass + n.dot((X->inv_inertia * r.cross(n)).cross(r));
