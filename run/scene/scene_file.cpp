@@ -336,6 +336,15 @@ std::vector<std::array<double, 4>> parse_vector_history(const Table& t, std::str
   return points;
 }
 
+// A pin's Coulomb friction: mu_s >= 0 (default 0) and mu_k in [0, mu_s] (default mu_s).
+void parse_pin_friction(const Table& t, double& mu_s, double& mu_k) {
+  mu_s = t.get_or("mu_s", 0.0);
+  if (!kFrictionRange.contains(mu_s)) t.fail("mu_s", kFrictionRange.problem(mu_s));
+  mu_k = t.get_or("mu_k", mu_s);
+  if (!kFrictionRange.contains(mu_k)) t.fail("mu_k", kFrictionRange.problem(mu_k));
+  if (mu_k > mu_s) t.fail("mu_k", fmt::format("must be at most mu_s ({})", mu_s));
+}
+
 // motion = "pinned": [bodies.pin] (docs/rigid-bodies.md, "Pinned"); an initial angular velocity
 // must turn the body about the pin.
 void parse_pin(const Table& body, BodySpec& b) {
@@ -345,11 +354,7 @@ void parse_pin(const Table& body, BodySpec& b) {
   RigidPin& pin = b.pin;
   pin.point = t.need<Vec3>("point");
   pin.axis = non_zero(t, "axis", t.need<Vec3>("axis"));
-  pin.mu_s = t.get_or("mu_s", pin.mu_s);
-  if (!kFrictionRange.contains(pin.mu_s)) t.fail("mu_s", kFrictionRange.problem(pin.mu_s));
-  pin.mu_k = t.get_or("mu_k", pin.mu_s);
-  if (!kFrictionRange.contains(pin.mu_k)) t.fail("mu_k", kFrictionRange.problem(pin.mu_k));
-  if (pin.mu_k > pin.mu_s) t.fail("mu_k", fmt::format("must be at most mu_s ({})", pin.mu_s));
+  parse_pin_friction(t, pin.mu_s, pin.mu_k);
   pin.radius = t.get_or("radius", pin.radius);
   if (!(pin.radius >= 0.0)) t.fail("radius", fmt::format("must be >= 0 (got {})", pin.radius));
   if ((pin.mu_s > 0.0) != (pin.radius > 0.0))
@@ -522,11 +527,7 @@ JointSpec parse_joint(const Table& t) {
     t.allow_only({"kind", "body", "node_set", "box", "plane", "point", "axis", "mu_s", "mu_k"});
     j.point = t.need<Vec3>("point");
     j.axis = non_zero(t, "axis", t.need<Vec3>("axis"));
-    j.mu_s = t.get_or("mu_s", j.mu_s);
-    if (!kFrictionRange.contains(j.mu_s)) t.fail("mu_s", kFrictionRange.problem(j.mu_s));
-    j.mu_k = t.get_or("mu_k", j.mu_s);
-    if (!kFrictionRange.contains(j.mu_k)) t.fail("mu_k", kFrictionRange.problem(j.mu_k));
-    if (j.mu_k > j.mu_s) t.fail("mu_k", fmt::format("must be at most mu_s ({})", j.mu_s));
+    parse_pin_friction(t, j.mu_s, j.mu_k);
   } else if (kind == "slide") {
     t.allow_only({"kind", "body", "node_set", "box", "plane", "direction"});
     j.kind = JointKind::slide;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "run/scene/scene_file.hpp"
+#include "run/scene/scene_run.hpp"
 
 namespace ccm::test {
 
@@ -24,6 +25,17 @@ inline const std::string kOneCubeScene = kTimeToml + cube_body_toml("cube");
 inline std::string scene_error_of(const std::string& text) {
   try {
     parse_scene(text, "s.toml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// The message of the ConfigError that parsing and assembling `text` (as "s.toml": model,
+// contact, joints) throws, or "(no error)".
+inline std::string assembly_error_of(const std::string& text) {
+  try {
+    assemble_scene_run(parse_scene(text, "s.toml"));
   } catch (const ConfigError& e) {
     return e.what();
   }

@@ -35,7 +35,8 @@ std::string build_error_of(const std::string& text) {
 // A contact model that reports a failure from a given step on.
 class FailingContact : public ContactModel {
  public:
-  explicit FailingContact(int fail_at) : ContactModel("failing", kCorrectionPhases), fail_at_(fail_at) {}
+  explicit FailingContact(int fail_at)
+      : ContactModel("failing", kCorrectionPhases), fail_at_(fail_at) {}
   void begin_step(const State& /*state*/, double /*dt*/) override {}
   void add_forces(State& /*state*/) override {}
   void correct(State& /*state*/, double /*dt*/) override {}

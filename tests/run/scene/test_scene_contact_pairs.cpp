@@ -40,17 +40,6 @@ const std::string kLower =
     "[[contact.pairs]]\nname = \"lower\"\nmodel = \"penalty\"\nbody = \"bottom\"\n"
     "rigid = \"slab\"\npenalty = 1e4\n";
 
-std::string pairs_error_of(const std::string& text) {
-  try {
-    const Scene scene = parse_scene(text, "s.toml");
-    const Model model = build_model(scene);
-    build_contact(scene, model);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 }  // namespace
 
 TEST_CASE("contact pairs: DCR above and penalty below a free rigid slab keep the total momentum",
@@ -108,20 +97,21 @@ TEST_CASE("contact pairs: what a pair may not be is refused with file, line and 
   // Two DCR pairs sharing the slab: one solve must hold both (one pair, three surfaces).
   const std::string second_dcr =
       "[[contact.pairs]]\nname = \"under\"\nmodel = \"dcr\"\nsurfaces = [\"bottom\", \"slab\"]\n";
-  CHECK_THAT(pairs_error_of(bodies + kUpper + second_dcr),
+  CHECK_THAT(test::assembly_error_of(bodies + kUpper + second_dcr),
              Contains("s.toml:") && Contains("contact.pairs") && Contains("surfaces") &&
                  Contains("also in DCR pair 'upper'") && Contains("list all of their surfaces"));
   // A name used twice, a name that is a body's, an unknown model, "none" as a pair, a stray key.
-  CHECK_THAT(pairs_error_of(bodies + kUpper + kUpper), Contains("pair name 'upper' is used twice"));
-  CHECK_THAT(pairs_error_of(bodies + "[[contact.pairs]]\nname = \"top\"\nmodel = \"dcr\"\n"
-                                     "surfaces = [\"top\", \"slab\"]\n"),
+  CHECK_THAT(test::assembly_error_of(bodies + kUpper + kUpper),
+             Contains("pair name 'upper' is used twice"));
+  CHECK_THAT(test::assembly_error_of(bodies + "[[contact.pairs]]\nname = \"top\"\nmodel = \"dcr\"\n"
+                                              "surfaces = [\"top\", \"slab\"]\n"),
              Contains("'top' is also the name of a body"));
-  CHECK_THAT(pairs_error_of(bodies + "[[contact.pairs]]\nmodel = \"none\"\n"),
+  CHECK_THAT(test::assembly_error_of(bodies + "[[contact.pairs]]\nmodel = \"none\"\n"),
              Contains("contact.pairs") && Contains("must be one of \"dcr\""));
-  CHECK_THAT(pairs_error_of(bodies + kUpper + "restitution = 0.5\nsensor = [\"top\"]\n"),
+  CHECK_THAT(test::assembly_error_of(bodies + kUpper + "restitution = 0.5\nsensor = [\"top\"]\n"),
              Contains("unknown key 'sensor'") && Contains("did you mean 'sensors'"));
   // [contact] with pairs takes nothing else.
-  CHECK_THAT(pairs_error_of(bodies + "[contact]\nmodel = \"dcr\"\n" + kUpper),
+  CHECK_THAT(test::assembly_error_of(bodies + "[contact]\nmodel = \"dcr\"\n" + kUpper),
              Contains("contact.model") && Contains("unknown key"));
   // Unnamed pairs are pair1, pair2, ... in their history columns.
   const Scene unnamed = parse_scene(bodies +
@@ -130,7 +120,7 @@ TEST_CASE("contact pairs: what a pair may not be is refused with file, line and 
                                         kLower,
                                     "s.toml");
   CHECK(unnamed.contacts.at(0).name == "pair1");
-  CHECK(pairs_error_of(bodies + kUpper + kLower) == "(no error)");
+  CHECK(test::assembly_error_of(bodies + kUpper + kLower) == "(no error)");
 }
 
 TEST_CASE("contact pairs: the pad, limb and table example runs with both of its pairs acting",

@@ -19,15 +19,6 @@ using namespace ccm;
 
 namespace {
 
-std::string joint_scene_error_of(const std::string& text) {
-  try {
-    assemble_scene_run(parse_scene(text, "s.toml"));
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 // A 10 x 10 x 100 mm bar centred on the origin, turned by theta about +y (lines 1-20).
 std::string tilted_bar(double end, double theta_deg) {
   return fmt::format(
@@ -127,32 +118,32 @@ TEST_CASE("joints: a stiff bar on a pin swings with the compound pendulum's peri
 
 TEST_CASE("joints: what cannot be a joint is refused with file, line and key", "[scene][joints]") {
   const std::string cube = test::kOneCubeScene;  // lines 1-12
-  CHECK_THAT(joint_scene_error_of(cube + "[[joints]]\nkind = \"hinge\"\n"),
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"hinge\"\n"),
              Contains("s.toml:14: joints[0].kind") && Contains("\"pin\", \"slide\""));
-  CHECK_THAT(joint_scene_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
-                                         "0.0]\nbox = {min = [5.0, 5.0, 5.0], max = [6.0, 6.0, "
-                                         "6.0]}\n"),
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
+                                            "0.0]\nbox = {min = [5.0, 5.0, 5.0], max = [6.0, 6.0, "
+                                            "6.0]}\n"),
              Contains("joints[0].box") && Contains("selects no node"));
-  CHECK_THAT(joint_scene_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [0.0, 0.0, "
-                                         "0.0]\nnode_set = \"cube/boundary\"\n"),
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [0.0, 0.0, "
+                                            "0.0]\nnode_set = \"cube/boundary\"\n"),
              Contains("joints[0].direction"));
-  CHECK_THAT(joint_scene_error_of(cube + "[[joints]]\nkind = \"pin\"\npoint = [0.0, 0.0, 0.0]\n"
-                                         "axis = [0.0, 1.0, 0.0]\nmu_s = 0.1\nmu_k = 0.2\n"
-                                         "node_set = \"cube/boundary\"\n"),
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"pin\"\npoint = [0.0, 0.0, 0.0]\n"
+                                            "axis = [0.0, 1.0, 0.0]\nmu_s = 0.1\nmu_k = 0.2\n"
+                                            "node_set = \"cube/boundary\"\n"),
              Contains("joints[0].mu_k") && Contains("at most mu_s"));
-  CHECK_THAT(joint_scene_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
-                                         "0.0]\nnode_set = \"cube/boundary\"\naxis = [1.0, 0.0, "
-                                         "0.0]\n"),
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
+                                            "0.0]\nnode_set = \"cube/boundary\"\naxis = [1.0, 0.0, "
+                                            "0.0]\n"),
              Contains("unknown key 'axis'"));
   // A pin whose nodes all lie on its axis has no ring to turn.
-  CHECK_THAT(joint_scene_error_of(cube + "[[joints]]\nkind = \"pin\"\npoint = [0.0, 0.0, 0.0]\n"
-                                         "axis = [0.0, 1.0, 0.0]\nbox = {min = [-1e-6, -1.0, "
-                                         "-1e-6], max = [1e-6, 1.0, 1e-6]}\n"),
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"pin\"\npoint = [0.0, 0.0, 0.0]\n"
+                                            "axis = [0.0, 1.0, 0.0]\nbox = {min = [-1e-6, -1.0, "
+                                            "-1e-6], max = [1e-6, 1.0, 1e-6]}\n"),
              Contains("joints[0].box"));
   // A rigid body's nodes: its pin is its motion.
   std::string rigid = cube;
   rigid.insert(rigid.find("[bodies.material]"), "kind = \"rigid\"\n");
-  CHECK_THAT(joint_scene_error_of(rigid + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
-                                          "0.0]\nnode_set = \"cube/boundary\"\n"),
+  CHECK_THAT(test::assembly_error_of(rigid + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
+                                             "0.0]\nnode_set = \"cube/boundary\"\n"),
              Contains("rigid body 'cube'") && Contains("motion = \"pinned\""));
 }

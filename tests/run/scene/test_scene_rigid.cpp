@@ -21,17 +21,6 @@ std::string rigid_cube(const std::string& keys) {
   return test::kTimeToml + body.substr(0, at) + keys + body.substr(at);
 }
 
-std::string rigid_scene_error_of(const std::string& text) {
-  try {
-    const Scene scene = parse_scene(text, "s.toml");
-    const Model model = build_model(scene);
-    build_contact(scene, model);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 }  // namespace
 
 TEST_CASE(
@@ -101,20 +90,20 @@ TEST_CASE(
     "[rigid-body][scene]") {
   const std::string fixed_rigid =
       rigid_cube("kind = \"rigid\"\n") + "[[fixed]]\nbody = \"cube\"\nnode_set = \"boundary\"\n";
-  CHECK_THAT(rigid_scene_error_of(fixed_rigid), Contains("s.toml:16") &&
-                                                    Contains("rigid body 'cube'") &&
-                                                    Contains("motion = \"fixed\""));
+  CHECK_THAT(test::assembly_error_of(fixed_rigid), Contains("s.toml:16") &&
+                                                       Contains("rigid body 'cube'") &&
+                                                       Contains("motion = \"fixed\""));
   const std::string loaded_fixed =
       rigid_cube("kind = \"rigid\"\nmotion = \"fixed\"\n") +
       "[[surface_loads]]\nbody = \"cube\"\nsurface = \"boundary\"\ndirection = [0.0, 0.0, 1.0]\n"
       "force = [[0.0, 1.0]]\n";
-  CHECK_THAT(rigid_scene_error_of(loaded_fixed),
+  CHECK_THAT(test::assembly_error_of(loaded_fixed),
              Contains("s.toml:17") && Contains("whose motion is \"fixed\""));
   const std::string penalty = rigid_cube("kind = \"rigid\"\n") +
                               "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\n"
                               "[contact.sphere]\nradius = 0.005\nmass = 0.01\n"
                               "center = [0.005, 0.005, 0.02]\n";
-  CHECK_THAT(rigid_scene_error_of(penalty), Contains("body 'cube' is rigid"));
+  CHECK_THAT(test::assembly_error_of(penalty), Contains("body 'cube' is rigid"));
 }
 
 TEST_CASE(
@@ -154,14 +143,15 @@ TEST_CASE(
   CHECK(lowest < 0.0);
   CHECK(lowest > -1e-3);
 
-  CHECK_THAT(rigid_scene_error_of(base + "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\n"
-                                         "rigid = \"cube\"\n"),
-             Contains("body 'cube' is not rigid"));
-  CHECK_THAT(rigid_scene_error_of(base + contact + "penalty_mode = \"element\"\n"),
+  CHECK_THAT(
+      test::assembly_error_of(base + "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\n"
+                                     "rigid = \"cube\"\n"),
+      Contains("body 'cube' is not rigid"));
+  CHECK_THAT(test::assembly_error_of(base + contact + "penalty_mode = \"element\"\n"),
              Contains("penalty") && Contains("s.toml"));
-  CHECK_THAT(rigid_scene_error_of(base + contact +
-                                  "[contact.sphere]\nradius = 0.01\nmass = 0.1\n"
-                                  "center = [0.0, 0.0, 0.1]\n"),
+  CHECK_THAT(test::assembly_error_of(base + contact +
+                                     "[contact.sphere]\nradius = 0.01\nmass = 0.1\n"
+                                     "center = [0.0, 0.0, 0.1]\n"),
              Contains("give only one of: sphere, rigid"));
 }
 
@@ -197,25 +187,26 @@ TEST_CASE("scene: a pinned rigid body reads its pin, turns about it, and refuses
   CHECK(c.x() < c0.x());  // it swings down, its centre toward the point under the pin
 
   const std::string body = rigid_cube("kind = \"rigid\"\nmotion = \"pinned\"\n");
-  CHECK_THAT(rigid_scene_error_of(body),
+  CHECK_THAT(test::assembly_error_of(body),
              Contains("s.toml:6: bodies[0].motion") && Contains("[bodies.pin]"));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\n[bodies.pin]\n"
-                                             "point = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
-             Contains("bodies[0].pin") && Contains("motion = \"pinned\""));
   CHECK_THAT(
-      rigid_scene_error_of(rigid_cube(
+      test::assembly_error_of(rigid_cube("kind = \"rigid\"\n[bodies.pin]\n"
+                                         "point = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
+      Contains("bodies[0].pin") && Contains("motion = \"pinned\""));
+  CHECK_THAT(
+      test::assembly_error_of(rigid_cube(
           "kind = \"rigid\"\nmotion = \"pinned\"\ninitial_angular_velocity = [1.0, 0.0, 0.0]\n"
           "[bodies.pin]\npoint = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
       Contains("initial_angular_velocity") && Contains("along the pin's axis"));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube(pin + "mu_s = 0.2\n")),
+  CHECK_THAT(test::assembly_error_of(rigid_cube(pin + "mu_s = 0.2\n")),
              Contains("bodies[0].pin.mu_s") && Contains("both a coefficient and a radius"));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube(pin + "mu_s = 0.2\nmu_k = 0.3\nradius = 0.001\n")),
+  CHECK_THAT(test::assembly_error_of(rigid_cube(pin + "mu_s = 0.2\nmu_k = 0.3\nradius = 0.001\n")),
              Contains("bodies[0].pin.mu_k") && Contains("at most mu_s"));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube(
+  CHECK_THAT(test::assembly_error_of(rigid_cube(
                  "kind = \"rigid\"\nmotion = \"pinned\"\n[bodies.pin]\npoint = [0.0, 0.0, 0.0]\n"
                  "axis = [0.0, 0.0, 0.0]\n")),
              Contains("bodies[0].pin.axis"));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube(
+  CHECK_THAT(test::assembly_error_of(rigid_cube(
                  "kind = \"rigid\"\nmotion = \"pinned\"\ninitial_velocity = [1.0, 0.0, 0.0]\n"
                  "[bodies.pin]\npoint = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\n")),
              Contains("initial_velocity") && Contains("motion = \"free\""));
@@ -242,17 +233,17 @@ TEST_CASE("scene: a rigid body's inertia and centre may be given, and must be a 
   REQUIRE(run_explicit(model, opt).verdict == Verdict::completed);
   CHECK(ke == Approx(0.5 * 3e-6 * 100.0).epsilon(1e-12));
 
-  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0, -1.0, 0.0, "
-                                             "0.0, 0.0]\n")),
+  CHECK_THAT(test::assembly_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0, -1.0, 0.0, "
+                                                "0.0, 0.0]\n")),
              Contains("s.toml:6: bodies[0].inertia") && Contains("positive definite"));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0, 3.0, 0.0, "
-                                             "0.0, 0.0]\n")),
+  CHECK_THAT(test::assembly_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0, 3.0, 0.0, "
+                                                "0.0, 0.0]\n")),
              Contains("bodies[0].inertia") && Contains("triangle inequality"));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube("inertia = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]\n")),
+  CHECK_THAT(test::assembly_error_of(rigid_cube("inertia = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]\n")),
              Contains("bodies[0].inertia") && Contains("kind = \"rigid\""));
-  CHECK_THAT(rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0]\n")),
+  CHECK_THAT(test::assembly_error_of(rigid_cube("kind = \"rigid\"\ninertia = [1.0, 1.0]\n")),
              Contains("bodies[0].inertia") && Contains("6 numbers"));
   CHECK_THAT(
-      rigid_scene_error_of(rigid_cube("kind = \"rigid\"\ncenter_of_mass = [0.0, 0.0, 0.0]\n")),
+      test::assembly_error_of(rigid_cube("kind = \"rigid\"\ncenter_of_mass = [0.0, 0.0, 0.0]\n")),
       Contains("bodies[0].center_of_mass") && Contains("given inertia"));
 }
