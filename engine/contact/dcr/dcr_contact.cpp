@@ -632,7 +632,8 @@ void DcrContact::correct(State& s, double dt) {
   }
   const double restitution_work = restitution_.after_solve(pair_impulses_, near_, s, dt);
   work_ += restitution_work;
-  parts_.restitution += restitution_work;
+  // The rigid bodies' share enters the check that the contact only dissipates, not the work.
+  parts_.restitution += restitution_work + restitution_.last_rigid_energy();
   collect_held_impulses(s);
   if (report) {
     output_.add_impulses(rows_, restitution_.last_corrections(), node_body_);

@@ -9,6 +9,14 @@ namespace {
 
 Vec3 end_velocity(const State& s, double dt, size_t i) { return s.v[i] + 0.5 * dt * s.a[i]; }
 
+// The kinetic energy an impulse J at P gives a rigid body (it takes J at the end of the step, as
+// a held impulse): J . v(P) + (|J|^2 / m + (r x J)^T I^-1 (r x J)) / 2, r = P - its pivot.
+double rigid_energy_change(const BodyRigidPart& body, const Vec3& J, const Vec3& P) {
+  const Vec3 rJ = (P - body.centre).cross(J);
+  return J.dot(body.velocity_at(P)) +
+         0.5 * (J.squaredNorm() / body.mass + rJ.dot(body.inv_inertia * rJ));
+}
+
 }  // namespace
 
 PairRestitution::PairRestitution(const ModelMesh& mesh, double restitution,
@@ -126,8 +134,12 @@ bool PairRestitution::close(const Episode& ep, int a, int b, State& s, double dt
   const double j = (u_out - target) / K;
   if (!anchored_[static_cast<size_t>(a)])
     energy_change += apply_rigid_impulse(a, A, j * n, P, s, dt);
+  else if (mobile_rigid(a, s))
+    rigid_energy_ += rigid_energy_change(A, j * n, P);
   if (!anchored_[static_cast<size_t>(b)])
     energy_change += apply_rigid_impulse(b, B, -j * n, P, s, dt);
+  else if (mobile_rigid(b, s))
+    rigid_energy_ += rigid_energy_change(B, -j * n, P);
   ++corrections_;
   last_.push_back({a, b, -j * n, P});
   return true;
@@ -137,6 +149,7 @@ double PairRestitution::after_solve(const std::vector<PairImpulse>& touching,
                                     const std::vector<std::pair<int, int>>& near, State& s,
                                     double dt) {
   last_.clear();
+  rigid_energy_ = 0.0;
   if (e_ >= 1.0) return 0.0;
   for (auto& [key, ep] : episodes_) ep.touched = false;
   for (const PairImpulse& t : touching) {

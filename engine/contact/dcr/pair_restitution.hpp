@@ -74,6 +74,10 @@ class PairRestitution {
   int corrections() const { return corrections_; }  // episodes corrected so far
   // The corrections of the last after_solve: the impulse on B of each pair corrected.
   const std::vector<PairImpulse>& last_corrections() const { return last_; }
+  // The kinetic energy the last after_solve's impulses give free and pinned rigid bodies (which
+  // take them at the end of the step): not in its return value, whose work the nodes did; the
+  // rigid bodies book theirs themselves (engine/body/rigid_bodies.hpp).
+  double last_rigid_energy() const { return rigid_energy_; }
 
  private:
   struct Episode {
@@ -104,6 +108,7 @@ class PairRestitution {
   std::map<std::pair<int, int>, Episode> episodes_;  // ordered: deterministic
   int corrections_ = 0;
   std::vector<PairImpulse> last_;
+  double rigid_energy_ = 0.0;
   ReplicaTeam* team_ = nullptr;
 };
 
