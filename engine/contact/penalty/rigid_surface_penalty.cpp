@@ -166,7 +166,8 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
       v_max = std::max(v_max, s.v[n].norm());
   }
   const double v_rel = v_max + r->velocity.norm() + r->angular_velocity.norm() * reach;
-  const double band = reach + 2.0 * v_rel * std::min(ceiling, 1e300);
+  const double travel = 2.0 * v_rel * std::min(ceiling, 1e300);  // safety factor 2
+  const double band = reach + travel;
   // The points that can touch the body within the step (within the band): their springs load
   // their nodes (kappa_a / m_a) and the body (n_near K_P / m).
   const double K = params_.penalty;
@@ -179,6 +180,8 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
       for (int a = 0; a < 3; ++a)
         x += N[static_cast<size_t>(a)] * s.x[static_cast<size_t>(tris_[t][static_cast<size_t>(a)])];
       if ((x - r->center).norm() > band) continue;
+      // Only a point that can reach the surface within the step loads a spring in it (DS.2).
+      if (!distance_.inside_or_within(to_reference(*r, x), travel)) continue;
       ++near;
       for (int a = 0; a < 3; ++a) {
         const auto local = static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)]);

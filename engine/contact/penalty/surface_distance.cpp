@@ -211,6 +211,20 @@ void SurfaceDistance::consider(int t, const Vec3& p, Nearest& best) const {
   if (d2 < best.d2 || (d2 == best.d2 && t < best.triangle)) best = {d2, t, w};
 }
 
+// By cells alone (DS.2): a point within d of the surface has the cell of its closest surface point
+// within the box [p - d, p + d], and that cell holds a triangle; a point inside lies in a cell
+// that holds one or in an empty cell the flood fill did not reach. Neither: outside by more than d.
+bool SurfaceDistance::inside_or_within(const Vec3& p, double d) const {
+  const auto lo = cell_of(p - Vec3::Constant(d)), hi = cell_of(p + Vec3::Constant(d));
+  for (int z = std::max(lo[2], 0); z <= std::min(hi[2], dims_[2] - 1); ++z)
+    for (int y = std::max(lo[1], 0); y <= std::min(hi[1], dims_[1] - 1); ++y)
+      for (int x = std::max(lo[0], 0); x <= std::min(hi[0], dims_[0] - 1); ++x) {
+        const auto i = static_cast<size_t>(cell_index({x, y, z}));
+        if (cell_start_[i] != cell_start_[i + 1] || !outside_[i]) return true;
+      }
+  return false;
+}
+
 SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit) const {
   const auto c = cell_of(p);
   const long own = cell_index(c);

@@ -44,6 +44,11 @@ class SurfaceDistance {
   // deep_depth() (the longest edge).
   Side query(const Vec3& p, SurfacePoint& hit) const;
 
+  // Whether p lies inside the surface or possibly within d of it: true for every point within d
+  // and every point inside (and for some points up to a cell farther), false for the rest. What a
+  // step bound counts as "can reach" (DS.2).
+  bool inside_or_within(const Vec3& p, double d) const;
+
   double cell_size() const { return h_; }
   double deep_depth() const { return deep_; }
   const std::vector<Triangle>& triangles() const { return triangles_; }
