@@ -19,6 +19,7 @@
 #include "db/store/study_store.hpp"
 #include "engine/threads/thread_count.hpp"
 #include "records/content_hash.hpp"
+#include "records/provenance/version.hpp"
 #include "run/compare/rigid_variant.hpp"
 #include "run/compare/scene_comparison.hpp"
 #include "run/compare/scene_groups.hpp"
@@ -30,10 +31,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// What identifies a run: the scene's text, the mesh files it reads, and which bodies are rigid.
+// What identifies a run: the scene's text, the mesh files it reads, which bodies are rigid, and
+// the ccm that runs it (its version and commit: another build may compute another result).
 std::string compare_hash(const std::string& text, const Scene& scene,
                          const std::vector<std::string>& rigid) {
-  std::string all = text;
+  std::string all = text + "\n#ccm " + version_string();
   for (const BodySpec& b : scene.bodies)
     if (b.geometry.shape == Shape::mesh) all += "\n#mesh " + read_config_text(b.geometry.file);
   all += fmt::format("\n#ccm compare --rigid {}\n", fmt::join(rigid, ","));
