@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <utility>
 
@@ -69,7 +70,8 @@ bool ends_with(const std::string& s, const std::string& tail) {
 // The example scene with its end time and output interval replaced (and its restitution, if
 // restitution is not empty).
 fs::path short_scene(const test::TempDir& tmp, const std::string& example, double end,
-                     double interval, const std::string& restitution) {
+                     double interval, const std::string& restitution,
+                     const std::function<std::string(std::string)>& edit = {}) {
   std::istringstream in(file_text(fs::path(CCM_SOURCE_DIR) / "scenes/examples" / example));
   std::string text, line;
   while (std::getline(in, line)) {
@@ -80,7 +82,7 @@ fs::path short_scene(const test::TempDir& tmp, const std::string& example, doubl
       line = "restitution = " + restitution;
     text += line + "\n";
   }
-  return tmp.write(example, text);
+  return tmp.write(example, edit ? edit(text) : text);
 }
 
 // The DCR example cut to 0.3 ms (past the first contact), in tmp.
@@ -90,10 +92,11 @@ fs::path short_dcr_scene(const test::TempDir& tmp) {
 
 // Returns the serial run's history.
 History require_same_run(const std::string& example, double end, double interval,
-                         const std::string& restitution = "") {
+                         const std::string& restitution = "",
+                         const std::function<std::string(std::string)>& edit = {}) {
   const std::string mpi = mpiexec();
   test::TempDir tmp;
-  const fs::path scene = short_scene(tmp, example, end, interval, restitution);
+  const fs::path scene = short_scene(tmp, example, end, interval, restitution, edit);
   const fs::path serial = tmp.path / "serial", ranks = tmp.path / "ranks";
   REQUIRE(shell(fmt::format("'{}' run '{}' --out '{}' --quiet", CCM_BINARY, scene.string(),
                             serial.string())) == 0);
@@ -178,6 +181,35 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR with a body-pair rest
 TEST_CASE("mpiexec -n 2 ccm run equals the serial run: rigid sphere (penalty) on a plate",
           "[distributed][mpi][cli]") {
   require_same_run("sphere_on_plate.toml", 8e-4, 5e-5);
+}
+
+// Two contact pairs in one partitioned run (a ContactSet replicated on every rank): the DCR
+// example's ball on its plate (the pair named "contact", whose columns the check reads) and an
+// analytic pebble on the penalty dropped on the plate's other corner.
+TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR and penalty pairs in one scene",
+          "[distributed][mpi][cli][contact]") {
+  const auto pairs = [](std::string text) {
+    const auto at = text.find("\n[contact]\n") + 1;  // the table, not a comment naming it
+    const auto end = text.find("\n[output]\n") + 1;
+    REQUIRE(at > 0);
+    REQUIRE(end > at);
+    return text.substr(0, at) +
+           "[[contact.pairs]]\nname = \"contact\"\nmodel = \"dcr\"\nsurfaces = [\"ball\", "
+           "\"plate\"]\n\n[[contact.pairs]]\nname = \"drop\"\nmodel = \"rigid_penalty\"\n"
+           "body = \"plate\"\npenalty = 1e4\n[contact.pairs.sphere]\nname = \"pebble\"\n"
+           "radius = 0.003\nmass = 0.001\ncenter = [0.01, 0.01, 0.0115]\n"
+           "velocity = [0.0, 0.0, -3.0]\n\n" +
+           text.substr(end);
+  };
+  const History serial = require_same_run("ball_on_plate_dcr.toml", 6e-4, 5e-5, "", pairs);
+  // The pebble (0.5 mm above the plate at 3 m/s) struck it within the window: both pairs acted.
+  const auto force = static_cast<size_t>(
+      std::find(serial.columns.begin(), serial.columns.end(), "pebble.contact_force") -
+      serial.columns.begin());
+  REQUIRE(force < serial.columns.size());
+  double largest = 0.0;
+  for (const auto& r : serial.rows) largest = std::max(largest, std::abs(r[force]));
+  CHECK(largest > 0.0);
 }
 
 // Under mpiexec only rank 0 has the standard input: a scene piped to `ccm run -` is read by rank
