@@ -257,10 +257,11 @@ int compare(const CompareArgs& args) {
   const ComparedRun d = run_side(deformable, args, out);
   const ComparedRun r = run_side(rigid, args, out);
   const ComparisonOutcome o = compare_runs(d, r, observables, args.max_error);
-  const GroupsOrReason without_tc = scene_groups(scene, deformable.run.model, args.rigid, {});
-  const ComparePrediction prediction = predict_for_scene(
-      args.db, scene_groups(scene, deformable.run.model, args.rigid, contact_time(d, without_tc)),
-      o, args.max_error);
+  GroupsOrReason groups = scene_groups(scene, deformable.run.model, args.rigid, {});
+  if (const auto t_c = contact_time(d, groups))
+    groups.groups->window = contact_window(*groups.groups, scene, *t_c);
+  const ComparePrediction prediction =
+      predict_for_scene(args.db, std::move(groups), o, args.max_error);
   nlohmann::json j = comparison_json(args, observables, d, r, o);
   j["study_prediction"] = prediction_json(args.db, prediction);
   // Recorded in the study's store, for `ccm report`, when there is one.

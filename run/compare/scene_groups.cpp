@@ -64,9 +64,12 @@ GroupsOrReason scene_groups(const Scene& scene, const Model& model,
   g.kinetic_energy = 0.5 * g.m_I * g.relative_speed * g.relative_speed;
   g.kinetic_energy_star = g.kinetic_energy / (g.E_A * g.L_A * g.L_A * g.L_A);
   g.density_ratio = g.rho_I / g.rho_A;
-  if (contact_time)
-    g.window = (scene.time.end - *contact_time) * std::sqrt(g.E_A / g.rho_A) / g.L_A;
+  if (contact_time) g.window = contact_window(g, scene, *contact_time);
   return {g, {}};
+}
+
+double contact_window(const SceneGroups& g, const Scene& scene, double contact_time) {
+  return (scene.time.end - contact_time) * std::sqrt(g.E_A / g.rho_A) / g.L_A;
 }
 
 }  // namespace ccm

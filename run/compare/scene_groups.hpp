@@ -43,4 +43,7 @@ GroupsOrReason scene_groups(const Scene& scene, const Model& model,
                             const std::vector<std::string>& rigid,
                             std::optional<double> contact_time);
 
+// The window (t_f - t_c) c_A / L_A of groups formed without t_c, once it is known.
+double contact_window(const SceneGroups& groups, const Scene& scene, double contact_time);
+
 }  // namespace ccm
