@@ -24,6 +24,7 @@
 #include "run/compare/scene_comparison.hpp"
 #include "run/compare/scene_groups.hpp"
 #include "run/scene/scene_file.hpp"
+#include "run/scene/scene_inputs.hpp"
 #include "run/scene/scene_run.hpp"
 
 namespace ccm {
@@ -35,9 +36,7 @@ namespace fs = std::filesystem;
 // the ccm that runs it (its version and commit: another build may compute another result).
 std::string compare_hash(const std::string& text, const Scene& scene,
                          const std::vector<std::string>& rigid) {
-  std::string all = text + "\n#ccm " + version_string();
-  for (const BodySpec& b : scene.bodies)
-    if (b.geometry.shape == Shape::mesh) all += "\n#mesh " + read_config_text(b.geometry.file);
+  std::string all = scene_inputs_text(text, scene) + "\n#ccm " + version_string();
   all += fmt::format("\n#ccm compare --rigid {}\n", fmt::join(rigid, ","));
   return study::fnv1a64(all);
 }

@@ -10,18 +10,17 @@
 #include <stdexcept>
 
 #include "records/content_hash.hpp"
-#include "run/scene/point_scene.hpp"
-#include "study/grid/grid_expand.hpp"
+#include "run/runner/study_scene.hpp"
 #include "study/metrics/convergence.hpp"
 
 namespace ccm {
 
-std::vector<PlannedRun> plan_runs(const study::GridSpec& spec) {
+std::vector<PlannedRun> plan_runs(const study::GridSpec& spec, const study::StudyPoints& points) {
   std::vector<PlannedRun> runs;
-  for (const auto& points : {study::expand_grid(spec), study::expand_convergence(spec)})
-    for (const study::GridPoint& p : points)
+  for (const auto* set : {&points.grid, &points.convergence})
+    for (const study::GridPoint& p : *set)
       for (study::ImpactModel m : {study::ImpactModel::ccm, study::ImpactModel::rigid})
-        runs.push_back({p, m, study::fnv1a64(study::point_scene_text(spec, p, m))});
+        runs.push_back({p, m, study::fnv1a64(study::study_run_identity(spec, p, m))});
   return runs;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "records/grid_point.hpp"
+#include "run/runner/study_scene.hpp"
 #include "study/grid/grid_spec.hpp"
 
 namespace ccm {
@@ -18,12 +19,12 @@ namespace ccm {
 struct PlannedRun {
   study::GridPoint point;
   study::ImpactModel model;
-  std::string scene_hash;  // FNV-1a 64 of the run's scene text (run/scene/point_scene.hpp)
+  std::string scene_hash;  // FNV-1a 64 of the run's identity (run/runner/study_scene.hpp)
 };
 
-// Every run of the grid file, in a fixed order: the grid's points, then the convergence
-// points, each with its CCM run before its rigid run.
-std::vector<PlannedRun> plan_runs(const study::GridSpec& spec);
+// Every run of the grid file's points, in a fixed order: the grid's points, then the
+// convergence points, each with its CCM run before its rigid run.
+std::vector<PlannedRun> plan_runs(const study::GridSpec& spec, const study::StudyPoints& points);
 
 // The runs that share a model and a scene text, as indices into `runs` in plan order: each
 // group is simulated once (by its first run) and its record stored for every member. A rigid

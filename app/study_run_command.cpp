@@ -30,7 +30,6 @@
 #include "run/runner/point_runner.hpp"
 #include "run/scene/scene.hpp"
 #include "study/fit/study_fits.hpp"
-#include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/point_metrics.hpp"
 #include "study/metrics/thesis_trends.hpp"
@@ -188,15 +187,15 @@ std::vector<study::PointMetrics> point_metrics(const db::StudyStore& store,
 }
 
 DerivedResults derive_results(const fs::path& db, const GridSpec& spec,
-                              const std::string& grid_hash) {
+                              const std::string& grid_hash, const study::StudyPoints& points) {
   db::StudyStore store(db);
   store.open_study(spec.title, grid_hash);
   DerivedResults results;
-  results.grid = point_metrics(store, study::expand_grid(spec), &results.trends);
-  results.convergence = point_metrics(store, study::expand_convergence(spec));
+  results.grid = point_metrics(store, points.grid, &results.trends);
+  results.convergence = point_metrics(store, points.convergence);
   results.fits = study::fit_study(results.grid);
   std::vector<study::RunRecord> convergence_runs;
-  for (const GridPoint& p : study::expand_convergence(spec))
+  for (const GridPoint& p : points.convergence)
     for (ImpactModel m : {ImpactModel::ccm, ImpactModel::rigid})
       if (auto run = store.load_run(p, m)) convergence_runs.push_back(std::move(*run));
   results.convergence_rows = study::compare_convergence_runs(convergence_runs);
@@ -256,7 +255,8 @@ int run_all(const StudyRunArgs& args, const study::RankContext& ranks, const Gri
 int study_run(const StudyRunArgs& args, const study::RankContext& ranks) {
   const GridSpec spec = study::parse_grid_file(args.grid);  // every rank: same result
   const std::string grid_hash = study::fnv1a64(read_text(args.grid));
-  const std::vector<PlannedRun> runs = plan_runs(spec);
+  const study::StudyPoints points = study::study_points(spec);  // checks a template's scenes
+  const std::vector<PlannedRun> runs = plan_runs(spec, points);
 
   std::string setup_error;
   if (ranks.is_root()) try {
@@ -279,11 +279,11 @@ int study_run(const StudyRunArgs& args, const study::RankContext& ranks) {
   ranks.barrier();
   if (!ranks.is_root()) return exit_code::completed;
 
-  const DerivedResults results = derive_results(args.db, spec, grid_hash);
+  const DerivedResults results = derive_results(args.db, spec, grid_hash, points);
   if (!args.quiet) {
     print_point_table(stdout, results.grid, results.fits);
     print_convergence_table(stdout, results.convergence_rows);
-    print_trend_table(stdout, results.trends, results.grid);
+    if (!spec.scene_template) print_trend_table(stdout, results.trends, results.grid);
   }
   if (const long failed = count_failed(args.db, spec, grid_hash); failed > 0) {
     fmt::print(stderr, "ccm: error: {} run(s) failed; `ccm study status --db {}` names them\n",

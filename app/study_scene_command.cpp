@@ -1,5 +1,5 @@
 // `ccm study scene GRID --point N [--model ccm|rigid]`: the scene file of one run of a grid, on
-// stdout, exactly as `ccm study run` runs it (run/scene/point_scene.hpp). With it one run of a
+// stdout, exactly as `ccm study run` runs it (run/runner/study_scene.hpp). With it one run of a
 // study can be repeated, changed or looked at alone: `ccm run` it and open its output.
 #include <fmt/format.h>
 
@@ -7,9 +7,8 @@
 
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
-#include "run/scene/point_scene.hpp"
+#include "run/runner/study_scene.hpp"
 #include "run/scene/scene.hpp"
-#include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 
 namespace ccm {
@@ -19,11 +18,12 @@ int study_scene_command(const StudySceneArgs& args) {
     const study::GridSpec spec = study::parse_grid_file(args.grid);
     const study::ImpactModel model =
         args.model == "rigid" ? study::ImpactModel::rigid : study::ImpactModel::ccm;
-    std::vector<study::GridPoint> points = study::expand_grid(spec);
-    for (const study::GridPoint& p : study::expand_convergence(spec)) points.push_back(p);
+    const study::StudyPoints all = study::study_points(spec);
+    std::vector<study::GridPoint> points = all.grid;
+    points.insert(points.end(), all.convergence.begin(), all.convergence.end());
     for (const study::GridPoint& p : points)
       if (p.index == args.point) {
-        fmt::print("{}", study::point_scene_text(spec, p, model));
+        fmt::print("{}", study::study_scene_text(spec, p, model));
         return exit_code::completed;
       }
     fmt::print(stderr, "ccm: error: {}: no point {} (the grid has points 0 to {})\n",

@@ -12,8 +12,7 @@
 #include "engine/observe/history.hpp"
 #include "records/content_hash.hpp"
 #include "records/provenance/timestamp.hpp"
-#include "run/scene/point_scene.hpp"
-#include "run/scene/scene_file.hpp"
+#include "run/runner/study_scene.hpp"
 #include "run/scene/scene_run.hpp"
 
 namespace ccm::study {
@@ -28,8 +27,7 @@ size_t column_index(const HistoryRecorder& history, const std::string& name) {
   return static_cast<size_t>(it - cols.begin());
 }
 
-ArtifactHistory artifact_history(const HistoryRecorder& history) {
-  const std::string body = kArtifactBody;
+ArtifactHistory artifact_history(const HistoryRecorder& history, const std::string& body) {
   const size_t t = column_index(history, "time");
   const size_t ke = column_index(history, body + ".kinetic_energy");
   const size_t u_mean = column_index(history, body + ".u_mean");
@@ -81,17 +79,15 @@ RunRecord run_point(const GridSpec& spec, const GridPoint& point, ImpactModel mo
   r.point = point;
   r.model = model;
   r.started_at = utc_timestamp(SystemClock::now());
-  const std::string text = point_scene_text(spec, point, model);
-  r.scene_hash = fnv1a64(text);
-  const SceneRun scene =
-      assemble_scene_run(parse_scene(text, point_scene_name(spec, point, model)));
+  r.scene_hash = fnv1a64(study_run_identity(spec, point, model));
+  const SceneRun scene = assemble_scene_run(study_scene(spec, point, model));
   HistoryRecorder history(scene.model.mesh, scene.output);
   RunOptions run = scene_run_options(scene, &history);
   run.progress_seconds = options.progress_seconds;
   if (options.progress)
     run.progress = [&](const Progress& p) { options.progress(point, model, p); };
   record_summary(run_explicit(scene.model, run), r);
-  r.artifact = artifact_history(history);
+  r.artifact = artifact_history(history, study_artifact(spec, scene.scene));
   r.ended_at = utc_timestamp(SystemClock::now());
   return r;
 }

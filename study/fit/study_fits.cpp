@@ -7,11 +7,14 @@
 #include <set>
 #include <utility>
 
+#include "study/grid/grid_spec.hpp"
+
 namespace ccm::study {
 
 AxisLevels fit_axes(const GridPoint& point) {
   AxisLevels axes = point.other_axes;
   axes.erase("mesh_scale");
+  std::erase_if(axes, [](const auto& axis) { return axis.first.starts_with(kTemplateAxisPrefix); });
   return axes;
 }
 

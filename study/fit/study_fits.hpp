@@ -16,8 +16,9 @@
 namespace ccm::study {
 
 // The levels of a point's other axes (GridPoint::other_axes) that select its fits: every
-// other axis except mesh_scale (the convergence runs, never fitted). Empty on a grid that
-// sweeps ER, RLS and KE only.
+// other axis except mesh_scale (the convergence runs, never fitted) and a template's coordinates
+// (kTemplateAxisPrefix: they reach the fits through ER, RLS and KE). Empty on a grid that sweeps
+// ER, RLS and KE only.
 using AxisLevels = std::map<std::string, double>;
 AxisLevels fit_axes(const GridPoint& point);
 // "damping=1, penalty=0.1"; "" when empty.

@@ -21,9 +21,24 @@ void expand_other_axes(const OtherAxes& axes, OtherAxes::const_iterator axis, Gr
   }
 }
 
+// A template's axes as named in other_axes ("axes.<path>" sort before "levels.<path>").
+OtherAxes template_other_axes(const SceneTemplate& t) {
+  OtherAxes axes;
+  for (const TemplateAxis& a : t.axes) axes[std::string(kTemplateAxisPrefix) + a.path] = a.values;
+  for (const TemplateAxis& a : t.levels)
+    axes[std::string(kTemplateLevelPrefix) + a.path] = a.values;
+  return axes;
+}
+
 }  // namespace
 
 long grid_size(const GridSpec& spec) {
+  if (spec.scene_template) {
+    long n = 1;
+    for (const auto& [name, values] : template_other_axes(*spec.scene_template))
+      n *= static_cast<long>(values.size());
+    return n;
+  }
   long n = static_cast<long>(spec.modulus_ratios.size() * spec.length_ratios.size() *
                              spec.kinetic_energies.size());
   for (const auto& [name, values] : spec.other_axes) n *= static_cast<long>(values.size());
@@ -33,6 +48,11 @@ long grid_size(const GridSpec& spec) {
 std::vector<GridPoint> expand_grid(const GridSpec& spec) {
   std::vector<GridPoint> out;
   out.reserve(static_cast<size_t>(grid_size(spec)));
+  if (spec.scene_template) {
+    const OtherAxes axes = template_other_axes(*spec.scene_template);
+    expand_other_axes(axes, axes.begin(), GridPoint{}, out);
+    return out;
+  }
   for (const double er : spec.modulus_ratios)
     for (const double rls : spec.length_ratios)
       for (const double ke : spec.kinetic_energies) {

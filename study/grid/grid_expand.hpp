@@ -10,6 +10,9 @@ namespace ccm::study {
 
 // Every combination of the axes, row-major: ER outermost, then RLS, then KE, then the other
 // axes in name order (innermost last); values in the order the file gives them. Indices 0..n-1.
+// A grid over a scene: every combination of its axes and levels (named as kTemplateAxisPrefix,
+// kTemplateLevelPrefix say, in name order), ER, RLS and KE left at their defaults until the
+// run layer derives them from each point's scene (run/template/template_points.hpp).
 std::vector<GridPoint> expand_grid(const GridSpec& spec);
 
 // The convergence runs: each [convergence] point at each mesh scale (other_axes["mesh_scale"]),

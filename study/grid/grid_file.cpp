@@ -206,6 +206,59 @@ void parse_convergence(const StrictTable& root, GridSpec& g) {
   g.convergence.mesh_scales = scales;
 }
 
+// A non-empty array of distinct non-empty strings.
+std::vector<std::string> name_array(const StrictTable& t, std::string_view key) {
+  const toml::node* n = t.node(key);
+  if (!n) t.fail(key, "required key is missing");
+  const toml::array* a = n->as_array();
+  if (!a || a->empty()) t.wrong_type(*n, t.key_path(key), "a non-empty array of body names");
+  std::vector<std::string> names;
+  for (const toml::node& item : *a) {
+    const auto name = item.value<std::string>();
+    if (!name || name->empty()) t.wrong_type(item, t.key_path(key), "a body name");
+    if (std::find(names.begin(), names.end(), *name) != names.end())
+      t.fail(key, fmt::format("names \"{}\" twice", *name));
+    names.push_back(*name);
+  }
+  return names;
+}
+
+// The axes of a template: every key is a path into the scene, its value the array of values.
+std::vector<TemplateAxis> template_axes(const StrictTable& t) {
+  std::vector<TemplateAxis> axes;
+  for (const auto& [key, line] : t.key_lines()) {
+    const std::vector<double> values = t.number_array(key);
+    for (size_t i = 0; i < values.size(); ++i) {
+      const auto earlier_end = values.begin() + static_cast<long>(i);
+      if (std::find(values.begin(), earlier_end, values[i]) != earlier_end)
+        t.fail(key, fmt::format("[{}] repeats the value {}", i, values[i]));
+    }
+    axes.push_back({key, values, line});
+  }
+  std::sort(axes.begin(), axes.end(),
+            [](const TemplateAxis& a, const TemplateAxis& b) { return a.line < b.line; });
+  return axes;
+}
+
+// [template] with [axes] (and optional [levels]) of paths; the scene gives the rest, so the
+// thesis grid's tables are refused beside it.
+void parse_template(const StrictTable& root, GridSpec& g) {
+  const StrictTable t = root.need_table("template");
+  t.allow_only({"scene", "rigid"});
+  for (std::string_view other : {"time", "artifact", "impactor", "contact", "convergence"})
+    if (root.has(other))
+      root.fail(other, "a grid over a scene takes this from its [template] scene; remove it");
+  SceneTemplate s;
+  s.scene = g.source.parent_path() / t.need_string("scene");
+  s.rigid = name_array(t, "rigid");
+  s.scene_line = t.line_of_key("scene");
+  s.rigid_line = t.line_of_key("rigid");
+  s.axes = template_axes(root.need_table("axes"));
+  if (s.axes.empty()) root.fail("axes", "needs at least one path into the scene");
+  if (const auto levels = root.table("levels")) s.levels = template_axes(*levels);
+  g.scene_template = std::move(s);
+}
+
 }  // namespace
 
 GridSpec parse_grid(std::string_view text, const std::filesystem::path& source) {
@@ -213,8 +266,14 @@ GridSpec parse_grid(std::string_view text, const std::filesystem::path& source) 
   GridSpec g;
   g.source = source;
   const StrictTable t(root, "", source);
-  t.allow_only({"title", "axes", "time", "artifact", "impactor", "contact", "convergence"});
+  t.allow_only({"title", "axes", "time", "artifact", "impactor", "contact", "convergence",
+                "template", "levels"});
   g.title = t.string("title").value_or("");
+  if (t.has("template")) {
+    parse_template(t, g);
+    return g;
+  }
+  if (t.has("levels")) t.fail("levels", "belongs to a grid over a scene ([template])");
   parse_axes(t, g);
   parse_time(t, g);
   parse_artifact(t, g);

@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/core/penalty_mode.hpp"
@@ -79,6 +81,31 @@ struct ConvergenceSpec {
   std::vector<double> mesh_scales;  // 2-3 distinct factors on both mesh sizes
 };
 
+// A grid over a scene file of the user's (docs/grid-file.md, "Grids over your own scene"): the
+// axes are paths into the scene, the "ccm" model runs the scene as written and the "rigid" model
+// with the `rigid` bodies made rigid (as `ccm compare --rigid`). A point's ER, RLS and KE are
+// derived from its scene (run/template/template_points.hpp); they are the fits' coordinates.
+struct TemplateAxis {
+  std::string path;  // into the scene: "bodies.shell.material.E", "contact.pairs[0].friction"
+  std::vector<double> values;
+  int line = 0;  // the axis's line in the grid file
+};
+
+// The artifact whose histories give the metrics is the one body that stays deformable in the
+// "rigid" model (as for `ccm compare`'s groups, run/compare/scene_groups.hpp).
+struct SceneTemplate {
+  std::filesystem::path scene;         // the scene file, resolved against the grid file's folder
+  std::vector<std::string> rigid;      // the bodies rigid in the "rigid" model
+  std::vector<TemplateAxis> axes;      // coordinates: their values move ER, RLS or KE
+  std::vector<TemplateAxis> levels;    // each value selects its own set of fits
+  int scene_line = 0, rigid_line = 0;  // of those keys in the grid file
+};
+
+// How a template axis is named in GridPoint::other_axes (and so in the store): "axes.<path>" for
+// a coordinate (not a fit level: it reaches the fits through ER, RLS and KE), "levels.<path>".
+inline constexpr std::string_view kTemplateAxisPrefix = "axes.";
+inline constexpr std::string_view kTemplateLevelPrefix = "levels.";
+
 struct GridSpec {
   std::filesystem::path source;  // the grid file, as given
   std::string title;
@@ -92,6 +119,9 @@ struct GridSpec {
   ImpactorSpec impactor;
   GridContact contact;
   ConvergenceSpec convergence;  // empty: no convergence runs
+  // Set for a grid over a scene: then the axes above are empty and time, artifact, impactor and
+  // contact unused (the scene has its own).
+  std::optional<SceneTemplate> scene_template;
 };
 
 }  // namespace ccm::study

@@ -42,9 +42,30 @@ ModellingChoice choice(const ChoiceSpec& c, const GridSpec& spec, const AxisLeve
   return out;
 }
 
+// A grid over a scene: its choices are the scene's (as written in the template), and the ones
+// it sweeps are its axes and levels, each given per level or at the level an answer used.
+std::vector<ModellingChoice> template_choices(const SceneTemplate& t, const AxisLevels& used) {
+  std::vector<ModellingChoice> out;
+  const auto add = [&](const TemplateAxis& a, std::string_view prefix) {
+    const std::string axis = std::string(prefix) + a.path;
+    ModellingChoice c{a.path, a.path, "", axis, std::nullopt, {}};
+    if (const auto level = used.find(axis); level != used.end())
+      c.value = level->second;
+    else if (a.values.size() == 1)
+      c.value = a.values.front();
+    else
+      c.levels = a.values;
+    out.push_back(c);
+  };
+  for (const TemplateAxis& a : t.axes) add(a, kTemplateAxisPrefix);
+  for (const TemplateAxis& a : t.levels) add(a, kTemplateLevelPrefix);
+  return out;
+}
+
 }  // namespace
 
 std::vector<ModellingChoice> modelling_choices(const GridSpec& spec, const AxisLevels& used) {
+  if (spec.scene_template) return template_choices(*spec.scene_template, used);
   const ChoiceSpec specs[] = {
       {"rigid_penalty", "rigid penalty K_P per quadrature point", "N/m", "penalty",
        spec.contact.penalty},

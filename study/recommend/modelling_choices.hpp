@@ -29,7 +29,8 @@ struct ModellingChoice {
 
 // Every choice, in a fixed order; `levels_used` holds the axis levels of one answer (empty for
 // a whole-study summary, where swept choices list their levels). Axes that are none of these
-// choices (e.g. nu) are listed after them, by name.
+// choices (e.g. nu) are listed after them, by name. A grid over a scene: its axes and levels,
+// by path (its fixed choices are those its template scene writes).
 std::vector<ModellingChoice> modelling_choices(const GridSpec& spec,
                                                const AxisLevels& levels_used = {});
 

@@ -13,45 +13,12 @@
 #include <sstream>
 
 #include "tests/app/cli_shell.hpp"
+#include "tests/support/scene_fixtures.hpp"
 
 namespace fs = std::filesystem;
 using Catch::Contains;
 
 namespace {
-
-const char* kStrike = R"([time]
-end = 2e-3
-output_interval = 1e-4
-
-[[bodies]]
-name = "base"
-[bodies.material]
-E = 1e5
-nu = 0.3
-rho = 1000.0
-[bodies.geometry]
-shape = "box"
-size = [0.01, 0.01, 0.01]
-mesh_size = 0.005
-
-[[bodies]]
-name = "striker"
-initial_velocity = [0.0, 0.0, -1.0]
-[bodies.material]
-E = 1e7
-nu = 0.3
-rho = 1000.0
-[bodies.geometry]
-shape = "box"
-size = [0.006, 0.006, 0.004]
-mesh_size = 0.003
-[bodies.placement]
-translate = [0.002, 0.002, 0.0101]
-
-[contact]
-model = "dcr"
-surfaces = ["base", "striker"]
-)";
 
 nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file);
@@ -90,7 +57,7 @@ double final_state(const std::vector<double>& c, const std::vector<double>& r) {
 TEST_CASE("ccm compare: errors, cost ratio and answer, checked against the two runs",
           "[compare][cli]") {
   ccm::test::TempDir dir;
-  const fs::path scene = dir.write("strike.toml", kStrike);
+  const fs::path scene = dir.write("strike.toml", ccm::test::kStrikeScene);
   const fs::path out = dir.path / "cmp";
   const auto first = ccm::test::run_ccm(
       fmt::format("compare '{}' --rigid striker --out '{}' --quiet", scene.string(), out.string()),
@@ -130,7 +97,7 @@ TEST_CASE("ccm compare: errors, cost ratio and answer, checked against the two r
 TEST_CASE("ccm compare: a body or an observable that does not exist is refused, nothing written",
           "[compare][cli]") {
   ccm::test::TempDir dir;
-  const fs::path scene = dir.write("strike.toml", kStrike);
+  const fs::path scene = dir.write("strike.toml", ccm::test::kStrikeScene);
   const fs::path out = dir.path / "cmp";
   const auto body = ccm::test::run_ccm(
       fmt::format("compare '{}' --rigid strikr --out '{}'", scene.string(), out.string()), dir);

@@ -18,6 +18,42 @@ inline std::string cube_body_toml(const std::string& name) {
          "shape = \"box\"\nsize = [0.01, 0.01, 0.01]\nmesh_size = 0.005\n";
 }
 
+// A soft 1 cm cube "base" struck at 1 m/s by a stiffer box "striker" (DCR contact), 2 ms: the
+// scene of `ccm compare` and of the grids over a scene in the tests.
+inline const char* const kStrikeScene = R"([time]
+end = 2e-3
+output_interval = 1e-4
+
+[[bodies]]
+name = "base"
+[bodies.material]
+E = 1e5
+nu = 0.3
+rho = 1000.0
+[bodies.geometry]
+shape = "box"
+size = [0.01, 0.01, 0.01]
+mesh_size = 0.005
+
+[[bodies]]
+name = "striker"
+initial_velocity = [0.0, 0.0, -1.0]
+[bodies.material]
+E = 1e7
+nu = 0.3
+rho = 1000.0
+[bodies.geometry]
+shape = "box"
+size = [0.006, 0.006, 0.004]
+mesh_size = 0.003
+[bodies.placement]
+translate = [0.002, 0.002, 0.0101]
+
+[contact]
+model = "dcr"
+surfaces = ["base", "striker"]
+)";
+
 // One cube named "cube"; lines 1-12.
 inline const std::string kOneCubeScene = kTimeToml + cube_body_toml("cube");
 

@@ -21,7 +21,7 @@ TEST_CASE("runs are handed out longest first", "[study][schedule]") {
       "\n[convergence]\npoints = [{ ER = 100.0, RLS = 0.5, KE = 10.0 }]\nmesh_scales = [1.0, "
       "0.5]\n";
   const GridSpec g = parse_grid(text, "g.toml");
-  const std::vector<PlannedRun> runs = plan_runs(g);
+  const std::vector<PlannedRun> runs = plan_runs(g, study::study_points(g));
   REQUIRE(runs.size() == 2 * (12 + 2));
   const std::vector<std::size_t> order = longest_first(runs);
   REQUIRE(order.size() == runs.size());

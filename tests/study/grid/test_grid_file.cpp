@@ -1,5 +1,7 @@
 // Grid files: the thesis grid reads as Table 2.2; bad input is rejected with
 // "<file>:<line>: <key>: <problem>".
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -113,4 +115,36 @@ TEST_CASE("grid file errors name the file, the line and the key", "[grid]") {
     CHECK_THROWS_WITH(parse_grid_file("/nonexistent/grid.toml"),
                       Contains("/nonexistent/grid.toml: no such file"));
   }
+}
+
+TEST_CASE("a grid over a scene: its template, its axes by path, and what it refuses", "[grid]") {
+  const std::string head =
+      "title = \"t\"\n[template]\nscene = \"designs/s.toml\"\nrigid = [\"a\"]\n";
+  const std::string axes = "[axes]\n\"bodies.a.material.E\" = [1e6, 1e7]\n\"time.end\" = [0.1]\n";
+  const GridSpec g =
+      parse_grid(head + axes + "[levels]\n\"contact.friction\" = [0.0, 0.3]\n", "grids/g.toml");
+  REQUIRE(g.scene_template);
+  const SceneTemplate& t = *g.scene_template;
+  CHECK(t.scene == std::filesystem::path("grids/designs/s.toml"));  // beside the grid file
+  CHECK(t.rigid == std::vector<std::string>{"a"});
+  REQUIRE(t.axes.size() == 2);
+  CHECK(t.axes[0].path == "bodies.a.material.E");  // file order
+  CHECK(t.axes[0].values == std::vector<double>{1e6, 1e7});
+  CHECK(t.axes[0].line == 6);
+  REQUIRE(t.levels.size() == 1);
+  CHECK(t.levels[0].path == "contact.friction");
+  CHECK(t.scene_line == 3);
+  CHECK(t.rigid_line == 4);
+
+  CHECK_THAT(grid_error_of(head + axes + "[time]\nend = 1.0\n"),
+             Contains("g.toml:8: time: a grid over a scene takes this from its [template] scene"));
+  CHECK_THAT(grid_error_of(fmt::format("{}[levels]\n\"a.b\" = [1.0]\n", kSmallGrid)),
+             Contains("levels: belongs to a grid over a scene ([template])"));
+  CHECK_THAT(grid_error_of("[template]\nscene = \"s.toml\"\nrigid = []\n" + axes),
+             Contains("g.toml:3: template.rigid"));
+  CHECK_THAT(grid_error_of("[template]\nscene = \"s.toml\"\nrigid = [\"a\", \"a\"]\n" + axes),
+             Contains("names \"a\" twice"));
+  CHECK_THAT(grid_error_of(head + "[axes]\n\"time.end\" = [0.1, 0.1]\n"),
+             Contains("g.toml:6: axes.time.end: [1] repeats the value 0.1"));
+  CHECK_THAT(grid_error_of(head), Contains("axes: required table is missing"));
 }
