@@ -165,6 +165,30 @@ int main(int argc, char** argv) {
       "Exit codes: 0 printed, 1 internal error, 2 bad input (no such file, not a ccm store, no "
       "study in it). Never writes a file.");
 
+  ccm::StudyRefineArgs refine_args;
+  CLI::App* study_refine = study->add_subcommand(
+      "refine",
+      "Add points where a study's answer changes (between neighbours with different answers, "
+      "and next to points the fits flag) until the boundary is located or the budget is spent");
+  study_refine->add_option("--db", refine_args.db, "Study store of `ccm study run`")->required();
+  study_refine->add_option("--axis", refine_args.axis,
+                           "The axis refined: ER (the thesis grid) or a path of a grid over a "
+                           "scene (default: ER, or the grid's first path)");
+  study_refine->add_option("--tolerance", refine_args.tolerance,
+                           "The boundary's width when located: decades on an axis of one sign, "
+                           "else its units (default: a quarter of the grid's finest spacing)");
+  study_refine->add_option("--budget", refine_args.budget,
+                           "The study's runs at most, its grid's included (default: twice the "
+                           "grid's)");
+  study_refine->add_option("--max-error", refine_args.max_error, "As `ccm recommend`")
+      ->default_val(0.1);
+  study_refine->add_option("--jobs,-j", refine_args.jobs, "Local worker processes")->default_val(1);
+  study_refine->add_flag("--quiet,-q", refine_args.quiet, "No progress line");
+  study_refine->add_option("--threads", refine_args.threads, "As `ccm study run --threads`");
+  study_refine->footer(
+      "Resumes where a killed refine stopped (its points' runs first). Exit codes: 0 done, 1 some "
+      "run failed or internal error, 2 bad input.");
+
   ccm::StudySceneArgs study_scene_args;
   CLI::App* study_scene = study->add_subcommand(
       "scene", "Print the scene file of one run of a grid (to repeat it with `ccm run`)");
@@ -278,6 +302,7 @@ int main(int argc, char** argv) {
   }
   if (*study_run) return ccm::study_run_command(study_run_args);
   if (*study_status) return ccm::study_status_command(study_status_args);
+  if (*study_refine) return ccm::study_refine_command(refine_args);
   if (*study_scene) return ccm::study_scene_command(study_scene_args);
   if (*recommend) return ccm::recommend_command(rec);
   if (*rig_list) return ccm::rig_list_command(rig_list_args);

@@ -22,6 +22,18 @@ struct StudyRunArgs {
   int threads = 0;     // per run; 0: CCM_THREADS, else threads_per_job (run_schedule.hpp)
 };
 
+struct StudyRefineArgs {
+  std::filesystem::path db;
+  std::string axis;        // "ER" or a template's coordinate path; "": ER, or the first path
+  double tolerance = 0.0;  // the boundary's width when resolved; 0: a quarter of the finest
+                           // spacing of the axis's grid values
+  long budget = 0;         // the study's runs at most (its grid's too); 0: twice the grid's
+  double max_error = 0.1;  // the rule's threshold (study/recommend/decision_rule.hpp)
+  int jobs = 1;
+  bool quiet = false;
+  int threads = 0;
+};
+
 struct StudySceneArgs {
   std::filesystem::path grid;
   int point = 0;              // a grid or convergence point's index (as in `ccm study run`)
@@ -55,6 +67,7 @@ struct RigListArgs {
 // Each returns the process exit code (app/run_command.hpp exit_code).
 int study_run_command(const StudyRunArgs& args);
 int study_status_command(const StudyStatusArgs& args);
+int study_refine_command(const StudyRefineArgs& args);
 int study_scene_command(const StudySceneArgs& args);
 int recommend_command(const RecommendArgs& args);
 int rig_list_command(const RigListArgs& args);

@@ -6,12 +6,21 @@
 #include "run/scene/point_scene.hpp"
 #include "run/template/template_points.hpp"
 #include "study/grid/grid_expand.hpp"
+#include "study/refine/boundary_refinement.hpp"
 
 namespace ccm::study {
 
 StudyPoints study_points(const GridSpec& spec) {
   return {spec.scene_template ? template_grid_points(spec) : expand_grid(spec),
           expand_convergence(spec)};
+}
+
+GridPoint moved_point(const GridSpec& spec, GridPoint point, const std::string& axis, double value,
+                      int index) {
+  point.index = index;
+  set_axis_coordinate(point, axis, value);
+  if (spec.scene_template) derive_template_groups(spec, point);
+  return point;
 }
 
 std::string study_run_identity(const GridSpec& spec, const GridPoint& point, ImpactModel model) {

@@ -19,6 +19,11 @@ struct StudyPoints {
 };
 StudyPoints study_points(const GridSpec& spec);
 
+// A point of the study moved along `axis` ("ER", or a template's "axes.<path>") to `value`, with
+// the next free index; a template's point gets its groups from its scene again.
+GridPoint moved_point(const GridSpec& spec, GridPoint point, const std::string& axis, double value,
+                      int index);
+
 // What identifies the run (hashed: runs with the same identity are run once).
 std::string study_run_identity(const GridSpec& spec, const GridPoint& point, ImpactModel model);
 

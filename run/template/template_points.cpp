@@ -101,8 +101,9 @@ void check_rigid(const GridSpec& spec, const Scene& scene) {
 // 1.8e-05, not 1.7999999999999997e-05 (a level's value is a key of the fits).
 double twelve_digits(double x) { return std::stod(fmt::format("{:.12g}", x)); }
 
-// The point's groups set as its ER, RLS and KE.
-void derive_groups(const GridSpec& spec, GridPoint& point) {
+}  // namespace
+
+void derive_template_groups(const GridSpec& spec, GridPoint& point) {
   const SceneTemplate& t = scene_template(spec);
   const Scene scene = parse_scene(template_point_text(spec, point),
                                   template_point_name(spec, point, ImpactModel::ccm));
@@ -115,8 +116,6 @@ void derive_groups(const GridSpec& spec, GridPoint& point) {
   point.kinetic_energy = twelve_digits(g.groups->kinetic_energy);
 }
 
-}  // namespace
-
 std::vector<GridPoint> template_grid_points(const GridSpec& spec) {
   const SceneTemplate& t = scene_template(spec);
   const Scene scene = parsed_template(spec);
@@ -125,7 +124,7 @@ std::vector<GridPoint> template_grid_points(const GridSpec& spec) {
   check_axes(spec, doc, "axes", t.axes);
   check_axes(spec, doc, "levels", t.levels);
   std::vector<GridPoint> points = expand_grid(spec);
-  for (GridPoint& p : points) derive_groups(spec, p);
+  for (GridPoint& p : points) derive_template_groups(spec, p);
   return points;
 }
 

@@ -23,6 +23,10 @@ namespace ccm::study {
 // the line and the key; meshes each point's scene once (the groups need its masses).
 std::vector<GridPoint> template_grid_points(const GridSpec& spec);
 
+// Sets the point's ER, RLS and KE from its scene's groups (to 12 significant digits). Throws
+// ConfigError naming the grid file's `rigid` line when the scene has no impactor or artifact.
+void derive_template_groups(const GridSpec& spec, GridPoint& point);
+
 // The point's scene text: the template's with the point's values set (TOML, as toml++ writes it).
 std::string template_point_text(const GridSpec& spec, const GridPoint& point);
 

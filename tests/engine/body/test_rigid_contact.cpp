@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kRadius = 0.01, kGap = 2e-4, kSpeed = 1.0;
 // motion = pinned: the block turns about y through the middle of its lower edge at x = -20 mm.
-const Vec3 kPinPoint(-0.02, 0.0, -0.01);
+const Vec3 kBlockPinPoint(-0.02, 0.0, -0.01);
 
 // A 40 x 40 x 10 mm block under a soft ball (R = 10 mm, E = 1 MPa) moving down at 1 m/s, 0.2 mm
 // above it; the block is rigid with the given motion.
@@ -32,7 +32,7 @@ Model ball_on_rigid_block(RigidMotion motion) {
   add_body(mesh, "ball", test::neo_hookean(1e6, 0.3, 1000.0),
            test::gmsh_sphere(kRadius, 0.003, Vec3(0.002, 0.001, kRadius + kGap)));
   RigidBodyModel block = make_rigid(mesh, 0, motion);
-  block.pin = {.point = kPinPoint, .axis = Vec3::UnitY()};  // read only when pinned
+  block.pin = {.point = kBlockPinPoint, .axis = Vec3::UnitY()};  // read only when pinned
   Model model = make_model(std::move(mesh));
   model.rigid_bodies.push_back(block);
   test::set_body_velocity(model, 1, Vec3(0.0, 0.0, -kSpeed));
@@ -263,7 +263,7 @@ TEST_CASE(
   // J about the pin: e^T I_c e + m |d_perp|^2 (RB.7), from the block's mass properties.
   const Model model = ball_on_rigid_block(RigidMotion::pinned);
   const MassProperties& mp = model.rigid_bodies[0].mass;
-  const Vec3 e = Vec3::UnitY(), d = mp.center - kPinPoint;
+  const Vec3 e = Vec3::UnitY(), d = mp.center - kBlockPinPoint;
   const Vec3 d_perp = d - d.dot(e) * e;
   const double J = e.dot(mp.inertia * e) + mp.mass * d_perp.squaredNorm();
   const RigidState& block = b.block_end;
@@ -272,14 +272,14 @@ TEST_CASE(
   CHECK(std::abs(block.angular_velocity.y()) > 0.0);
   CHECK(std::abs(block.angular_velocity.x()) + std::abs(block.angular_velocity.z()) <
         1e-12 * std::abs(block.angular_velocity.y()));
-  const Vec3 dc = block.center - kPinPoint;
+  const Vec3 dc = block.center - kBlockPinPoint;
   CHECK(std::hypot(dc.x(), dc.z()) == Approx(std::hypot(d.x(), d.z())).epsilon(1e-12));
   // Angular momentum about the axis: the ball's (about the origin, moved to the pin) and the
   // block's J w. The pin's reaction has no moment about its axis and the contact's impulses have
   // their reactions at the same nodes; what is left is the leapfrog measure, O(dt |v| |p|) times
   // the lever, as for the free block.
   const auto about_pin = [&](const Vec3& L_origin, const Vec3& p) {
-    return e.dot(L_origin - kPinPoint.cross(p));
+    return e.dot(L_origin - kBlockPinPoint.cross(p));
   };
   const double L0 = about_pin(b.ball_angular_0, b.ball_momentum_0);
   const double L1 =
