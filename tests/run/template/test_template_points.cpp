@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "config/config_error.hpp"
+#include "run/scene/scene_file.hpp"
 #include "run/template/template_points.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/grid/grid_file.hpp"
@@ -131,4 +132,32 @@ TEST_CASE("template points: a path, a value or a body that does not exist is ref
                 "\"bodies.base.material.E\" = [1e5]\n");
   CHECK_THROWS_WITH(template_grid_points(parse_grid_file(missing)),
                     Contains("missing.toml:2: template.scene") && Contains("nowhere.toml"));
+}
+
+// The studies in the repository (scenes/studies/): each is a grid over a scene whose points all
+// pass the checks, and whose ER is its first path's value (the impactor's E) over the E the
+// template scene gives its artifact.
+TEST_CASE("template points: every study in scenes/studies is valid, its ER E_I / E_A",
+          "[template]") {
+  const std::filesystem::path folder = std::filesystem::path(CCM_SOURCE_DIR) / "scenes" / "studies";
+  int studies = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".toml") continue;
+    INFO(entry.path().string());
+    const GridSpec spec = parse_grid_file(entry.path());
+    REQUIRE(spec.scene_template);
+    const std::string axis =
+        std::string(kTemplateAxisPrefix) + spec.scene_template->axes.front().path;
+    const std::vector<GridPoint> points = template_grid_points(spec);
+    REQUIRE(points.size() >= 6);
+    const Scene scene = parse_scene_file(spec.scene_template->scene);
+    const std::string artifact = template_artifact(spec, scene);
+    double e_artifact = 0.0;
+    for (const BodySpec& b : scene.bodies)
+      if (b.name == artifact) e_artifact = b.material.E;
+    for (const GridPoint& p : points)
+      CHECK(p.modulus_ratio == Approx(p.other_axes.at(axis) / e_artifact).epsilon(1e-11));
+    ++studies;
+  }
+  CHECK(studies >= 3);
 }
