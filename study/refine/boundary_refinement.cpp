@@ -54,6 +54,9 @@ RefineInterval interval(const std::string& text, const LinePoint& a, const LineP
   i.geometric = geometric;
   i.width = geometric ? std::abs(std::log10(b.x / a.x)) : b.x - a.x;
   i.boundary = i.lo_answer != i.hi_answer;
+  i.errors_change =
+      a.decision->measured.rigid_within_error != b.decision->measured.rigid_within_error;
+  i.cost_changes = a.decision->measured.rigid_cheaper != b.decision->measured.rigid_cheaper;
   i.uncertain = !i.boundary && (a.decision->flagged() || b.decision->flagged());
   return i;
 }
@@ -81,10 +84,13 @@ double RefineInterval::middle() const {
 }
 
 std::string boundary_text(const RefineInterval& i, std::string_view axis, double tolerance) {
-  return fmt::format("{}: {} at {} {:g}, {} at {} {:g} ({:.3g}{}; tolerance {:g}: {})",
+  const char* cause = i.errors_change && i.cost_changes ? "the errors and the cost change"
+                      : i.errors_change                 ? "the errors change"
+                                                        : "the cost changes (RTR crosses 1)";
+  return fmt::format("{}: {} at {} {:g}, {} at {} {:g} ({:.3g}{}; tolerance {:g}: {}; {})",
                      i.line.empty() ? "the line" : i.line, to_string(i.lo_answer), axis, i.lo_x,
                      to_string(i.hi_answer), axis, i.hi_x, i.width, i.geometric ? " decades" : "",
-                     tolerance, i.width <= tolerance ? "resolved" : "not resolved");
+                     tolerance, i.width <= tolerance ? "resolved" : "not resolved", cause);
 }
 
 RefinePlan plan_refinement(std::span<const PointDecision> decisions, std::string_view axis,

@@ -32,7 +32,11 @@ struct RefineInterval {
   double width = 0.0;
   bool boundary = false;   // the answers differ
   bool uncertain = false;  // the same answer, but a neighbour's is flagged by the fits
-  double middle() const;   // where it is split
+  // What changes across a boundary: the errors (within max_error at one end only), the cost
+  // (RTR > 1 at one end only), or both. A cost boundary sits where RTR crosses 1, which a
+  // sitting measures to tens of percent: it moves between sittings, an error boundary does not.
+  bool errors_change = false, cost_changes = false;
+  double middle() const;  // where it is split
 };
 
 struct RefinePlan {
@@ -46,7 +50,8 @@ struct RefinePlan {
 RefinePlan plan_refinement(std::span<const PointDecision> decisions, std::string_view axis,
                            double tolerance);
 
-// "RLS 0.5, KE 10: ccm at ER 100, rigid at ER 1e+04 (2 decades; tolerance 0.25: not resolved)"
+// "RLS 0.5, KE 10: ccm at ER 100, rigid at ER 1e+04 (2 decades; tolerance 0.25: not resolved;
+// the errors change)"
 std::string boundary_text(const RefineInterval& interval, std::string_view axis, double tolerance);
 
 }  // namespace ccm::study

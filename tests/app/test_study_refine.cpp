@@ -92,6 +92,7 @@ TEST_CASE("ccm study refine: the boundary within one fine step, with half the fi
   const auto located = test::run_ccm(refine(coarse_db, "--tolerance 0.125 --budget 17"), dir);
   REQUIRE(located.status == 0);
   CHECK_THAT(located.out, Catch::Contains("every boundary located to the tolerance"));
+  CHECK_THAT(located.out, Catch::Contains("; the errors change)"));  // not the cost: RTR 2-4
   const auto measured = test::run_ccm(refine(fine_db, "--tolerance 1"), dir);
   REQUIRE(measured.status == 0);
   const Boundary r = printed_boundary(located.out), f = printed_boundary(measured.out);

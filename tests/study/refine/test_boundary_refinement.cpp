@@ -24,6 +24,8 @@ struct Decisions {
     PointDecision d;
     d.point = &m;
     d.measured.model = answer;
+    d.measured.rigid_within_error = answer == ImpactModel::rigid;  // an error boundary
+    d.measured.rigid_cheaper = true;
     if (flagged) {
       d.fitted = Recommendation{};
       d.fitted->reliability.reliable = false;
@@ -57,7 +59,9 @@ TEST_CASE("refine plan: each line's boundary, its width in decades, widest split
   CHECK(plan.to_split[0].line == "RLS 1.5, KE 10");  // the wider boundary first
   CHECK(boundary_text(a, "ER", 0.25) ==
         "RLS 0.5, KE 10: ccm at ER 100, rigid at ER 10000 (2 decades; tolerance 0.25: not "
-        "resolved)");
+        "resolved; the errors change)");
+  CHECK(a.errors_change);
+  CHECK_FALSE(a.cost_changes);
 }
 
 TEST_CASE("refine plan: a resolved boundary is not split, a flagged neighbour is once all are",
