@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 
@@ -75,6 +77,37 @@ const toml::node* resolve(const toml::table& doc, const std::vector<PathStep>& s
 
 bool is_number(const toml::node& n) { return n.is_integer() || n.is_floating_point(); }
 
+// An array of numbers (a vector such as a velocity or a size): a path to it sets its magnitude.
+bool is_vector(const toml::node& n) {
+  const toml::array* a = n.as_array();
+  return a && !a->empty() &&
+         std::all_of(a->begin(), a->end(), [](const toml::node& x) { return is_number(x); });
+}
+
+double magnitude(const toml::array& a) {
+  double sum = 0.0;
+  for (const toml::node& x : a) {
+    const double v = x.value<double>().value_or(0.0);
+    sum += v * v;
+  }
+  return std::sqrt(sum);
+}
+
+// Scales the vector to `value` (its direction kept; a negative value reverses it). Its entries
+// become floats.
+void set_magnitude(toml::array& a, std::string_view path, double value) {
+  const double norm = magnitude(a);
+  if (!(norm > 0.0))
+    throw std::invalid_argument(
+        fmt::format("\"{}\" is a zero vector in the scene: it has no direction to scale; sweep its "
+                    "components (\"{}[0]\", ...)",
+                    path, path));
+  std::vector<double> scaled;
+  for (const toml::node& x : a) scaled.push_back(x.value<double>().value_or(0.0) * value / norm);
+  for (std::size_t i = 0; i < scaled.size(); ++i)
+    a.replace(a.cbegin() + static_cast<std::ptrdiff_t>(i), scaled[i]);
+}
+
 // An array of tables whose every entry has a string `name`: its entries go by name.
 bool entries_named(const toml::array& a) {
   if (!a.is_array_of_tables()) return false;
@@ -91,6 +124,7 @@ void collect_paths(const toml::node& n, const std::string& path, std::vector<std
       collect_paths(
           value, path.empty() ? std::string(key.str()) : path + "." + std::string(key.str()), out);
   } else if (const toml::array* a = n.as_array()) {
+    if (is_vector(*a)) out.push_back(path);  // its magnitude; its components follow
     const bool named = entries_named(*a);
     for (std::size_t i = 0; i < a->size(); ++i) {
       const toml::node& entry = *a->get(i);
@@ -107,6 +141,7 @@ std::optional<double> number_at_path(const toml::table& doc, std::string_view pa
   const auto steps = parse_path(path);
   if (!steps) return std::nullopt;
   const toml::node* n = resolve(doc, *steps);
+  if (n && is_vector(*n)) return magnitude(*n->as_array());
   if (!n || !is_number(*n)) return std::nullopt;
   return n->value<double>();
 }
@@ -121,6 +156,7 @@ void set_number_at_path(toml::table& doc, std::string_view path, double value) {
   const auto steps = parse_path(path);
   // resolve() only reads; the node it finds belongs to `doc`, which is not const here.
   toml::node* n = steps ? const_cast<toml::node*>(resolve(doc, *steps)) : nullptr;
+  if (n && is_vector(*n)) return set_magnitude(*n->as_array(), path, value);
   if (!n || !is_number(*n))
     throw std::invalid_argument(fmt::format("no number at path \"{}\"", path));
   if (toml::value<double>* f = n->as_floating_point()) {

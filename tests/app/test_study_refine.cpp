@@ -76,7 +76,7 @@ std::string refine(const fs::path& db, const std::string& extra) {
 }  // namespace
 
 TEST_CASE("ccm study refine: the boundary within one fine step, with half the fine grid's runs",
-          "[study][refine][cli]") {
+          "[study][refine][cli][heavy]") {
   test::TempDir dir;
   dir.write("strike.toml", test::kStrikeScene);
   const fs::path coarse = dir.write("coarse.toml", striker_modulus_grid(1.0));
@@ -103,7 +103,7 @@ TEST_CASE("ccm study refine: the boundary within one fine step, with half the fi
 }
 
 TEST_CASE("ccm study refine: killed with SIGKILL, it resumes to the uninterrupted result",
-          "[study][refine][cli]") {
+          "[study][refine][cli][heavy]") {
   test::TempDir dir;
   dir.write("strike.toml", test::kStrikeScene);
   const fs::path grid = dir.write("coarse.toml", striker_modulus_grid(1.0));

@@ -21,8 +21,9 @@ TEST_CASE("scene paths: a body by name, a vector component by index, a table key
   CHECK(number_at_path(doc, "bodies[1].material.E") == 1e7);
   CHECK(number_at_path(doc, "bodies.striker.initial_velocity[2]") == -1.0);
   CHECK(number_at_path(doc, "time.end") == 2e-3);
+  CHECK(number_at_path(doc, "bodies.striker.initial_velocity") == 1.0);  // a vector's magnitude
   // Not numbers, or not there.
-  CHECK_FALSE(number_at_path(doc, "bodies.striker.initial_velocity"));
+  CHECK_FALSE(number_at_path(doc, "contact.surfaces"));
   CHECK_FALSE(number_at_path(doc, "bodies.striker.name"));
   CHECK_FALSE(number_at_path(doc, "bodies.strikr.material.E"));
   CHECK_FALSE(number_at_path(doc, "bodies.striker.initial_velocity[3]"));
@@ -34,8 +35,9 @@ TEST_CASE("scene paths: every number's path is listed, and each leads to its num
           "[template][paths]") {
   const toml::table doc = strike_document();
   const std::vector<std::string> paths = number_paths(doc);
-  // time 2; base: material 3, size 3, mesh_size 1; striker: those 7 and velocity 3, translate 3.
-  CHECK(paths.size() == 22);
+  // time 2; base: material 3, size 1 + 3, mesh_size 1; striker: those 8 and velocity 1 + 3,
+  // translate 1 + 3 (a vector, then its components).
+  CHECK(paths.size() == 26);
   for (const std::string& p : paths) CHECK(number_at_path(doc, p).has_value());
   CHECK(std::find(paths.begin(), paths.end(), "bodies.striker.placement.translate[2]") !=
         paths.end());
@@ -58,6 +60,22 @@ TEST_CASE("scene paths: a number is set in place, an integer stays one or is ref
                     Contains("is an integer in the scene; 2.5 is not"));
   CHECK_THROWS_WITH(set_number_at_path(steps, "time.start", 1.0),
                     Contains("no number at path \"time.start\""));
+}
+
+TEST_CASE("scene paths: a vector's path sets its magnitude, its direction kept",
+          "[template][paths]") {
+  toml::table doc = parse_toml("v = [3, 0, -4]\nzero = [0.0, 0.0]\n", "s.toml");
+  CHECK(number_at_path(doc, "v") == 5.0);
+  set_number_at_path(doc, "v", 10.0);
+  CHECK(doc["v"][0].value<double>() == 6.0);
+  CHECK(doc["v"][2].value<double>() == -8.0);
+  CHECK(doc["v"][0].is_floating_point());  // integers become floats
+  set_number_at_path(doc, "v", -5.0);      // reversed
+  CHECK(doc["v"][0].value<double>() == -3.0);
+  CHECK(doc["v"][2].value<double>() == 4.0);
+  CHECK_THROWS_WITH(set_number_at_path(doc, "zero", 1.0),
+                    Contains("\"zero\" is a zero vector in the scene") &&
+                        Contains("sweep its components (\"zero[0]\""));
 }
 
 TEST_CASE("scene paths: a path that leads nowhere names the nearest path, or those under it",
