@@ -37,6 +37,20 @@
 namespace ccm {
 namespace {
 
+// Why the run stopped, for people (TimeControl::end_after_separation).
+std::string run_end_text(const RunSummary& s, const SceneTime& time) {
+  if (s.ended_by == RunEnd::separated)
+    return fmt::format(
+        "the bodies separated: the contact open since {:.6g} s for the hold {:.6g} s",
+        s.contact_opened_at, *time.end_after_separation);
+  if (!time.end_after_separation) return "the end time";
+  return s.touched ? fmt::format(
+                         "the end time (the guard): the contact did not stay open for the "
+                         "hold {:.6g} s",
+                         *time.end_after_separation)
+                   : "the end time (the guard): the bodies never touched";
+}
+
 namespace fs = std::filesystem;
 using SystemClock = std::chrono::system_clock;
 
@@ -196,6 +210,7 @@ void print_summary_table(const RunRecord& r) {
     fmt::print("  {:<15}{:.6g} J (work of the contact on the bodies)\n", "",
                contact.model->ledger().work);
   fmt::print("  {:<15}{:.6g} s of {:.6g} s\n", "sim time", s.end_time, r.prepared.scene.time.end);
+  fmt::print("  {:<15}{}\n", "ended by", run_end_text(s, r.prepared.scene.time));
   fmt::print("  {:<15}{}\n", "steps", s.steps);
   fmt::print("  {:<15}initial {:.4g} s, min {:.4g} s, max {:.4g} s\n", "dt", s.dt_initial, s.dt_min,
              s.dt_max);
@@ -256,6 +271,10 @@ std::string summary_toml(const RunRecord& r) {
   t += "\n[run]\n";
   t += fmt::format("end_time = {}\ntime_reached = {}\nsteps = {}\n", toml_float(scene.time.end),
                    toml_float(s.end_time), s.steps);
+  t += fmt::format("ended_by = {}  # {}\ntouched = {}\n", toml_string(to_string(s.ended_by)),
+                   run_end_text(s, scene.time), s.touched);
+  if (s.ended_by == RunEnd::separated)
+    t += fmt::format("contact_opened_at = {}\n", toml_float(s.contact_opened_at));
   t += fmt::format("dt_initial = {}\ndt_min = {}\ndt_max = {}\n", toml_float(s.dt_initial),
                    toml_float(s.dt_min), toml_float(s.dt_max));
   t += fmt::format("dt_first = {}\ndt_mean = {}\n", toml_float(s.dt_first), toml_float(s.dt_mean));

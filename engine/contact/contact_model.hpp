@@ -62,6 +62,9 @@ struct ContactLedger {
   // outside the model (a rigid sphere's kinetic energy) reports 0. The monitor ends a run when
   // it exceeds the energy tolerance.
   double injected_energy = 0.0;
+  // True when the model acted on some node in the last step (a force or a correction): the
+  // bodies touch. A run may end once it has been false for a hold time (TimeControl).
+  bool touching = false;
   // Non-empty when the contact has failed in the last step (the reason, for the verdict): the run
   // then ends unstable. Checked by the integrator after every step.
   std::string failure;

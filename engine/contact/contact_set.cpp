@@ -54,6 +54,7 @@ void ContactSet::end_step(const State& state, double dt) {
     const ContactLedger& l = m->ledger();
     ledger_.work += l.work;
     ledger_.injected_energy += l.injected_energy;
+    ledger_.touching = ledger_.touching || l.touching;
     if (ledger_.failure.empty() && !l.failure.empty())
       ledger_.failure = m->name() + ": " + l.failure;
   }

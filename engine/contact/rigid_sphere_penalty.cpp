@@ -268,7 +268,8 @@ void RigidSpherePenalty::end_step(const State& state, double dt) {
   work_body_ += w;
   work_sphere_ += 0.5 * (F_s_n_ + F_s_).dot(x_s_ - x_s_n_);
   damping_work_ += 0.5 * dt * (damping_power_n_ + damping_power_);
-  ledger_ = {.work = work_body_, .injected_energy = 0.0, .failure = failure()};
+  ledger_ = {
+      .work = work_body_, .injected_energy = 0.0, .touching = n_active_ > 0, .failure = failure()};
 }
 
 // ---------------------------------------------------------------------------------------------

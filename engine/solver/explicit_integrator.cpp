@@ -18,6 +18,8 @@ namespace ccm {
 
 std::string_view to_string(Verdict v) { return v == Verdict::completed ? "completed" : "unstable"; }
 
+std::string_view to_string(RunEnd e) { return e == RunEnd::end_time ? "end_time" : "separated"; }
+
 std::string_view to_string(StepLimiter l) {
   switch (l) {
     case StepLimiter::structure:
@@ -129,6 +131,8 @@ class CentralDifference {
   double total_internal_energy() const;
   bool output_due() const;
   void sample();
+  void track_separation();
+  bool separated_long_enough() const;
   std::optional<Instability> check(bool energy_check);
   void report_progress(double dt, Clock::time_point start, double& last_report);
   void couple_evaluation(bool with_energy);
@@ -154,6 +158,7 @@ class CentralDifference {
   long next_output_index_ = 1;
   double last_dt_ = 0.0;
   long steps_since_energy_check_ = 0;
+  double open_since_ = -1.0;  // when the contact opened after touching; -1 while it touches
   bool elements_valid_everywhere_ = true;  // partitioned runs: no subdomain has a bad element
   RunSummary summary_;
 };
@@ -374,6 +379,24 @@ bool CentralDifference::output_due() const {
   return s_.t >= t_out * (1.0 - 1e-12);
 }
 
+// The contact's state after a step: touching, or open since when (TimeControl::
+// end_after_separation).
+void CentralDifference::track_separation() {
+  if (!opt_.contact) return;
+  if (opt_.contact->ledger().touching) {
+    summary_.touched = true;
+    open_since_ = -1.0;
+  } else if (summary_.touched && open_since_ < 0.0) {
+    open_since_ = s_.t;  // the first step that ends open
+  }
+}
+
+bool CentralDifference::separated_long_enough() const {
+  const double hold = opt_.time.end_after_separation;
+  return hold >= 0.0 && summary_.touched && open_since_ >= 0.0 &&
+         s_.t - open_since_ >= hold * (1.0 - 1e-12);
+}
+
 void CentralDifference::sample() {
   rigid_.place_interior(s_);  // a sample reads every node
   if (opt_.coupling) return opt_.coupling->sample(s_, body_energy_);
@@ -481,6 +504,7 @@ RunSummary CentralDifference::run() {
     last_dt_ = dt;
     load_work_.after_step(s_, t_n, s_.t);
     count_step(step, t_n);
+    track_separation();
     if (auto bad = check(energy_check)) {
       summary_.verdict = Verdict::unstable;
       summary_.instability = *bad;
@@ -489,6 +513,11 @@ RunSummary CentralDifference::run() {
     if (sample_now) {
       sample();
       if (output_due()) ++next_output_index_;
+      if (separated_long_enough()) {
+        summary_.ended_by = RunEnd::separated;
+        summary_.contact_opened_at = open_since_;
+        break;
+      }
     }
     report_progress(dt, start, last_report);
   }

@@ -32,7 +32,15 @@ struct TimeControl {
   double max_dt = std::numeric_limits<double>::infinity();
   double output_interval = 0.0;  // 0: only the initial and final states
   long max_steps = 0;            // 0: no limit
+  // >= 0: the run ends at the first output sample at which the contact, having touched, has been
+  // open (ContactLedger::touching false) for this hold time [s]; end_time is then the guard.
+  // < 0: the run ends at end_time.
+  double end_after_separation = -1.0;
 };
+
+// Why a completed run stopped: at its end time, or once its bodies had separated for the hold.
+enum class RunEnd { end_time, separated };
+std::string_view to_string(RunEnd e);
 
 enum class Verdict { completed, unstable };
 std::string_view to_string(Verdict v);
@@ -55,6 +63,9 @@ struct StepLimiterCounts {
 struct RunSummary {
   Verdict verdict = Verdict::completed;
   Instability instability;  // meaningful when unstable
+  RunEnd ended_by = RunEnd::end_time;
+  bool touched = false;             // the contact acted at some step
+  double contact_opened_at = -1.0;  // (separated) when the contact last opened [s]
   long steps = 0;
   double end_time = 0.0;  // time reached
   double dt_min = std::numeric_limits<double>::infinity();
@@ -76,7 +87,7 @@ struct RunSummary {
   double energy_balance_error = 0.0;  // largest relative error seen at the checks
   int n_nodes = 0;
   int n_elements = 0;  // the elements stepped (a rigid body's are not)
-  int threads = 1;  // the threads the run used
+  int threads = 1;     // the threads the run used
 };
 
 struct Progress {

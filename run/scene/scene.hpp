@@ -51,6 +51,8 @@ struct SceneTime {
   double dt_safety = kDefaultDtSafety;  // (0, 2]
   std::optional<double> max_dt;         // [s]
   std::optional<long> max_steps;
+  // The run ends once its bodies have separated for this hold [s] (`end` is then the guard).
+  std::optional<double> end_after_separation;
 };
 
 enum class Shape { sphere, box, cylinder, pipe, mesh };

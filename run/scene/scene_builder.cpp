@@ -531,6 +531,7 @@ TimeControl time_control(const SceneTime& time) {
   c.dt_safety = time.dt_safety;
   if (time.max_dt) c.max_dt = *time.max_dt;
   if (time.max_steps) c.max_steps = *time.max_steps;
+  if (time.end_after_separation) c.end_after_separation = *time.end_after_separation;
   return c;
 }
 

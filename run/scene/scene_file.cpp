@@ -131,7 +131,8 @@ void parse_title(const Table& root, Scene& scene) {
 
 void parse_time(const Table& root, Scene& scene) {
   const Table t = root.need_table("time");
-  t.allow_only({"end", "output_interval", "dt_safety", "max_dt", "max_steps"});
+  t.allow_only(
+      {"end", "output_interval", "dt_safety", "max_dt", "max_steps", "end_after_separation"});
   SceneTime& time = scene.time;
   time.end = positive(t, "end", t.need<double>("end"));
   time.output_interval =
@@ -147,6 +148,12 @@ void parse_time(const Table& root, Scene& scene) {
   if (auto v = t.get<long>("max_steps")) {
     if (*v <= 0) t.fail("max_steps", fmt::format("must be > 0 (got {})", *v));
     time.max_steps = *v;
+  }
+  if (auto v = t.get<double>("end_after_separation")) {
+    if (!(*v >= 0.0) || *v >= time.end)
+      t.fail("end_after_separation",
+             fmt::format("must lie in [0, end = {}) (got {})", time.end, *v));
+    time.end_after_separation = *v;
   }
 }
 

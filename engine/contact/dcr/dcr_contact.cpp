@@ -840,7 +840,10 @@ ContactStepBound DcrContact::step_bound(const State& state, double ceiling) cons
 
 void DcrContact::end_step(const State& /*state*/, double dt) {
   previous_dt_ = dt;
-  ledger_ = {.work = work(), .injected_energy = injected_energy(), .failure = failure()};
+  ledger_ = {.work = work(),
+             .injected_energy = injected_energy(),
+             .touching = active_ > 0,
+             .failure = failure()};
 }
 
 std::vector<std::string> DcrContact::history_columns() const {

@@ -150,7 +150,7 @@ void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
     if (rigid_node_[i] && !free_body_) continue;  // a kinematic body's share is its driver's
     work_ += 0.5 * (f_prev_[i] + f_now_[i]).dot(s.x[static_cast<size_t>(nodes_[i])] - x_prev_[i]);
   }
-  ledger_ = {.work = work_, .injected_energy = 0.0, .failure = failure_};
+  ledger_ = {.work = work_, .injected_energy = 0.0, .touching = n_active_ > 0, .failure = failure_};
 }
 
 ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling) const {
