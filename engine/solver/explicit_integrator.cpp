@@ -394,7 +394,8 @@ void CentralDifference::track_separation() {
 bool CentralDifference::separated_long_enough() const {
   const double hold = opt_.time.end_after_separation;
   return hold >= 0.0 && summary_.touched && open_since_ >= 0.0 &&
-         s_.t - open_since_ >= hold * (1.0 - 1e-12);
+         s_.t - open_since_ >= hold * (1.0 - 1e-12) &&
+         s_.t >= opt_.time.earliest_end * (1.0 - 1e-12);
 }
 
 void CentralDifference::sample() {

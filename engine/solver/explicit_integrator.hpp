@@ -36,6 +36,9 @@ struct TimeControl {
   // open (ContactLedger::touching false) for this hold time [s]; end_time is then the guard.
   // < 0: the run ends at end_time.
   double end_after_separation = -1.0;
+  // With end_after_separation: the run does not end before this time [s] (another run's end,
+  // when two runs are compared on common sample times).
+  double earliest_end = 0.0;
 };
 
 // Why a completed run stopped: at its end time, or once its bodies had separated for the hold.

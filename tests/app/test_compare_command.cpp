@@ -111,3 +111,36 @@ TEST_CASE("ccm compare: a body or an observable that does not exist is refused, 
   CHECK_THAT(observe.err, Contains("--observe base.umax") && Contains("did you mean 'base.u_max'"));
   CHECK(!fs::exists(out));
 }
+
+TEST_CASE("ccm compare on a whole impact: both runs end together, after both have separated",
+          "[compare][cli]") {
+  // The striker rebounds (restitution 1) and flies off; each run may end 1 ms after it separates.
+  std::string text = ccm::test::kStrikeScene;
+  const std::string end = "end = 2e-3\n";
+  text.replace(text.find(end), end.size(), "end = 0.02\nend_after_separation = 1e-3\n");
+  text += "restitution = 1.0\n";
+  ccm::test::TempDir dir;
+  const fs::path scene = dir.write("whole.toml", text);
+  const fs::path out = dir.path / "cmp";
+  const auto r = ccm::test::run_ccm(
+      fmt::format("compare '{}' --rigid striker --out '{}' --quiet", scene.string(), out.string()),
+      dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = read_json(out / "comparison.json");
+  const fs::path d = out / "runs" / (j["deformable_run"]["hash"].get<std::string>() + ".csv");
+  const fs::path k = out / "runs" / (j["rigid_run"]["hash"].get<std::string>() + ".csv");
+  const std::vector<double> td = column(d, "time"), tk = column(k, "time");
+  CHECK(td == tk);  // common sample times
+  REQUIRE(!td.empty());
+  CHECK(td.back() < 0.02);  // ended by the separation, not by the guard
+  // At the end neither contact acts (no impulse in the last samples of the hold); both did.
+  const std::vector<double> ad = column(d, "contact.normal_impulse"),
+                            ak = column(k, "contact.normal_impulse");
+  CHECK(*std::max_element(ad.begin(), ad.end()) > 0.0);  // they touched
+  CHECK(*std::max_element(ak.begin(), ak.end()) > 0.0);
+  for (std::size_t i = td.size() - 5; i < td.size(); ++i) {
+    CHECK(ad[i] == 0.0);
+    CHECK(ak[i] == 0.0);
+  }
+}
