@@ -20,6 +20,7 @@
 #include "app/rig_commands.hpp"
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
+#include "engine/mesh/mesh_cache.hpp"
 #include "records/provenance/version.hpp"
 
 namespace {
@@ -289,6 +290,12 @@ int main(int argc, char** argv) {
       "Exit codes: 0 read, 1 internal error, 2 bad input (the message names the "
       "file, the line and the dataset or keyword).");
 
+  // Every command that meshes reads its meshes back from the mesh cache (docs/mesh-cache.md).
+  bool no_mesh_cache = false;
+  for (CLI::App* meshes : {run, compare, study_run, study_refine, rig_run, rig_calibrate})
+    meshes->add_flag("--no-mesh-cache", no_mesh_cache,
+                     "Mesh every body afresh and file nothing (also CCM_MESH_CACHE=off)");
+
   if (const auto unknown = ccm::unknown_command(app, argc, argv)) {
     fmt::print(stderr, "ccm: error: {}\nRun 'ccm --help' for usage.\n", *unknown);
     return ccm::exit_code::bad_input;
@@ -299,6 +306,11 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     fmt::print(stderr, "ccm: error: {}\nRun 'ccm --help' for usage.\n", e.what());
     return ccm::exit_code::bad_input;
+  }
+  if (no_mesh_cache) {
+    ccm::MeshCacheSettings off = ccm::mesh_cache_settings();
+    off.enabled = false;
+    ccm::set_mesh_cache_settings(off);
   }
   if (*study_run) return ccm::study_run_command(study_run_args);
   if (*study_status) return ccm::study_status_command(study_status_args);

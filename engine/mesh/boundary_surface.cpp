@@ -32,19 +32,38 @@ FaceKey key_of(const Triangle& t) {
 
 }  // namespace
 
+// Faces met once are on the boundary. The faces are sorted by their sorted nodes (not counted in
+// a hash map: a sort of 4 n small entries is several times faster at 200k tets) and the boundary
+// is emitted in tet order, face order, as before.
 std::vector<Triangle> extract_boundary(std::span<const Tet> tets) {
-  std::unordered_map<FaceKey, int, FaceKeyHash> count;
-  count.reserve(tets.size() * 4);
-  for (const Tet& tet : tets)
-    for (const auto& f : kFaces) ++count[key_of({tet[f[0]], tet[f[1]], tet[f[2]]})];
-
-  std::vector<Triangle> boundary;
-  for (const Tet& tet : tets) {
-    for (const auto& f : kFaces) {
-      const Triangle t{tet[f[0]], tet[f[1]], tet[f[2]]};
-      if (count[key_of(t)] == 1) boundary.push_back(t);
+  struct Face {
+    std::array<int, 3> key;
+    int index;  // 4 tet + face
+  };
+  std::vector<Face> faces;
+  faces.reserve(tets.size() * 4);
+  for (size_t e = 0; e < tets.size(); ++e)
+    for (int f = 0; f < 4; ++f) {
+      const Tet& tet = tets[e];
+      const int* n = kFaces[f];
+      faces.push_back(
+          {key_of({tet[n[0]], tet[n[1]], tet[n[2]]}).sorted, static_cast<int>(4 * e) + f});
     }
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.key < b.key; });
+  std::vector<char> once(faces.size(), 0);
+  for (size_t i = 0; i < faces.size();) {
+    size_t j = i + 1;
+    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
+    if (j == i + 1) once[static_cast<size_t>(faces[i].index)] = 1;
+    i = j;
   }
+  std::vector<Triangle> boundary;
+  for (size_t e = 0; e < tets.size(); ++e)
+    for (int f = 0; f < 4; ++f)
+      if (once[4 * e + static_cast<size_t>(f)]) {
+        const Tet& tet = tets[e];
+        boundary.push_back({tet[kFaces[f][0]], tet[kFaces[f][1]], tet[kFaces[f][2]]});
+      }
   return boundary;
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "engine/mesh/face_table.hpp"
+#include "engine/mesh/mesh_cache.hpp"
 
 namespace ccm {
 namespace {
@@ -524,15 +525,32 @@ class PrivateLink {
 
 }  // namespace
 
+// Everything a primitive's mesh depends on, exactly (hexadecimal floats): the mesh cache's key.
+// The placement is not in it: a mesh is filed before it is placed.
+std::string primitive_key(const PrimitiveSpec& s) {
+  std::string key = fmt::format(
+      "mesh_primitive; gmsh {}; mesher {}; kind {}; radius {:a}; inner_radius {:a}; length {:a}; "
+      "size {:a} {:a} {:a}; centered {}; mesh_size {:a}",
+      GMSH_API_VERSION, CCM_MESHER_SOURCE_HASH, kind_name(s.kind), s.radius, s.inner_radius,
+      s.length, s.size.x(), s.size.y(), s.size.z(), s.centered, s.mesh_size);
+  if (const auto& r = s.refinement)
+    key += fmt::format("; refine {:a} {:a} {:a} radius {:a} mesh_size {:a} transition {:a}",
+                       r->center.x(), r->center.y(), r->center.z(), r->radius, r->mesh_size,
+                       r->transition);
+  return key;
+}
+
 TetMesh mesh_primitive(const PrimitiveSpec& spec, const Placement& placement) {
   validate_spec(spec);
   validate_placement(placement);
   const std::string context = fmt::format("mesh_primitive({})", kind_name(spec.kind));
-  TetMesh mesh = with_gmsh(context, [&] {
-    add_geometry(spec);
-    set_mesh_options(spec);
-    gmsh::model::mesh::generate(3);
-    return std::move(extract_tets(context).mesh);
+  TetMesh mesh = cached_mesh(primitive_key(spec), [&] {
+    return with_gmsh(context, [&] {
+      add_geometry(spec);
+      set_mesh_options(spec);
+      gmsh::model::mesh::generate(3);
+      return std::move(extract_tets(context).mesh);
+    });
   });
   apply_placement(mesh.nodes, placement);
   return mesh;
