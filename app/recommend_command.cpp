@@ -41,6 +41,17 @@ nlohmann::json errors_json(const study::ArtifactErrors& e) {
   return {{"u_mean", e.u_mean}, {"u_max", e.u_max}, {"kinetic_energy", e.kinetic_energy}};
 }
 
+nlohmann::json groups_json(const std::vector<study::GroupRange>& groups) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const study::GroupRange& g : groups)
+    out.push_back({{"group", g.name},
+                   {"value", g.value},
+                   {"studied_min", g.low},
+                   {"studied_max", g.high},
+                   {"inside", g.inside()}});
+  return out;
+}
+
 nlohmann::json nearest_json(const std::vector<study::NearbyPoint>& points) {
   nlohmann::json out = nlohmann::json::array();
   for (const study::NearbyPoint& p : points)
@@ -81,7 +92,8 @@ nlohmann::json recommendation_json(const RecommendArgs& q, const study::Recommen
       {"nearest_measured_points", nearest_json(r.nearest)},
       {"kinetic_energy_levels_used", r.kinetic_energy_levels_used},
       {"modelling_choices", modelling_choices_json(grid, r.axes)},
-      {"warnings", r.warnings}};
+      {"warnings", r.warnings},
+      {"groups", groups_json(r.groups)}};
 }
 
 void print_nearest(const std::vector<study::NearbyPoint>& points) {
@@ -114,6 +126,9 @@ void print_recommendation(const RecommendArgs& q, const study::Recommendation& r
   const auto& u = p.uncertainty;
   fmt::print("design point: ER = {:g}, RLS = {:g}, KE = {:g} J{}{}\n", q.er, q.rls, q.ke,
              r.axes.empty() ? "" : ", ", study::axes_text(r.axes));
+  std::string groups;
+  for (const study::GroupRange& g : r.groups) groups += (groups.empty() ? "" : ", ") + g.text();
+  fmt::print("groups: {}\n", groups);
   fmt::print("{}\n", r.rule);
   fmt::print("use: {}{}\nwhy: {}\n", study::to_string(r.model),
              r.reliability.reliable ? "" : " (UNRELIABLE: see below)", r.reason);

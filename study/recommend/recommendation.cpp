@@ -217,7 +217,30 @@ void compare_with_measured(Recommendation& r) {
       p.measured.runtime_ratio));
 }
 
+// ER, RLS and KE of the query against their ranges over the usable points at these levels.
+std::vector<GroupRange> group_ranges(std::span<const PointMetrics> measured, const AxisLevels& axes,
+                                     const RecommendQuery& q) {
+  std::vector<GroupRange> g = {{"ER", "", q.modulus_ratio, INFINITY, -INFINITY},
+                               {"RLS", "", q.length_ratio, INFINITY, -INFINITY},
+                               {"KE", "J", q.kinetic_energy, INFINITY, -INFINITY}};
+  for (const PointMetrics& m : measured) {
+    if (!usable_grid_point(m) || fit_axes(m.point) != axes) continue;
+    const double v[3] = {m.point.modulus_ratio, m.point.length_ratio, m.point.kinetic_energy};
+    for (std::size_t k = 0; k < 3; ++k) {
+      g[k].low = std::min(g[k].low, v[k]);
+      g[k].high = std::max(g[k].high, v[k]);
+    }
+  }
+  return g;
+}
+
 }  // namespace
+
+std::string GroupRange::text() const {
+  const std::string u = unit.empty() ? "" : " " + unit;
+  return fmt::format("{} {:g}{} ({} the studied {:g} to {:g}{})", name, value, u,
+                     inside() ? "inside" : "OUTSIDE", low, high, u);
+}
 
 DecisionInputs measured_inputs(const PointMetrics& point) {
   return {point.final_state, point.runtime_ratio};
@@ -240,6 +263,7 @@ Recommendation recommend(const StudyFits& fits, std::span<const PointMetrics> me
   r.reason = decision_reason(inputs, r.decision, query.max_error);
   r.reliability = decision_reliability(inputs, r.predicted.uncertainty, query.max_error);
   r.nearest = nearest_points(measured, r.axes, query, query.max_error);
+  r.groups = group_ranges(measured, r.axes, query);
   compare_with_measured(r);
   return r;
 }

@@ -47,6 +47,17 @@ struct NearbyPoint {
 
 inline constexpr int kNearestPoints = 3;
 
+// One group of the design point against the range the study measured it over (its usable grid
+// points at the answer's axis levels): a prediction outside says so.
+struct GroupRange {
+  std::string name;  // "ER", "RLS", "KE"
+  std::string unit;  // "" or "J"
+  double value = 0.0, low = 0.0, high = 0.0;
+  bool inside() const { return value >= low && value <= high; }
+  // "ER 30 (inside the studied 1 to 100)", "RLS 0.2 (OUTSIDE the studied 0.5 to 1.5)"
+  std::string text() const;
+};
+
 struct Recommendation {
   ImpactModel model = ImpactModel::ccm;
   Decision decision;
@@ -63,6 +74,7 @@ struct Recommendation {
   std::vector<NearbyPoint> nearest;   // the kNearestPoints nearest measured points, nearest first
   std::vector<std::string> clamped;   // predictions moved into the measured range, and how
   std::vector<std::string> warnings;  // extrapolation outside the studied grid, clamped KE, ...
+  std::vector<GroupRange> groups;     // ER, RLS, KE against the studied ranges
 };
 
 // `measured`: the study's grid points (the fits' samples); convergence and unusable points are

@@ -202,3 +202,27 @@ TEST_CASE("bad queries and missing fits are refused with a clear message", "[rec
   CHECK_THROWS_WITH(recommend(partial, points, query(1.0, 1.0, 50.0)),
                     "recommend: no fit of log10_w_kinetic_energy at KE = 100 J");
 }
+
+TEST_CASE("every answer states its groups against the studied ranges, and which lie outside",
+          "[recommend]") {
+  const auto points = closed_form_points();
+  const StudyFits fits = fit_study(points);
+  const Recommendation in = recommend(fits, points, query(1e3, 1.0, 50.0));
+  REQUIRE(in.groups.size() == 3);
+  CHECK(in.groups[0].name == "ER");
+  CHECK(in.groups[0].low == 1.0);
+  CHECK(in.groups[0].high == 1e6);
+  CHECK(in.groups[1].low == 0.5);
+  CHECK(in.groups[1].high == 1.5);
+  CHECK(in.groups[2].low == 10.0);
+  CHECK(in.groups[2].high == 100.0);
+  for (const GroupRange& g : in.groups) CHECK(g.inside());
+  CHECK(in.groups[2].text() == "KE 50 J (inside the studied 10 to 100 J)");
+
+  const Recommendation out = recommend(fits, points, query(1e3, 0.2, 5.0));
+  CHECK(out.groups[0].inside());
+  CHECK_FALSE(out.groups[1].inside());
+  CHECK_FALSE(out.groups[2].inside());
+  CHECK(out.groups[1].text() == "RLS 0.2 (OUTSIDE the studied 0.5 to 1.5)");
+  CHECK(mentions(out.warnings, "RLS = 0.2 lies outside the studied"));  // and it is warned of
+}
