@@ -127,6 +127,16 @@ TEST_CASE("template points: a path, a value or a body that does not exist is ref
                 "[axes]\n\"bodies.base.material.E\" = [1e5]\n");
   CHECK_THROWS_WITH(template_grid_points(parse_grid_file(both)),
                     Contains("both.toml:3: template.rigid: point 0: the groups need one impactor"));
+  std::string whole = test::kStrikeScene;
+  whole.replace(whole.find("end = 2e-3\n"), 11, "end = 2e-2\nend_after_separation = 1e-3\n");
+  dir.write("whole.toml", whole);
+  const auto impact =
+      dir.write("impact.toml",
+                "[template]\nscene = \"whole.toml\"\nrigid = [\"striker\"]\n[axes]\n"
+                "\"bodies.base.material.E\" = [1e5]\n");
+  CHECK_THROWS_WITH(template_grid_points(parse_grid_file(impact)),
+                    Contains("impact.toml:2: template.scene") &&
+                        Contains("a study does not compare whole impacts yet"));
   const auto missing =
       dir.write("missing.toml",
                 "[template]\nscene = \"nowhere.toml\"\nrigid = [\"striker\"]\n[axes]\n"
