@@ -149,6 +149,36 @@ void add_surfaces(const LabelledMesh& m, const std::unordered_map<long, int>& co
   }
 }
 
+// Nodes at exactly the same position under different labels: the tets on either side do not share
+// them, so the mesh is cut there (an export that duplicated an interface). Reported, not refused:
+// a cut may be meant (two parts that touch).
+void note_coincident_nodes(const std::unordered_map<long, int>& compact, MeshFile& out) {
+  const std::vector<Vec3>& x = out.mesh.nodes;
+  std::vector<long> label(x.size());
+  for (const auto& [l, i] : compact) label[static_cast<size_t>(i)] = l;
+  std::vector<int> order(x.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  const auto at = [&](int i) {
+    const Vec3& p = x[static_cast<size_t>(i)];
+    return std::array<double, 3>{p.x(), p.y(), p.z()};
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return at(a) < at(b); });
+  int shared = 0;
+  std::pair<int, int> first{-1, -1};
+  for (size_t k = 1; k < order.size(); ++k)
+    if (at(order[k]) == at(order[k - 1])) {
+      if (shared == 0) first = {order[k - 1], order[k]};
+      ++shared;
+    }
+  if (shared == 0) return;
+  const Vec3& p = x[static_cast<size_t>(first.first)];
+  out.report.notes.push_back(fmt::format(
+      "{} node(s) share their position with another node (the first: nodes {} and {} at ({:g}, "
+      "{:g}, {:g})): the tets on either side are not connected there",
+      shared, label[static_cast<size_t>(first.first)], label[static_cast<size_t>(first.second)],
+      p.x(), p.y(), p.z()));
+}
+
 }  // namespace
 
 MeshFile assemble(LabelledMesh&& m) {
@@ -163,6 +193,7 @@ MeshFile assemble(LabelledMesh&& m) {
   for (const auto& [label, i] : compact)
     out.mesh.nodes[static_cast<size_t>(i)] = m.length_scale * m.nodes[all.at(label)].x;
   add_tets(m, compact, out);
+  note_coincident_nodes(compact, out);
   add_node_sets(m, all, compact, out);
   add_surfaces(m, compact, out);
   return out;

@@ -165,3 +165,24 @@ TEST_CASE("inp: bad fields name the file, the line and the keyword", "[mesh][inp
   CHECK(error_with("*NSET, NSET=SYM12\n", "*NSET\n") ==
         f + ":34: *NSET: the parameter NSET= is required");
 }
+
+TEST_CASE("inp: nodes at one position under two labels are reported (the mesh is cut there)",
+          "[mesh][inp]") {
+  test::TempDir dir;
+  // Two tets on one face, the second given its own copies of the face's three nodes.
+  const auto file = dir.write("cut.inp",
+                              "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
+                              "5, 1, 1, 1\n6, 1, 0, 0\n7, 0, 1, 0\n8, 0, 0, 1\n"
+                              "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 6, 7, 8, 5\n");
+  const MeshFile m = read_inp_file(file);
+  REQUIRE(m.mesh.tets.size() == 2);
+  REQUIRE(m.report.notes.size() == 1);
+  CHECK(m.report.notes[0] ==
+        "3 node(s) share their position with another node (the first: nodes 4 and 8 at (0, 0, "
+        "1)): the tets on either side are not connected there");
+  // Joined (the second tet on nodes 2, 3, 4), nothing to report.
+  const auto joined = dir.write("joined.inp",
+                                "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
+                                "5, 1, 1, 1\n*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n");
+  CHECK(read_inp_file(joined).report.notes.empty());
+}
