@@ -185,6 +185,8 @@ int main(int argc, char** argv) {
       ->default_val(0.1);
   study_refine->add_option("--jobs,-j", refine_args.jobs, "Local worker processes")->default_val(1);
   study_refine->add_flag("--quiet,-q", refine_args.quiet, "No progress line");
+  study_refine->add_flag("--json", refine_args.json,
+                         "Print the boundaries and the runs as JSON (instead of the text)");
   study_refine->add_option("--threads", refine_args.threads, "As `ccm study run --threads`");
   study_refine->footer(
       "Resumes where a killed refine stopped (its points' runs first). Exit codes: 0 done, 1 some "

@@ -31,6 +31,7 @@ struct StudyRefineArgs {
   double max_error = 0.1;  // the rule's threshold (study/recommend/decision_rule.hpp)
   int jobs = 1;
   bool quiet = false;
+  bool json = false;  // the boundaries and runs as one JSON document
   int threads = 0;
 };
 

@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "app/command_errors.hpp"
+#include "app/json_output.hpp"
 #include "app/run_command.hpp"
 #include "app/run_schedule.hpp"
 #include "app/stored_grid.hpp"
@@ -145,6 +147,42 @@ std::vector<GridPoint> split_points(const StudyRefineArgs& args, const RefineSet
   return out;
 }
 
+void print_boundaries(const StudyRefineArgs& args, const RefineSetup& s,
+                      const study::RefinePlan& plan, bool resolved) {
+  fmt::print("{}\nboundaries of the answer along {}:\n", study::decision_rule_text(args.max_error),
+             axis_label(s.axis));
+  if (plan.boundaries.empty()) fmt::print("  none: every line has one answer\n");
+  for (const study::RefineInterval& i : plan.boundaries)
+    fmt::print("  {}\n", study::boundary_text(i, axis_label(s.axis), s.tolerance));
+  fmt::print("runs: {} of the budget {} (the study's, its grid's included); {}\n", study_runs(args),
+             s.budget,
+             resolved ? "every boundary located to the tolerance"
+                      : "stopped by the budget before every boundary was located");
+}
+
+nlohmann::json side_json(const GridPoint& p, double value, study::ImpactModel answer) {
+  return {{"point", p.index},      {"value", value},        {"answer", study::to_string(answer)},
+          {"ER", p.modulus_ratio}, {"RLS", p.length_ratio}, {"KE", p.kinetic_energy}};
+}
+
+nlohmann::json refine_json(const StudyRefineArgs& args, const RefineSetup& s,
+                           const study::RefinePlan& plan, bool resolved) {
+  nlohmann::json boundaries = nlohmann::json::array();
+  for (const study::RefineInterval& i : plan.boundaries)
+    boundaries.push_back({{"line", i.line},
+                          {"below", side_json(i.lo, i.lo_x, i.lo_answer)},
+                          {"above", side_json(i.hi, i.hi_x, i.hi_answer)},
+                          {"width", i.width},
+                          {"width_unit", i.geometric ? "decades" : "axis units"},
+                          {"resolved", i.width <= s.tolerance},
+                          {"errors_change", i.errors_change},
+                          {"cost_changes", i.cost_changes}});
+  return {{"axis", axis_label(s.axis)}, {"rule", study::decision_rule_text(args.max_error)},
+          {"tolerance", s.tolerance},   {"budget", s.budget},
+          {"runs", study_runs(args)},   {"every_boundary_located", resolved},
+          {"boundaries", boundaries}};
+}
+
 int study_refine(const StudyRefineArgs& args) {
   const RefineSetup s = refine_setup(args);
   run_planned(args, s, unfinished_runs(args, s));
@@ -157,22 +195,17 @@ int study_refine(const StudyRefineArgs& args) {
                                   s.axis, s.tolerance);
     const std::vector<GridPoint> points = split_points(args, s, plan, s.budget - study_runs(args));
     if (points.empty()) break;
-    if (!args.quiet)
+    if (!args.quiet && !args.json)
       fmt::print("refine round {}: {} point(s) on {}, {} runs\n", round, points.size(),
                  axis_label(s.axis), 2 * points.size());
     run_planned(args, s, plan_runs(s.spec, {points, {}}));
   }
-  fmt::print("{}\nboundaries of the answer along {}:\n", study::decision_rule_text(args.max_error),
-             axis_label(s.axis));
-  if (plan.boundaries.empty()) fmt::print("  none: every line has one answer\n");
-  for (const study::RefineInterval& i : plan.boundaries)
-    fmt::print("  {}\n", study::boundary_text(i, axis_label(s.axis), s.tolerance));
   const bool resolved = std::none_of(plan.to_split.begin(), plan.to_split.end(),
                                      [](const study::RefineInterval& i) { return i.boundary; });
-  fmt::print("runs: {} of the budget {} (the study's, its grid's included); {}\n", study_runs(args),
-             s.budget,
-             resolved ? "every boundary located to the tolerance"
-                      : "stopped by the budget before every boundary was located");
+  if (args.json)
+    print_json(refine_json(args, s, plan, resolved));
+  else
+    print_boundaries(args, s, plan, resolved);
   if (const long failed = count_failed(args.db, s.spec, s.grid_hash); failed > 0) {
     fmt::print(stderr, "ccm: error: {} run(s) failed; `ccm study status --db {}` names them\n",
                failed, args.db.string());

@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <thread>
@@ -99,6 +100,16 @@ TEST_CASE("ccm study refine: the boundary within one fine step, with half the fi
   CHECK(std::log10(r.hi / r.lo) <= 0.125 + 1e-9);
   CHECK(std::abs(std::log10(std::sqrt(r.lo * r.hi) / std::sqrt(f.lo * f.hi))) <= 0.125 + 1e-9);
   CHECK(stored_runs(coarse_db) <= fine_runs / 2);
+  // The same as JSON: the bracket, what changes across it, the runs.
+  const auto json = test::run_ccm(refine(coarse_db, "--tolerance 0.125 --budget 17 --json"), dir);
+  REQUIRE(json.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  REQUIRE(j["boundaries"].size() == 1);
+  CHECK(j["boundaries"][0]["below"]["value"].get<double>() == Approx(r.lo).epsilon(1e-5));
+  CHECK(j["boundaries"][0]["above"]["value"].get<double>() == Approx(r.hi).epsilon(1e-5));
+  CHECK(j["boundaries"][0]["errors_change"] == true);
+  CHECK(j["runs"].get<long>() == stored_runs(coarse_db));
+  CHECK(j["every_boundary_located"] == true);
   CHECK(stored_runs(fine_db) == fine_runs);  // the fine grid's boundary was resolved already
 }
 
