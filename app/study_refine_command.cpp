@@ -21,6 +21,7 @@
 #include "db/store/point_key.hpp"
 #include "engine/threads/thread_count.hpp"
 #include "records/content_hash.hpp"
+#include "run/parallel/rank_context.hpp"
 #include "run/runner/study_scene.hpp"
 #include "study/fit/study_fits.hpp"
 #include "study/grid/grid_expand.hpp"
@@ -121,7 +122,7 @@ int next_index(const StudyRefineArgs& args) {
   return next;
 }
 
-// Registers the runs' points and runs them.
+// Registers the runs' points and runs them (one process: study_refine_command refuses mpirun).
 void run_planned(const StudyRefineArgs& args, const RefineSetup& s,
                  const std::vector<PlannedRun>& runs) {
   if (runs.empty()) return;
@@ -220,6 +221,10 @@ int study_refine_command(const StudyRefineArgs& args) {
   return run_reporting_errors([&] {
     if (args.jobs < 1)
       throw StudyInputError(fmt::format("--jobs must be at least 1 (got {})", args.jobs));
+    if (study::launched_by_mpi())
+      throw StudyInputError(
+          "study refine runs in one process (its rounds depend on each other's results): run it "
+          "without mpirun, with --jobs N local workers");
     set_default_threads(
         resolve_threads(args.threads, threads_per_job(available_cores(), args.jobs)));
     return study_refine(args);

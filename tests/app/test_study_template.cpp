@@ -116,3 +116,14 @@ TEST_CASE("ccm study run over a scene under mpirun -np 2 stores the serial study
   CHECK(a.steps == b.steps);  // deterministic runs: the same steps on one rank or two
   CHECK(a.modulus_ratio == b.modulus_ratio);
 }
+
+TEST_CASE("ccm study refine under mpirun is refused, nothing run", "[study][refine][cli]") {
+  test::TempDir dir;
+  // What mpirun sets for every rank it starts (run/parallel/rank_context.hpp).
+  const auto r = test::run_command(fmt::format("OMPI_COMM_WORLD_SIZE=2 '{}' study refine --db '{}'",
+                                               CCM_BINARY, (dir.path / "s.sqlite").string()),
+                                   dir);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Contains("study refine runs in one process"));
+  CHECK_FALSE(fs::exists(dir.path / "s.sqlite"));
+}
