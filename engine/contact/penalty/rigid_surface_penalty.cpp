@@ -53,6 +53,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
   std::sort(nodes_.begin(), nodes_.end());
   nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
   rigid_node_.assign(nodes_.size(), 0);
+  rigid_touched_.assign(nodes_.size(), 0);
   triangles_at_.assign(nodes_.size(), 0.0);
   for (const Triangle& t : tris_)
     for (int n : t) {
@@ -64,9 +65,13 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
       rigid_local_.push_back(local_index(nodes_, n));
       rigid_node_[static_cast<size_t>(rigid_local_.back())] = 1;
     }
+  hint_.assign(3 * tris_.size(), -1);
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    if (!rigid_node_[i]) deformable_local_.push_back(static_cast<int>(i));
   f_now_.assign(nodes_.size(), Vec3::Zero());
   f_prev_ = f_now_;
   x_prev_ = f_now_;
+  x_ref_ = f_now_;
   // The bounding sphere about the body's centre of mass (its rotation leaves it unchanged).
   const Body& rb = mesh.bodies[static_cast<size_t>(rigid_body)];
   const std::vector<Tet> tets(mesh.tets.begin() + rb.first_element,
@@ -82,24 +87,96 @@ const RigidState* RigidSurfacePenalty::pose(const State& s) const {
   return nullptr;
 }
 
-Vec3 RigidSurfacePenalty::to_reference(const RigidState& r, const Vec3& x) const {
-  return r.reference_center + r.rotation.conjugate() * (x - r.center);
+// x in the body's frame: X = c_0 + R^T (x - c). to_reference() rotates by the quaternion, as
+// the contact's points always have (their results depend on it to the last bit);
+// to_reference_fast() by R^T as a matrix, formed once per pose, for the candidate filter.
+RigidSurfacePenalty::Frame::Frame(const RigidState& r)
+    : pose(r), back(r.rotation.conjugate().toRotationMatrix()) {}
+
+Vec3 RigidSurfacePenalty::Frame::to_reference(const Vec3& x) const {
+  return pose.reference_center + pose.rotation.conjugate() * (x - pose.center);
 }
 
+Vec3 RigidSurfacePenalty::Frame::to_reference_fast(const Vec3& x) const {
+  return pose.reference_center + back * (x - pose.center);
+}
+
+// Only the deformable nodes and the rigid nodes that took a force (rigid_now_) carry a force:
+// the other entries of f_now_ and f_prev_ stay zero, and no step reads or writes them.
 void RigidSurfacePenalty::begin_step(const State& s, double /*dt*/) {
-  for (size_t i = 0; i < nodes_.size(); ++i) x_prev_[i] = s.x[static_cast<size_t>(nodes_[i])];
-  f_prev_ = f_now_;
+  for (int i : deformable_local_)
+    x_prev_[static_cast<size_t>(i)] = s.x[static_cast<size_t>(nodes_[static_cast<size_t>(i)])];
+  for (int i : rigid_prev_) f_prev_[static_cast<size_t>(i)].setZero();
+  for (int i : deformable_local_) f_prev_[static_cast<size_t>(i)] = f_now_[static_cast<size_t>(i)];
+  for (int i : rigid_now_) f_prev_[static_cast<size_t>(i)] = f_now_[static_cast<size_t>(i)];
+  rigid_prev_ = rigid_now_;
+  const RigidState* r = pose(s);
+  has_pose_prev_ = r != nullptr;
+  if (r) {
+    center_prev_ = r->center;
+    rotation_prev_ = r->rotation;
+  }
 }
 
-// PS.1 at every quadrature point of the deformable surface.
+// Hands -f to the rigid triangle's nodes at the closest point's weights, noting the nodes.
+void RigidSurfacePenalty::load_rigid(int triangle, const std::array<double, 3>& weights,
+                                     const Vec3& f) {
+  for (int a = 0; a < 3; ++a) {
+    const auto i = static_cast<size_t>(
+        rigid_local_[3 * static_cast<size_t>(triangle) + static_cast<size_t>(a)]);
+    if (!rigid_touched_[i]) {
+      rigid_touched_[i] = 1;
+      rigid_now_.push_back(static_cast<int>(i));
+    }
+    f_now_[i] -= weights[static_cast<size_t>(a)] * f;
+  }
+}
+
+// The deformable triangles that can hold a point within `margin` of the rigid surface: those
+// whose nodes' box, in the body's frame, meets the surface's box grown by `margin` (a point of a
+// triangle lies in its nodes' box). Ascending, as the full loop would visit them.
+const std::vector<int>& RigidSurfacePenalty::candidates(const State& s, const Frame& frame,
+                                                        double margin) {
+  for (int i : deformable_local_)
+    x_ref_[static_cast<size_t>(i)] =
+        frame.to_reference_fast(s.x[static_cast<size_t>(nodes_[static_cast<size_t>(i)])]);
+  const Vec3 lo = distance_.box()[0] - Vec3::Constant(margin);
+  const Vec3 hi = distance_.box()[1] + Vec3::Constant(margin);
+  candidates_.clear();
+  for (size_t t = 0; t < tris_.size(); ++t) {
+    const Vec3& a = x_ref_[static_cast<size_t>(tri_local_[3 * t])];
+    const Vec3& b = x_ref_[static_cast<size_t>(tri_local_[3 * t + 1])];
+    const Vec3& c = x_ref_[static_cast<size_t>(tri_local_[3 * t + 2])];
+    if ((a.cwiseMax(b).cwiseMax(c).array() >= lo.array()).all() &&
+        (a.cwiseMin(b).cwiseMin(c).array() <= hi.array()).all())
+      candidates_.push_back(static_cast<int>(t));
+  }
+  return candidates_;
+}
+
+// The margin that covers rounding between a point's frame change and its nodes' (relative
+// 1e-9 of the body's size; a point that near the box is outside by far more than its depth).
+double RigidSurfacePenalty::rounding_margin() const {
+  return 1e-9 * (distance_.box()[1] - distance_.box()[0]).norm();
+}
+
+// PS.1 at every quadrature point of the deformable surface (those of candidate triangles: the
+// others are outside the body).
 void RigidSurfacePenalty::add_forces(State& s) {
   const RigidState* r = pose(s);
   if (!r) throw std::logic_error("penalty: the rigid body has no state in this run");
   free_body_ = r->mobile();  // free or pinned: the work on it is in the energy balance
-  std::fill(f_now_.begin(), f_now_.end(), Vec3::Zero());
+  for (int i : deformable_local_) f_now_[static_cast<size_t>(i)].setZero();
+  for (int i : rigid_now_) {
+    f_now_[static_cast<size_t>(i)].setZero();
+    rigid_touched_[static_cast<size_t>(i)] = 0;
+  }
+  rigid_now_.clear();
   n_active_ = 0;
   const double K = params_.penalty;
-  for (size_t t = 0; t < tris_.size(); ++t) {
+  const Frame frame(*r);
+  for (int candidate : candidates(s, frame, rounding_margin())) {
+    const auto t = static_cast<size_t>(candidate);
     const Triangle& T = tris_[t];
     for (int k = 0; k < 3; ++k) {
       const auto N = surface_point_weights(k);
@@ -109,7 +186,8 @@ void RigidSurfacePenalty::add_forces(State& s) {
       // Beyond the body's bounding sphere a point is outside: no query.
       if ((x - r->center).squaredNorm() > bound2_) continue;
       SurfacePoint hit;
-      const SurfaceDistance::Side side = distance_.query(to_reference(*r, x), hit);
+      const SurfaceDistance::Side side =
+          distance_.query(frame.to_reference(x), hit, &hint_[3 * t + static_cast<size_t>(k)]);
       if (side == SurfaceDistance::Side::outside) continue;
       if (side == SurfaceDistance::Side::deep) {
         if (failure_.empty())
@@ -136,19 +214,38 @@ void RigidSurfacePenalty::add_forces(State& s) {
       for (int a = 0; a < 3; ++a)
         f_now_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])] +=
             N[static_cast<size_t>(a)] * f;
-      for (int a = 0; a < 3; ++a)
-        f_now_[static_cast<size_t>(
-            rigid_local_[3 * static_cast<size_t>(hit.triangle) + static_cast<size_t>(a)])] -=
-            hit.weights[static_cast<size_t>(a)] * f;
+      load_rigid(hit.triangle, hit.weights, f);
     }
   }
-  for (size_t i = 0; i < nodes_.size(); ++i) s.f[static_cast<size_t>(nodes_[i])] += f_now_[i];
+  for (const auto* list : {&deformable_local_, &rigid_now_})
+    for (int i : *list)
+      s.f[static_cast<size_t>(nodes_[static_cast<size_t>(i)])] += f_now_[static_cast<size_t>(i)];
 }
 
 void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
-  for (size_t i = 0; i < nodes_.size(); ++i) {
-    if (rigid_node_[i] && !free_body_) continue;  // a kinematic body's share is its driver's
-    work_ += 0.5 * (f_prev_[i] + f_now_[i]).dot(s.x[static_cast<size_t>(nodes_[i])] - x_prev_[i]);
+  auto add = [&](int local, const Vec3& x, const Vec3& x_prev) {
+    const auto i = static_cast<size_t>(local);
+    work_ += 0.5 * (f_prev_[i] + f_now_[i]).dot(x - x_prev);
+  };
+  for (int i : deformable_local_) {
+    const auto n = static_cast<size_t>(nodes_[static_cast<size_t>(i)]);
+    add(i, s.x[n], x_prev_[static_cast<size_t>(i)]);
+  }
+  // A kinematic body's share is its driver's. The nodes that took a force now, then those that
+  // took one at the step's start only (both lists in the order the points first loaded them).
+  const RigidState* r = pose(s);
+  if (free_body_ && r && has_pose_prev_) {
+    // A rigid node's place at the step's start follows from its place now and the two poses:
+    // x_prev = c_prev + R_prev R^T (x - c).
+    const Mat3 back =
+        rotation_prev_.toRotationMatrix() * r->rotation.conjugate().toRotationMatrix();
+    auto add_rigid = [&](int i) {
+      const Vec3& x = s.x[static_cast<size_t>(nodes_[static_cast<size_t>(i)])];
+      add(i, x, center_prev_ + back * (x - r->center));
+    };
+    for (int i : rigid_now_) add_rigid(i);
+    for (int i : rigid_prev_)
+      if (!rigid_touched_[static_cast<size_t>(i)]) add_rigid(i);
   }
   ledger_ = {.work = work_, .injected_energy = 0.0, .touching = n_active_ > 0, .failure = failure_};
 }
@@ -157,14 +254,10 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   const RigidState* r = pose(s);
   if (!r) return {};
   // The body's bounding sphere about its centre, and the fastest approach a point can make.
-  double v_max = 0.0, reach = 0.0;
-  for (size_t i = 0; i < nodes_.size(); ++i) {
-    const auto n = static_cast<size_t>(nodes_[i]);
-    if (rigid_node_[i])
-      reach = std::max(reach, (s.x[n] - r->center).norm());
-    else
-      v_max = std::max(v_max, s.v[n].norm());
-  }
+  double v_max = 0.0;
+  const double reach = std::sqrt(bound2_);
+  for (int i : deformable_local_)
+    v_max = std::max(v_max, s.v[static_cast<size_t>(nodes_[static_cast<size_t>(i)])].norm());
   const double v_rel = v_max + r->velocity.norm() + r->angular_velocity.norm() * reach;
   const double travel = 2.0 * v_rel * std::min(ceiling, 1e300);  // safety factor 2
   const double band = reach + travel;
@@ -173,7 +266,10 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   const double K = params_.penalty;
   double omega2 = 0.0;
   int near = 0;
-  for (size_t t = 0; t < tris_.size(); ++t)
+  auto& self = const_cast<RigidSurfacePenalty&>(*this);  // the candidates are scratch
+  const Frame frame(*r);
+  for (int candidate : self.candidates(s, frame, travel + rounding_margin())) {
+    const auto t = static_cast<size_t>(candidate);
     for (int k = 0; k < 3; ++k) {
       const auto N = surface_point_weights(k);
       Vec3 x = Vec3::Zero();
@@ -181,7 +277,7 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
         x += N[static_cast<size_t>(a)] * s.x[static_cast<size_t>(tris_[t][static_cast<size_t>(a)])];
       if ((x - r->center).norm() > band) continue;
       // Only a point that can reach the surface within the step loads a spring in it (DS.2).
-      if (!distance_.inside_or_within(to_reference(*r, x), travel)) continue;
+      if (!distance_.inside_or_within(frame.to_reference(x), travel)) continue;
       ++near;
       for (int a = 0; a < 3; ++a) {
         const auto local = static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)]);
@@ -189,6 +285,7 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
         if (m > 0.0) omega2 = std::max(omega2, K * triangles_at_[local] / m);
       }
     }
+  }
   if (near == 0) return {};
   omega2 += K * near * r->inverse_mass;
   // A pinned body answers by turning: its springs at up to `reach` from the axis load 1/J r^2.

@@ -65,19 +65,37 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
 
  private:
   const RigidState* pose(const State& s) const;
-  Vec3 to_reference(const RigidState& r, const Vec3& x) const;
+  struct Frame {  // the body's pose, to take world points into its reference frame
+    explicit Frame(const RigidState& r);
+    Vec3 to_reference(const Vec3& x) const;
+    Vec3 to_reference_fast(const Vec3& x) const;  // within rounding of to_reference()
+    const RigidState& pose;
+    Mat3 back;
+  };
+  const std::vector<int>& candidates(const State& s, const Frame& frame, double margin);
+  double rounding_margin() const;
+  void load_rigid(int triangle, const std::array<double, 3>& weights, const Vec3& f);
 
   RigidSurfacePenaltyParams params_;
   int rigid_body_ = 0;
-  bool free_body_ = false;            // set at the first step, from the state
-  std::vector<Triangle> tris_;        // the deformable surface (global ids)
-  std::vector<Triangle> rigid_tris_;  // the rigid surface (global ids)
-  SurfaceDistance distance_;          // of the rigid surface, reference frame
-  std::vector<int> nodes_;            // every node that can take a force, sorted
-  std::vector<int> tri_local_;        // per deformable triangle corner: index into nodes_
-  std::vector<int> rigid_local_;      // per rigid triangle corner: index into nodes_
-  std::vector<char> rigid_node_;      // per entry of nodes_: a rigid body's node
-  std::vector<double> triangles_at_;  // per entry of nodes_: the deformable triangles at it
+  bool free_body_ = false;             // set at the first step, from the state
+  std::vector<Triangle> tris_;         // the deformable surface (global ids)
+  std::vector<Triangle> rigid_tris_;   // the rigid surface (global ids)
+  SurfaceDistance distance_;           // of the rigid surface, reference frame
+  std::vector<int> nodes_;             // every node that can take a force, sorted
+  std::vector<int> tri_local_;         // per deformable triangle corner: index into nodes_
+  std::vector<int> rigid_local_;       // per rigid triangle corner: index into nodes_
+  std::vector<char> rigid_node_;       // per entry of nodes_: a rigid body's node
+  std::vector<double> triangles_at_;   // per entry of nodes_: the deformable triangles at it
+  std::vector<int> hint_;              // per quadrature point: its last nearest rigid triangle
+  std::vector<int> deformable_local_;  // the entries of nodes_ on the deformable surface
+  std::vector<int> rigid_now_, rigid_prev_;  // rigid entries with a force, now and at the start
+  std::vector<char> rigid_touched_;          // per entry: in rigid_now_
+  bool has_pose_prev_ = false;               // the body's pose at the step's start:
+  Vec3 center_prev_ = Vec3::Zero();
+  Eigen::Quaterniond rotation_prev_ = Eigen::Quaterniond::Identity();
+  std::vector<Vec3> x_ref_;      // per entry of nodes_ (deformable ones): in the body's frame
+  std::vector<int> candidates_;  // deformable triangles near the body (scratch)
   std::vector<Vec3> f_now_, f_prev_, x_prev_;
   double work_ = 0.0, penetration_max_ = 0.0, damping_factor_ = 1.0;
   double bound2_ = 0.0;  // squared radius of the body's bounding sphere about its centre of mass

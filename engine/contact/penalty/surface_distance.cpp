@@ -103,6 +103,7 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
     hi = hi.cwiseMax(v);
   }
   h_ = std::max(lengths[lengths.size() / 2], std::cbrt((hi - lo).prod() / 2e6));
+  inverse_h_ = 1.0 / h_;
   deep_ = max_edge;
   build_grid();
   flood_outside();
@@ -111,7 +112,7 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
 std::array<int, 3> SurfaceDistance::cell_of(const Vec3& p) const {
   std::array<int, 3> c{};
   for (int d = 0; d < 3; ++d)
-    c[static_cast<size_t>(d)] = static_cast<int>(std::floor((p[d] - origin_[d]) / h_));
+    c[static_cast<size_t>(d)] = static_cast<int>(std::floor((p[d] - origin_[d]) * inverse_h_));
   return c;
 }
 
@@ -129,9 +130,10 @@ void SurfaceDistance::build_grid() {
     lo = lo.cwiseMin(v);
     hi = hi.cwiseMax(v);
   }
+  box_ = {lo, hi};
   origin_ = lo - Vec3::Constant(h_);
-  for (int d = 0; d < 3; ++d)
-    dims_[static_cast<size_t>(d)] = static_cast<int>(std::floor((hi[d] - origin_[d]) / h_)) + 2;
+  const auto top = cell_of(hi);  // the last cell that can hold a triangle, then one empty one
+  for (size_t d = 0; d < 3; ++d) dims_[d] = top[d] + 2;
   const long n_cells = static_cast<long>(dims_[0]) * dims_[1] * dims_[2];
   std::vector<std::vector<int>> lists(static_cast<size_t>(n_cells));
   for (size_t t = 0; t < triangles_.size(); ++t) {
@@ -225,7 +227,7 @@ bool SurfaceDistance::inside_or_within(const Vec3& p, double d) const {
   return false;
 }
 
-SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit) const {
+SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, int* hint) const {
   const auto c = cell_of(p);
   const long own = cell_index(c);
   if (own < 0) return Side::outside;  // beyond the grid: beyond the surface's box
@@ -233,13 +235,31 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit) c
       cell_start_[static_cast<size_t>(own)] == cell_start_[static_cast<size_t>(own) + 1];
   if (empty && outside_[static_cast<size_t>(own)]) return Side::outside;
   Nearest best;
+  // A hinted triangle within h of p is one the 27 cells hold (its closest point lies in one of
+  // them): as the first candidate it leaves the result unchanged and prunes the others sooner.
+  if (hint && *hint >= 0 && *hint < static_cast<int>(triangles_.size())) {
+    std::array<double, 3> w{};
+    const double d2 = closest(*hint, p, w);
+    if (d2 <= h_ * h_) best = {d2, *hint, w};
+  }
   // The own cell first; a neighbour only when its box is nearer than the best so far.
   for (int k = cell_start_[static_cast<size_t>(own)]; k < cell_start_[static_cast<size_t>(own) + 1];
        ++k)
     consider(cell_items_[static_cast<size_t>(k)], p, best);
-  for (int z = c[2] - 1; z <= c[2] + 1; ++z)
-    for (int y = c[1] - 1; y <= c[1] + 1; ++y)
-      for (int x = c[0] - 1; x <= c[0] + 1; ++x) {
+  // Only the neighbours that overlap the cube [p - d, p + d] about the best so far can hold a
+  // nearer triangle (a cell's box distance exceeds d elsewhere): usually the own cell alone.
+  std::array<int, 3> lo{c[0] - 1, c[1] - 1, c[2] - 1}, hi{c[0] + 1, c[1] + 1, c[2] + 1};
+  if (best.d2 < h_ * h_) {
+    const double d = std::sqrt(best.d2);
+    const auto a = cell_of(p - Vec3::Constant(d)), b = cell_of(p + Vec3::Constant(d));
+    for (size_t k = 0; k < 3; ++k) {
+      lo[k] = std::max(lo[k], a[k]);
+      hi[k] = std::min(hi[k], b[k]);
+    }
+  }
+  for (int z = lo[2]; z <= hi[2]; ++z)
+    for (int y = lo[1]; y <= hi[1]; ++y)
+      for (int x = lo[0]; x <= hi[0]; ++x) {
         const long i = cell_index({x, y, z});
         if (i < 0 || i == own ||
             cell_start_[static_cast<size_t>(i)] == cell_start_[static_cast<size_t>(i) + 1])
@@ -257,6 +277,7 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit) c
     if (best.triangle >= 0 && side_of(p, best) == Side::outside) return Side::outside;
     for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) consider(t, p, best);
   }
+  if (hint) *hint = best.triangle;
   return finish(p, best, hit);
 }
 

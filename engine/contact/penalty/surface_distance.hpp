@@ -41,14 +41,18 @@ class SurfaceDistance {
 
   enum class Side { outside, inside, deep };
   // outside: `hit` untouched. inside: `hit` filled. deep: filled, inside by more than
-  // deep_depth() (the longest edge).
-  Side query(const Vec3& p, SurfacePoint& hit) const;
+  // deep_depth() (the longest edge). `hint` (optional, in and out): a triangle likely nearest,
+  // such as this point's last answer; it changes the cost, never the result, and is set to the
+  // nearest triangle whenever the search reaches one.
+  Side query(const Vec3& p, SurfacePoint& hit, int* hint = nullptr) const;
 
   // Whether p lies inside the surface or possibly within d of it: true for every point within d
   // and every point inside (and for some points up to a cell farther), false for the rest. What a
   // step bound counts as "can reach" (DS.2).
   bool inside_or_within(const Vec3& p, double d) const;
 
+  // The surface's bounding box (min, max corners): every point inside lies in it.
+  const std::array<Vec3, 2>& box() const { return box_; }
   double cell_size() const { return h_; }
   double deep_depth() const { return deep_; }
   const std::vector<Triangle>& triangles() const { return triangles_; }
@@ -76,7 +80,8 @@ class SurfaceDistance {
   std::vector<std::array<Vec3, 2>> triangle_box_;  // per triangle: its bounding box (min, max)
   std::vector<std::array<Vec3, 3>> edge_normal_;   // per triangle: edge (k, k+1) pseudo-normal
   std::vector<Vec3> vertex_normal_;
-  double h_ = 0.0;
+  std::array<Vec3, 2> box_{Vec3::Zero(), Vec3::Zero()};
+  double h_ = 0.0, inverse_h_ = 0.0;
   double deep_ = 0.0;  // depth beyond which a point is `deep`: the longest edge
   Vec3 origin_ = Vec3::Zero();
   std::array<int, 3> dims_{};

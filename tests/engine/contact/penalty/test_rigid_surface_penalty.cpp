@@ -63,6 +63,41 @@ TEST_CASE("surface distance: inside, depth and normal of points of a box against
   CHECK(checked > 100);
 }
 
+// A hint (any triangle, as a point's last answer would be) changes which triangles are tested
+// first, never the answer: side, depth, point, normal, triangle and weights to the last bit.
+TEST_CASE("surface distance: a hint leaves every answer unchanged", "[rigid-body][penalty]") {
+  const TetMesh ball = test::gmsh_sphere(1.0, 0.25, Vec3::Zero());
+  const SurfaceDistance d(ball.nodes, extract_boundary(ball.tets));
+  const int n_triangles = static_cast<int>(d.triangles().size());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.1, 1.1);
+  std::uniform_int_distribution<int> pick(-1, n_triangles - 1);
+  int inside = 0, neighbour_hints = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    SurfacePoint plain, hinted;
+    const auto side = d.query(p, plain);
+    // Most hints are a neighbour's answer (a point up to two cells away), the rest any triangle.
+    int hint = pick(rng);
+    const Vec3 near = p + 2.0 * d.cell_size() * Vec3(u(rng), u(rng), u(rng)) / 1.1;
+    SurfacePoint neighbour;
+    if (i % 4 != 0 && d.query(near, neighbour) != SurfaceDistance::Side::outside)
+      hint = neighbour.triangle, ++neighbour_hints;
+    const auto side_hinted = d.query(p, hinted, &hint);
+    REQUIRE(side == side_hinted);
+    if (side == SurfaceDistance::Side::outside) continue;
+    ++inside;
+    CHECK(hinted.depth == plain.depth);
+    CHECK(hinted.point == plain.point);
+    CHECK(hinted.normal == plain.normal);
+    CHECK(hinted.triangle == plain.triangle);
+    CHECK(hinted.weights == plain.weights);
+    CHECK(hint == plain.triangle);  // the answer becomes the next hint
+  }
+  CHECK(inside > 500);
+  CHECK(neighbour_hints > 500);
+}
+
 TEST_CASE("surface distance: an open surface is refused", "[rigid-body][penalty]") {
   const TetMesh box = structured_box(Vec3(1, 1, 1), 1, 1, 1);
   std::vector<Triangle> open = extract_boundary(box.tets);
