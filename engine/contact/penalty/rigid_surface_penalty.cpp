@@ -71,7 +71,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
   f_now_.assign(nodes_.size(), Vec3::Zero());
   f_prev_ = f_now_;
   x_prev_ = f_now_;
-  x_ref_ = f_now_;
+  outcode_.assign(nodes_.size(), 0);
   // The bounding sphere about the body's centre of mass (its rotation leaves it unchanged).
   const Body& rb = mesh.bodies[static_cast<size_t>(rigid_body)];
   const std::vector<Tet> tets(mesh.tets.begin() + rb.first_element,
@@ -134,23 +134,27 @@ void RigidSurfacePenalty::load_rigid(int triangle, const std::array<double, 3>& 
 
 // The deformable triangles that can hold a point within `margin` of the rigid surface: those
 // whose nodes' box, in the body's frame, meets the surface's box grown by `margin` (a point of a
-// triangle lies in its nodes' box). Ascending, as the full loop would visit them.
+// triangle lies in its nodes' box). Each node's outcode marks the faces of the grown box it lies
+// beyond (Cohen-Sutherland); the nodes' box misses the grown box when all three nodes lie beyond
+// one face. Ascending, as the full loop would visit them.
 const std::vector<int>& RigidSurfacePenalty::candidates(const State& s, const Frame& frame,
                                                         double margin) {
-  for (int i : deformable_local_)
-    x_ref_[static_cast<size_t>(i)] =
-        frame.to_reference_fast(s.x[static_cast<size_t>(nodes_[static_cast<size_t>(i)])]);
   const Vec3 lo = distance_.box()[0] - Vec3::Constant(margin);
   const Vec3 hi = distance_.box()[1] + Vec3::Constant(margin);
-  candidates_.clear();
-  for (size_t t = 0; t < tris_.size(); ++t) {
-    const Vec3& a = x_ref_[static_cast<size_t>(tri_local_[3 * t])];
-    const Vec3& b = x_ref_[static_cast<size_t>(tri_local_[3 * t + 1])];
-    const Vec3& c = x_ref_[static_cast<size_t>(tri_local_[3 * t + 2])];
-    if ((a.cwiseMax(b).cwiseMax(c).array() >= lo.array()).all() &&
-        (a.cwiseMin(b).cwiseMin(c).array() <= hi.array()).all())
-      candidates_.push_back(static_cast<int>(t));
+  for (int i : deformable_local_) {
+    const Vec3 x =
+        frame.to_reference_fast(s.x[static_cast<size_t>(nodes_[static_cast<size_t>(i)])]);
+    unsigned code = 0;
+    for (int d = 0; d < 3; ++d)
+      code |= (x[d] < lo[d] ? 1u : 0u) << (2 * d) | (x[d] > hi[d] ? 2u : 0u) << (2 * d);
+    outcode_[static_cast<size_t>(i)] = static_cast<unsigned char>(code);
   }
+  candidates_.clear();
+  for (size_t t = 0; t < tris_.size(); ++t)
+    if ((outcode_[static_cast<size_t>(tri_local_[3 * t])] &
+         outcode_[static_cast<size_t>(tri_local_[3 * t + 1])] &
+         outcode_[static_cast<size_t>(tri_local_[3 * t + 2])]) == 0)
+      candidates_.push_back(static_cast<int>(t));
   return candidates_;
 }
 

@@ -94,8 +94,8 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   bool has_pose_prev_ = false;               // the body's pose at the step's start:
   Vec3 center_prev_ = Vec3::Zero();
   Eigen::Quaterniond rotation_prev_ = Eigen::Quaterniond::Identity();
-  std::vector<Vec3> x_ref_;      // per entry of nodes_ (deformable ones): in the body's frame
-  std::vector<int> candidates_;  // deformable triangles near the body (scratch)
+  std::vector<unsigned char> outcode_;  // per entry of nodes_: candidates()'s outcode
+  std::vector<int> candidates_;         // deformable triangles near the body (scratch)
   std::vector<Vec3> f_now_, f_prev_, x_prev_;
   double work_ = 0.0, penetration_max_ = 0.0, damping_factor_ = 1.0;
   double bound2_ = 0.0;  // squared radius of the body's bounding sphere about its centre of mass

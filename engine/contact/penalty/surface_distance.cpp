@@ -93,16 +93,18 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
                                                  face_normal_[static_cast<size_t>(faces[1])])
                                                     .normalized();
     }
-  // Cells of the median edge (each edge counted from both sides): a query then tests a few tens
-  // of triangles where the mesh is refined, as where it is coarse. No more than about 2e6 cells.
-  std::nth_element(lengths.begin(), lengths.begin() + static_cast<long>(lengths.size() / 2),
-                   lengths.end());
+  // Cells of the lower-quartile edge (each edge counted from both sides): a query then tests a
+  // few triangles where a graded surface is refined (the median edge put tens of refined
+  // triangles in one cell of the grid's meshed impactor), and a coarse triangle is listed in many
+  // cells. No more than about 2e6 cells.
+  const auto quartile = static_cast<long>(lengths.size() / 4);
+  std::nth_element(lengths.begin(), lengths.begin() + quartile, lengths.end());
   Vec3 lo = vertices_.front(), hi = vertices_.front();
   for (const Vec3& v : vertices_) {
     lo = lo.cwiseMin(v);
     hi = hi.cwiseMax(v);
   }
-  h_ = std::max(lengths[lengths.size() / 2], std::cbrt((hi - lo).prod() / 2e6));
+  h_ = std::max(lengths[static_cast<size_t>(quartile)], std::cbrt((hi - lo).prod() / 2e6));
   inverse_h_ = 1.0 / h_;
   deep_ = max_edge;
   build_grid();
@@ -202,15 +204,26 @@ double SurfaceDistance::box_distance2(const Vec3& p, const std::array<int, 3>& c
 }
 
 // Ties (a shared edge or vertex) go to the lowest triangle: a result independent of the order. A
-// triangle whose bounding box is farther than the best so far can neither win nor tie: skipped
-// (the same result, without the closest-point test).
+// triangle whose bounding box or plane is farther than the best so far can neither win nor tie:
+// skipped (the same result, without the closest-point test).
 void SurfaceDistance::consider(int t, const Vec3& p, Nearest& best) const {
+  if (t == best.triangle) return;  // its distance is known (a hint, or a cell listed it already)
   const auto& box = triangle_box_[static_cast<size_t>(t)];
   const Vec3 out = (box[0] - p).cwiseMax(p - box[1]).cwiseMax(0.0);
   if (out.squaredNorm() > best.d2) return;
+  // Nor can it when its plane is farther (the distance to the plane bounds it from below).
+  const double plane = face_normal_[static_cast<size_t>(t)].dot(
+      p - vertices_[static_cast<size_t>(triangles_[static_cast<size_t>(t)][0])]);
+  if (plane * plane > best.d2) return;
   std::array<double, 3> w{};
   const double d2 = closest(t, p, w);
   if (d2 < best.d2 || (d2 == best.d2 && t < best.triangle)) best = {d2, t, w};
+}
+
+void SurfaceDistance::consider_cell(long cell, const Vec3& p, Nearest& best) const {
+  for (int k = cell_start_[static_cast<size_t>(cell)];
+       k < cell_start_[static_cast<size_t>(cell) + 1]; ++k)
+    consider(cell_items_[static_cast<size_t>(k)], p, best);
 }
 
 // By cells alone (DS.2): a point within d of the surface has the cell of its closest surface point
@@ -235,47 +248,40 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, i
       cell_start_[static_cast<size_t>(own)] == cell_start_[static_cast<size_t>(own) + 1];
   if (empty && outside_[static_cast<size_t>(own)]) return Side::outside;
   Nearest best;
-  // A hinted triangle within h of p is one the 27 cells hold (its closest point lies in one of
-  // them): as the first candidate it leaves the result unchanged and prunes the others sooner.
+  // A hint (any triangle) as the first candidate leaves the answer unchanged: the search below
+  // stops only once every triangle nearer than the best has been considered, and prunes the
+  // others sooner the nearer the best is.
   if (hint && *hint >= 0 && *hint < static_cast<int>(triangles_.size())) {
     std::array<double, 3> w{};
-    const double d2 = closest(*hint, p, w);
-    if (d2 <= h_ * h_) best = {d2, *hint, w};
+    best = {closest(*hint, p, w), *hint, w};
   }
-  // The own cell first; a neighbour only when its box is nearer than the best so far.
-  for (int k = cell_start_[static_cast<size_t>(own)]; k < cell_start_[static_cast<size_t>(own) + 1];
-       ++k)
-    consider(cell_items_[static_cast<size_t>(k)], p, best);
-  // Only the neighbours that overlap the cube [p - d, p + d] about the best so far can hold a
-  // nearer triangle (a cell's box distance exceeds d elsewhere): usually the own cell alone.
-  std::array<int, 3> lo{c[0] - 1, c[1] - 1, c[2] - 1}, hi{c[0] + 1, c[1] + 1, c[2] + 1};
-  if (best.d2 < h_ * h_) {
-    const double d = std::sqrt(best.d2);
-    const auto a = cell_of(p - Vec3::Constant(d)), b = cell_of(p + Vec3::Constant(d));
-    for (size_t k = 0; k < 3; ++k) {
-      lo[k] = std::max(lo[k], a[k]);
-      hi[k] = std::min(hi[k], b[k]);
-    }
-  }
-  for (int z = lo[2]; z <= hi[2]; ++z)
-    for (int y = lo[1]; y <= hi[1]; ++y)
-      for (int x = lo[0]; x <= hi[0]; ++x) {
-        const long i = cell_index({x, y, z});
-        if (i < 0 || i == own ||
-            cell_start_[static_cast<size_t>(i)] == cell_start_[static_cast<size_t>(i) + 1])
-          continue;
-        if (box_distance2(p, {x, y, z}) > best.d2) continue;
-        for (int k = cell_start_[static_cast<size_t>(i)];
-             k < cell_start_[static_cast<size_t>(i) + 1]; ++k)
-          consider(cell_items_[static_cast<size_t>(k)], p, best);
+  consider_cell(own, p, best);
+  // Ring k: the cells k steps from the own cell. After rings 0..k every triangle within k h of
+  // p has been considered (its closest point lies within k cells of p's on each axis), so the
+  // best is the nearest once it is within k h. Only the cells that overlap the cube of half-side
+  // `best` about p can hold a nearer triangle: usually none beyond the own cell.
+  const int widest = std::max({dims_[0], dims_[1], dims_[2]});
+  for (int k = 1; k <= widest; ++k) {
+    std::array<int, 3> lo{c[0] - k, c[1] - k, c[2] - k}, hi{c[0] + k, c[1] + k, c[2] + k};
+    if (std::isfinite(best.d2)) {
+      const double d = std::sqrt(best.d2);
+      const auto a = cell_of(p - Vec3::Constant(d)), b = cell_of(p + Vec3::Constant(d));
+      for (size_t e = 0; e < 3; ++e) {
+        lo[e] = std::max({lo[e], a[e], 0});
+        hi[e] = std::min({hi[e], b[e], dims_[e] - 1});
       }
-  // Beyond h the 27 cells need not hold the closest triangle (they hold every triangle within h,
-  // the ball of radius h about p lying in them). A point that the nearest of them puts outside is
-  // taken as outside (it is more than h from the surface, so no spring would act); one it puts
-  // inside is settled against every triangle (rare: a point deep inside).
-  if (!(best.d2 <= h_ * h_)) {
-    if (best.triangle >= 0 && side_of(p, best) == Side::outside) return Side::outside;
-    for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) consider(t, p, best);
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x) {
+          const int ring = std::max({std::abs(x - c[0]), std::abs(y - c[1]), std::abs(z - c[2])});
+          if (ring != k) continue;
+          const std::array<int, 3> cell{x, y, z};
+          const long i = cell_index(cell);
+          if (i < 0 || box_distance2(p, cell) > best.d2) continue;
+          consider_cell(i, p, best);
+        }
+    if (best.d2 <= k * k * h_ * h_) break;
   }
   if (hint) *hint = best.triangle;
   return finish(p, best, hit);

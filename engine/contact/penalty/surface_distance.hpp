@@ -3,16 +3,16 @@
 // meshed rigid body needs (rigid_surface_penalty.hpp; docs/rigid-bodies.md, "Penalty").
 //
 // The surface is fixed in its own frame (a rigid body's reference configuration). A uniform grid
-// of cells of size h (the median edge) holds every triangle in the cells its bounding box
-// overlaps. A point in a cell that holds triangles is tested against those of the 27 cells
-// around it: the closest of them is the surface's closest point whenever the point is within h
-// of the surface. The side is that of the angle-weighted pseudo-normal at the closest feature
-// (face, edge or vertex; Baerentzen & Aanaes, IEEE TVCG 11(3), 2005), exact for a closed
-// manifold surface. Whether an empty cell is inside or outside is settled once by a flood fill
-// from the grid's border through empty cells (DS.1): a point in an empty outside cell is outside
-// at once. When the 27 cells hold no triangle within h, the point is more than h from the
-// surface: the nearest of them says outside (no spring acts), or every triangle is searched. A
-// point deeper than the longest edge inside is reported as deep (with its closest point).
+// of cells of size h (the lower-quartile edge) holds every triangle in the cells its bounding
+// box overlaps. A query visits the point's own cell, then rings of cells around it (ring k: the
+// cells k steps away): after ring k every triangle within k h has been considered, so the search
+// stops once the best is within k h, and a ring's cells farther than the best are skipped. The
+// nearest triangle is exact (ties go to the lowest index), whatever the order or the hint. The
+// side is that of the angle-weighted pseudo-normal at the closest feature (face, edge or vertex;
+// Baerentzen & Aanaes, IEEE TVCG 11(3), 2005), exact for a closed manifold surface. Whether an
+// empty cell is inside or outside is settled once by a flood fill from the grid's border through
+// empty cells (DS.1): a point in an empty outside cell is outside at once. A point deeper than
+// the longest edge inside is reported as deep (with its closest point).
 #pragma once
 
 #include <array>
@@ -65,6 +65,7 @@ class SurfaceDistance {
   };
   double closest(int t, const Vec3& p, std::array<double, 3>& w) const;
   void consider(int t, const Vec3& p, Nearest& best) const;
+  void consider_cell(long cell, const Vec3& p, Nearest& best) const;
   double box_distance2(const Vec3& p, const std::array<int, 3>& c) const;
   void feature(const Nearest& best, Vec3& q, Vec3& normal) const;
   Side side_of(const Vec3& p, const Nearest& best) const;
