@@ -36,6 +36,21 @@ std::vector<std::vector<std::size_t>> group_by_scene(const std::vector<PlannedRu
   return groups;
 }
 
+std::vector<std::vector<std::size_t>> group_by_point(const std::vector<PlannedRun>& runs) {
+  std::vector<std::vector<std::size_t>> groups;
+  std::map<int, std::size_t> group_of;  // by point index
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto [it, is_new] = group_of.emplace(runs[i].point.index, groups.size());
+    if (is_new) groups.emplace_back();
+    groups[it->second].push_back(i);
+  }
+  for (auto& g : groups)  // the CCM run first: it sets the group's expected cost
+    std::stable_sort(g.begin(), g.end(), [&](std::size_t a, std::size_t b) {
+      return runs[a].model == study::ImpactModel::ccm && runs[b].model != study::ImpactModel::ccm;
+    });
+  return groups;
+}
+
 double expected_run_cost(const study::GridPoint& point, study::ImpactModel model) {
   constexpr double kRigidCost = 60.0;
   const double per_scale = 1.0 / std::pow(study::mesh_scale(point), 4);

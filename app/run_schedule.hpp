@@ -33,6 +33,11 @@ std::vector<PlannedRun> plan_runs(const study::GridSpec& spec, const study::Stud
 // of their first run.
 std::vector<std::vector<std::size_t>> group_by_scene(const std::vector<PlannedRun>& runs);
 
+// The two runs of each point, as indices into `runs` (its CCM run, then its rigid run), in plan
+// order: a whole-impact study runs them together (study_runs.hpp) and shares no scene between
+// points (a run's end depends on its partner's).
+std::vector<std::vector<std::size_t>> group_by_point(const std::vector<PlannedRun>& runs);
+
 // The expected cost of a run, in relative units: a CCM run sqrt(ER) / s^4, a rigid run 60 / s^4,
 // s the mesh scale. The stiff sphere's stable step falls as 1 / c_I ~ 1 / sqrt(E_I); the element
 // count grows as s^-3 and the step count as s^-1. The rigid runs' 60 is measured on the default

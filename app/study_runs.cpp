@@ -72,6 +72,48 @@ void store_reuses(db::StudyStore& store, const study::RunRecord& source,
   }
 }
 
+// The time of a run's last sample [s].
+double end_of(const study::RunRecord& r) {
+  return r.artifact.time.empty() ? 0.0 : r.artifact.time.back();
+}
+
+// A point's two runs of a whole-impact study (docs/grid-file.md, "Whole impacts"), run together
+// so that both end at the same time, after both have separated: the rigid run first (the cheap
+// one), then the CCM run not before the rigid run's end, then the rigid run again to the CCM
+// run's end when that is later (up to its first end the same run, bit for bit). Each record is
+// stored as soon as it is made; a resumed pair reuses what is stored and redoes only what is
+// missing or ends apart. Returns false when another process holds the pair.
+bool run_pair(db::StudyStore& store, const GridSpec& spec, const GridPoint& point,
+              const db::RunProvenance& provenance) {
+  auto stored = [&](ImpactModel m) {
+    return store.is_done(point, m) ? store.load_run(point, m) : std::nullopt;
+  };
+  std::optional<study::RunRecord> ccm_run = stored(ImpactModel::ccm);
+  std::optional<study::RunRecord> rigid_run = stored(ImpactModel::rigid);
+  if (ccm_run && rigid_run &&
+      (end_of(*rigid_run) == end_of(*ccm_run) || !ccm_run->completed() || !rigid_run->completed()))
+    return true;
+  const ImpactModel missing = ccm_run ? ImpactModel::rigid : ImpactModel::ccm;
+  if ((!ccm_run || !rigid_run) && !store.mark_running(point, missing, provenance, db::utc_now()))
+    return false;  // both stored, ending apart: the rigid run is redone below without a claim
+  if (!rigid_run) {
+    rigid_run = study::run_point(spec, point, ImpactModel::rigid);
+    store.record_run(*rigid_run, provenance);
+  }
+  if (!ccm_run) {
+    study::PointRunOptions after;
+    if (rigid_run->completed()) after.end.earliest = end_of(*rigid_run);
+    ccm_run = study::run_point(spec, point, ImpactModel::ccm, after);
+    store.record_run(*ccm_run, provenance);
+  }
+  if (ccm_run->completed() && rigid_run->completed() && end_of(*ccm_run) > end_of(*rigid_run)) {
+    study::PointRunOptions longer;
+    longer.end.fixed = end_of(*ccm_run);
+    store.record_run(study::run_point(spec, point, ImpactModel::rigid, longer), provenance);
+  }
+  return true;
+}
+
 // Runs the groups of runs that share a scene (run_schedule.hpp) that `next_group` hands out (an
 // index into `groups`; >= groups.size() when there are no more), each simulated once and stored
 // for every member not done yet; each record is committed on its own. Returns the number of
@@ -79,8 +121,8 @@ void store_reuses(db::StudyStore& store, const study::RunRecord& source,
 long run_share(const fs::path& db, const GridSpec& spec, const std::string& grid_hash,
                const std::vector<PlannedRun>& runs,
                const std::vector<std::vector<std::size_t>>& groups,
-               const std::function<std::size_t()>& next_group,
-               const db::RunProvenance& provenance) {
+               const std::function<std::size_t()>& next_group, const db::RunProvenance& provenance,
+               bool whole_impacts) {
   db::StudyStore store(db);
   store.open_study(spec.title, grid_hash);
   long failed = 0;
@@ -89,9 +131,11 @@ long run_share(const fs::path& db, const GridSpec& spec, const std::string& grid
     const bool all_done = std::all_of(group.begin(), group.end(), [&](std::size_t i) {
       return store.is_done(runs[i].point, runs[i].model);
     });
-    if (all_done) continue;
+    if (all_done && !whole_impacts) continue;
     try {
-      if (const auto record = group_record(store, spec, runs, group, provenance))
+      if (whole_impacts)
+        run_pair(store, spec, runs[group.front()].point, provenance);
+      else if (const auto record = group_record(store, spec, runs, group, provenance))
         store_reuses(store, *record, runs, group, provenance);
     } catch (const db::StoreError&) {
       throw;  // the store itself is broken: stop this worker
@@ -224,7 +268,11 @@ int run_all(const StudyRunsSetup& args, const study::RankContext& ranks, const G
             const std::string& grid_hash, const std::vector<PlannedRun>& runs) {
   const int jobs = ranks.size() > 1 ? 1 : args.jobs;
   const auto provenance = db::current_provenance(grid_hash, ranks.size(), jobs);
-  const std::vector<std::vector<std::size_t>> groups = group_by_scene(runs);
+  const bool whole_impacts =
+      !runs.empty() && study::study_scene(spec, runs.front().point, ImpactModel::ccm)
+                           .time.end_after_separation.has_value();
+  const std::vector<std::vector<std::size_t>> groups =
+      whole_impacts ? group_by_point(runs) : group_by_scene(runs);
   const std::vector<std::size_t> order = longest_first(runs, groups);
   SharedCounter shared;                                        // forked workers
   std::size_t dealt = static_cast<std::size_t>(ranks.rank());  // MPI ranks
@@ -239,7 +287,8 @@ int run_all(const StudyRunsSetup& args, const study::RankContext& ranks, const G
     return k < order.size() ? order[k] : groups.size();
   };
   auto work = [&](int /*worker*/) {
-    return run_share(args.db, spec, grid_hash, runs, groups, next_run, provenance) > 0
+    return run_share(args.db, spec, grid_hash, runs, groups, next_run, provenance, whole_impacts) >
+                   0
                ? exit_code::internal_error
                : exit_code::completed;
   };

@@ -79,10 +79,20 @@ RunRecord run_point(const GridSpec& spec, const GridPoint& point, ImpactModel mo
   r.point = point;
   r.model = model;
   r.started_at = utc_timestamp(SystemClock::now());
-  r.scene_hash = fnv1a64(study_run_identity(spec, point, model));
-  const SceneRun scene = assemble_scene_run(study_scene(spec, point, model));
+  std::string identity = study_run_identity(spec, point, model);
+  Scene point_scene = study_scene(spec, point, model);
+  if (options.end.fixed) {
+    point_scene.time.end = *options.end.fixed;
+    point_scene.time.end_after_separation.reset();
+    identity += fmt::format("\n# end {}", *options.end.fixed);
+  } else if (options.end.earliest > 0.0) {
+    identity += fmt::format("\n# earliest_end {}", options.end.earliest);
+  }
+  r.scene_hash = fnv1a64(identity);
+  const SceneRun scene = assemble_scene_run(std::move(point_scene));
   HistoryRecorder history(scene.model.mesh, scene.output);
   RunOptions run = scene_run_options(scene, &history);
+  run.time.earliest_end = options.end.earliest;
   run.progress_seconds = options.progress_seconds;
   if (options.progress)
     run.progress = [&](const Progress& p) { options.progress(point, model, p); };

@@ -36,6 +36,8 @@ std::string time_section(const GridTime& time) {
   std::string s = fmt::format("[time]\nend = {}\noutput_interval = {}\ndt_safety = {}\n",
                               num(time.end), num(time.output_interval), num(time.dt_safety));
   if (time.max_steps > 0) s += fmt::format("max_steps = {}\n", time.max_steps);
+  if (time.end_after_separation)
+    s += fmt::format("end_after_separation = {}\n", num(*time.end_after_separation));
   return s;
 }
 

@@ -87,16 +87,6 @@ Scene parsed_template(const GridSpec& spec) {
   } catch (const ConfigError& e) {
     throw grid_error(spec, t.scene_line, "template.scene", e.what());
   }
-  // A study's two runs of a point run apart (each on its own worker), so they cannot agree on a
-  // common end as `ccm compare`'s do (docs/compare.md, "Whole impacts").
-  if (scene.time.end_after_separation)
-    throw grid_error(
-        spec, t.scene_line, "template.scene",
-        fmt::format("{} ends its runs after separation ([time] end_after_separation): a study does "
-                    "not compare whole impacts yet (its two runs of a point would end apart); "
-                    "remove the key for the study (its runs then go to [time] end), or compare "
-                    "one design with `ccm compare`",
-                    t.scene.string()));
   return scene;
 }
 

@@ -63,7 +63,8 @@ void parse_axes(const StrictTable& root, GridSpec& g) {
 
 void parse_time(const StrictTable& root, GridSpec& g) {
   const StrictTable t = root.need_table("time");
-  t.allow_only({"contact_time", "end", "output_interval", "dt_safety", "max_steps"});
+  t.allow_only(
+      {"contact_time", "end", "output_interval", "dt_safety", "max_steps", "end_after_separation"});
   GridTime& time = g.time;
   time.end = positive(t, "end");
   time.contact_time = positive(t, "contact_time");
@@ -77,6 +78,13 @@ void parse_time(const StrictTable& root, GridSpec& g) {
     t.fail("dt_safety", kStudyDtSafetyRange.problem(time.dt_safety));
   time.max_steps = t.integer("max_steps").value_or(0);
   if (time.max_steps < 0) t.fail("max_steps", "must be >= 0 (0: no limit)");
+  if (t.has("end_after_separation")) {
+    const double hold = t.number_or("end_after_separation", 0.0);
+    if (!(hold >= 0.0) || hold >= time.end)
+      t.fail("end_after_separation",
+             fmt::format("must lie in [0, end = {}) (got {})", time.end, hold));
+    time.end_after_separation = hold;
+  }
 }
 
 ArtifactSupport parse_support(const StrictTable& t) {

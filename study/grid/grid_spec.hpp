@@ -52,6 +52,9 @@ struct GridTime {
   double output_interval = 1e-3;  // [s], the same for both models
   double dt_safety = kDefaultDtSafety;
   long max_steps = 0;  // 0: no limit
+  // Whole impacts: each run ends one hold [s] after its bodies separate (end is then the guard),
+  // and a point's two runs end together (docs/grid-file.md, "Whole impacts"). Empty: at end.
+  std::optional<double> end_after_separation;
 };
 
 struct GridContact {

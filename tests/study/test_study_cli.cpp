@@ -286,3 +286,83 @@ TEST_CASE("ccm study scene: the printed scene, run alone, repeats the stored run
               tmp.path / "err", err) == 2);
   CHECK(err == "ccm: error: " + grid.string() + ": no point 9 (the grid has points 0 to 1)\n");
 }
+
+namespace {
+
+// kTinyGrid's bodies on a stiffer plate (E_A 1e5 Pa), hit harder, as whole impacts: each run ends
+// 5 ms after its bodies separate, the guard `end` far beyond the impact. The rigid run separates
+// near 0.05 s; at ER 1 the CCM run near 0.24 s, so the rigid run is run again to that end.
+std::string whole_impact_grid() {
+  std::string bodies(test::kTinyGridBodies);
+  bodies.replace(bodies.find("E = 1000.0"), 10, "E = 1.0e5");
+  return R"(title = "whole"
+[axes]
+ER = [1.0, 100.0]
+RLS = [0.5]
+KE = [1.0]
+[time]
+contact_time = 0.02
+end = 0.4
+output_interval = 1e-3
+end_after_separation = 0.005
+)" + bodies;
+}
+
+constexpr double kWholeImpactGuard = 0.4;
+
+double last_time(const study::RunRecord& r) { return r.artifact.time.back(); }
+
+}  // namespace
+
+TEST_CASE("ccm study run: whole impacts, a point's two runs end together after both separate",
+          "[study][cli]") {
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("whole.toml", whole_impact_grid()), db = tmp.path / "w.sqlite";
+  std::string err;
+  REQUIRE(shell(study_run(grid, db, "--jobs 2"), tmp.path / "err", err) == 0);
+  const auto points = study::expand_grid(study::parse_grid_file(grid));
+  std::vector<study::RunRecord> rigid_runs;
+  {
+    db::StudyStore store(db);
+    REQUIRE(store.open_existing_study());
+    for (const auto& p : points) {
+      const auto c = store.load_run(p, study::ImpactModel::ccm);
+      const auto r = store.load_run(p, study::ImpactModel::rigid);
+      REQUIRE(c.has_value());
+      REQUIRE(r.has_value());
+      REQUIRE(c->completed());
+      REQUIRE(r->completed());
+      INFO("point " << p.index << ": ccm ends at " << last_time(*c) << " s, rigid at "
+                    << last_time(*r) << " s");
+      CHECK(last_time(*c) == last_time(*r));  // common sample times: one final state
+      CHECK(c->artifact.time == r->artifact.time);
+      // Ended by separation, after the first touch (t_c = 20 ms) plus the hold, before the guard.
+      CHECK(last_time(*c) > 0.02 + 0.005);
+      CHECK(last_time(*c) < kWholeImpactGuard);
+      rigid_runs.push_back(*r);
+    }
+    // The two points differ in ER alone: their rigid scenes are the same, their ends need not be
+    // (each ends with its CCM partner), so each point has its own rigid run.
+    CHECK(rigid_runs[0].reuses_point == std::nullopt);
+    CHECK(rigid_runs[1].reuses_point == std::nullopt);
+
+    // A rigid run that ends apart from its partner (as after a kill between the CCM run's record
+    // and the rigid run's rerun) is redone on resume to the partner's end: bit for bit the run
+    // the study made.
+    study::RunRecord cut = rigid_runs[0];
+    const std::size_t keep = cut.artifact.time.size() / 2;
+    for (auto* series : {&cut.artifact.time, &cut.artifact.kinetic_energy, &cut.artifact.u_mean,
+                         &cut.artifact.u_max})
+      series->resize(keep);
+    store.record_run(cut, db::current_provenance("test"));
+  }
+  REQUIRE(shell(study_run(grid, db), tmp.path / "err", err) == 0);
+  db::StudyStore store(db);
+  REQUIRE(store.open_existing_study());
+  const auto redone = store.load_run(points[0], study::ImpactModel::rigid);
+  REQUIRE(redone.has_value());
+  CHECK(redone->artifact.time == rigid_runs[0].artifact.time);
+  CHECK(redone->artifact.kinetic_energy == rigid_runs[0].artifact.kinetic_energy);
+  CHECK(redone->artifact.u_mean == rigid_runs[0].artifact.u_mean);
+  CHECK(redone->artifact.u_max == rigid_runs[0].artifact.u_max);
+}

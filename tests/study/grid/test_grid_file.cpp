@@ -81,6 +81,13 @@ TEST_CASE("grid file errors name the file, the line and the key", "[grid]") {
     CHECK_THAT(grid_error_of(small_grid_with("output_interval = 1e-3",
                                              "output_interval = 1e-3\ndt_safety = 0.0")),
                Contains("g.toml:10: time.dt_safety: must lie in (0, 1] (got 0)"));
+    CHECK_THAT(grid_error_of(small_grid_with("output_interval = 1e-3",
+                                             "output_interval = 1e-3\nend_after_separation = 0.2")),
+               Contains("g.toml:10: time.end_after_separation: must lie in [0, end = 0.15) (got "
+                        "0.2)"));
+    CHECK_THAT(grid_error_of(small_grid_with("output_interval = 1e-3",
+                                             "output_interval = 1e-3\nend_after_separation = -1")),
+               Contains("g.toml:10: time.end_after_separation: must lie in [0, end = 0.15)"));
     CHECK_THAT(grid_error_of(small_grid_plus("\n[contact]\nrestitution = 2.0\n")),
                Contains("g.toml:25: contact.restitution: must lie in [0, 1] (got 2)"));
     CHECK_THAT(
