@@ -18,6 +18,8 @@ HistoryRecorder::HistoryRecorder(const ModelMesh& mesh, OutputRequest request)
       columns_.push_back(b.name + ".u_mean");
       columns_.push_back(b.name + ".u_max");
     }
+    if (!b.rigid && request_.kinetic_energy)  // a rigid body's are among its own columns
+      for (const char* q : {"vx", "vy", "vz"}) columns_.push_back(b.name + "." + q);
     if (!b.rigid) continue;
     for (const char* q : kRigidColumns) columns_.push_back(b.name + "." + q);
     last_contact_impulse_.push_back(Vec3::Zero());
@@ -39,6 +41,18 @@ double kinetic_energy(const State& s, int first, int count) {
     ke += s.m_lumped[i] * s.v[i].squaredNorm();
   }
   return 0.5 * ke;
+}
+
+// sum m_a v_a / sum m_a: the body's momentum over its mass.
+Vec3 centre_of_mass_velocity(const State& s, int first, int count) {
+  Vec3 p = Vec3::Zero();
+  double m = 0.0;
+  for (int n = first; n < first + count; ++n) {
+    const auto i = static_cast<size_t>(n);
+    p += s.m_lumped[i] * s.v[i];
+    m += s.m_lumped[i];
+  }
+  return m > 0.0 ? Vec3(p / m) : Vec3::Zero();
 }
 
 void HistoryRecorder::sample_rigid(const State& s, const RigidState& r, std::vector<double>& row) {
@@ -75,6 +89,10 @@ void HistoryRecorder::sample_body(const State& s, const Body& b, double internal
     }
     row.push_back(sum / b.n_nodes);
     row.push_back(max);
+  }
+  if (!b.rigid && request_.kinetic_energy) {
+    const Vec3 v = centre_of_mass_velocity(s, b.first_node, b.n_nodes);
+    row.insert(row.end(), {v.x(), v.y(), v.z()});
   }
 }
 

@@ -43,7 +43,9 @@ inline constexpr const char* kRigidColumns[] = {"x",
                                                 "contact_force_z"};
 
 struct OutputRequest {
-  bool kinetic_energy = false;       // per body: 1/2 sum m |v|^2 [J]
+  // per body: 1/2 sum m |v|^2 [J]; and a deformable body's centre-of-mass velocity
+  // sum m v / sum m (<body>.vx, vy, vz [m/s]; a rigid body's are among its own columns)
+  bool kinetic_energy = false;
   bool internal_energy = false;      // per body: sum V0 W [J]
   bool displacement = false;         // per body: mean and max |u| over its nodes [m]
   std::vector<TrackedNode> tracked;  // u and v of single nodes [m, m/s]
@@ -89,6 +91,8 @@ class HistoryRecorder {
 
 // Kinetic energy 1/2 sum m |v|^2 of nodes [first, first + count).
 double kinetic_energy(const State& s, int first, int count);
+// sum m v / sum m over the nodes [first, first + count) [m/s].
+Vec3 centre_of_mass_velocity(const State& s, int first, int count);
 
 // Writes the history as CSV (header line of column names, then one line per sample, full
 // precision). Written to a temporary file and renamed, so a reader never sees half a file.

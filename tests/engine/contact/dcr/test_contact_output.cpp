@@ -141,6 +141,10 @@ struct OutputMomentum {
   int samples_with_force = 0;
   long steps = 0;
   Verdict verdict = Verdict::completed;
+  // From the history's b.vx (centre-of-mass velocity) times b's mass, and a's and b's together.
+  double column_gained = 0.0;          // m_b (vx_b(t_end) - vx_b(0)) [N s]
+  double column_total_change = 0.0;    // |change of m_a v_a + m_b v_b| over the run [N s]
+  double column_total_momentum = 0.0;  // |m_a v_a + m_b v_b| at the start [N s]
 };
 
 // Two elastic blocks end-on in free space (no gravity, nothing fixed): a, at v0 along x and a
@@ -169,7 +173,7 @@ OutputMomentum block_impact(double friction, double output_interval, double end_
   settings.output.force_axis = Vec3::UnitX();
   settings.output.sensors = {"b/front"};
   dcr::DcrContact contact(model.mesh, settings, model.bcs.fixed_nodes);
-  HistoryRecorder history(model.mesh, {false, false, false, {}});
+  HistoryRecorder history(model.mesh, {true, false, false, {}});
   history.add_source(contact);
   const std::vector<std::string>& cols = history.columns();
   const auto col = [&](const std::string& name) {
@@ -186,7 +190,9 @@ OutputMomentum block_impact(double friction, double output_interval, double end_
   opt.history = &history;
   opt.time.end_time = end_time;
   opt.time.output_interval = output_interval;
+  std::vector<double> summary_masses;
   opt.on_sample = [&](const State& s) {
+    if (first) summary_masses = s.m_lumped;
     if (first) p0 = body_momentum(s, b);
     first = false;
     p_end = body_momentum(s, b);
@@ -207,6 +213,21 @@ OutputMomentum block_impact(double friction, double output_interval, double end_
     if (rows[k][axis] != 0.0) ++out.samples_with_force;
   }
   out.gained = (p_end - p0).x();
+  const auto mass = [&](const Body& body) {
+    double m = 0.0;
+    for (int n = body.first_node; n < body.first_node + body.n_nodes; ++n)
+      m += summary_masses[static_cast<size_t>(n)];
+    return m;
+  };
+  const double m_a = mass(a), m_b = mass(b);
+  const auto velocity = [&](const std::vector<double>& row, const std::string& body) {
+    return Vec3(row[col(body + ".vx")], row[col(body + ".vy")], row[col(body + ".vz")]);
+  };
+  const Vec3 total0 = m_a * velocity(rows.front(), "a") + m_b * velocity(rows.front(), "b");
+  const Vec3 total1 = m_a * velocity(rows.back(), "a") + m_b * velocity(rows.back(), "b");
+  out.column_gained = m_b * (velocity(rows.back(), "b") - velocity(rows.front(), "b")).x();
+  out.column_total_change = (total1 - total0).norm();
+  out.column_total_momentum = total0.norm();
   return out;
 }
 
@@ -237,6 +258,10 @@ TEST_CASE("DCR output: the integral of the contact force is the momentum exchang
         REQUIRE(r.samples_with_force >= 3);
         REQUIRE(r.steps > 3 * static_cast<long>(end / interval));  // intervals of several steps
         CHECK(test::relative_error(r.force_integral, r.gained) < 1e-6);
+        // The centre-of-mass velocity columns: b's change times its mass is the momentum it
+        // gained, and a's and b's momenta sum to a constant (free space), to round-off.
+        CHECK(test::relative_error(r.column_gained, r.gained) < 1e-12);
+        CHECK(r.column_total_change < 1e-12 * r.column_total_momentum);
         if (end < 1.88e-3) CHECK(test::relative_error(r.pressure_integral, r.gained) < 1e-6);
       }
     }
