@@ -19,6 +19,15 @@ struct ArtifactHistory {
   std::vector<double> kinetic_energy;  // artifact kinetic energy [J]
 };
 
+// The impactor's centre-of-mass velocity at the same sample times, and its mass: what the
+// designer's metrics read (force from the momentum it exchanges, contact duration, rebound;
+// study/metrics/impact_metrics.hpp). Empty for a run stored before ccm kept it.
+struct ImpactorHistory {
+  double mass = 0.0;               // [kg]
+  std::vector<double> vx, vy, vz;  // [m/s]
+  bool empty() const { return vx.empty(); }
+};
+
 // What the step loop of a run cost and what set its steps (RunSummary, explicit_integrator.hpp).
 // The measured cost TR of the trade study is step_cpu_seconds (docs/store.md).
 struct MeasuredCost {
@@ -52,6 +61,7 @@ struct RunRecord {
   std::string scene_hash;            // content hash of the scene text that was run
   std::string started_at, ended_at;  // ISO 8601 UTC
   ArtifactHistory artifact;
+  ImpactorHistory impactor;
 
   bool completed() const { return verdict == "completed"; }
 };

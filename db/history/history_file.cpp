@@ -63,7 +63,18 @@ std::vector<double> read_dataset(hid_t group, const std::filesystem::path& file,
   return values;
 }
 
-void write_file(const std::filesystem::path& tmp, const study::ArtifactHistory& history) {
+void write_impactor(hid_t h5, const std::filesystem::path& tmp,
+                    const study::ImpactorHistory& impactor) {
+  H5Handle group(H5Gcreate2(h5, kImpactorGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!group.valid()) fail(tmp, std::string("cannot create group ") + kImpactorGroup);
+  write_dataset(group.get(), tmp, "mass", {impactor.mass});
+  write_dataset(group.get(), tmp, "vx", impactor.vx);
+  write_dataset(group.get(), tmp, "vy", impactor.vy);
+  write_dataset(group.get(), tmp, "vz", impactor.vz);
+}
+
+void write_file(const std::filesystem::path& tmp, const study::ArtifactHistory& history,
+                const study::ImpactorHistory& impactor) {
   H5Handle h5(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (!h5.valid()) fail(tmp, "cannot create HDF5 file");
   H5Handle group(H5Gcreate2(h5.get(), kArtifactGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
@@ -73,17 +84,19 @@ void write_file(const std::filesystem::path& tmp, const study::ArtifactHistory& 
   write_dataset(group.get(), tmp, "u_mean", history.u_mean);
   write_dataset(group.get(), tmp, "u_max", history.u_max);
   write_dataset(group.get(), tmp, "kinetic_energy", history.kinetic_energy);
+  if (!impactor.empty()) write_impactor(h5.get(), tmp, impactor);
   if (H5Fflush(h5.get(), H5F_SCOPE_GLOBAL) < 0) fail(tmp, "cannot flush HDF5 file");
 }
 
 }  // namespace
 
-void write_history_file(const std::filesystem::path& file, const study::ArtifactHistory& history) {
+void write_history_file(const std::filesystem::path& file, const study::ArtifactHistory& history,
+                        const study::ImpactorHistory& impactor) {
   // The pid keeps two processes writing the same run from sharing a temporary file.
   const std::filesystem::path tmp = file.string() + ".tmp" + std::to_string(::getpid());
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by our messages
   try {
-    write_file(tmp, history);
+    write_file(tmp, history, impactor);
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
@@ -106,6 +119,22 @@ study::ArtifactHistory read_history_file(const std::filesystem::path& file, cons
   history.u_max = read_dataset(h5.get(), file, prefix + "u_max");
   history.kinetic_energy = read_dataset(h5.get(), file, prefix + "kinetic_energy");
   return history;
+}
+
+study::ImpactorHistory read_impactor_history(const std::filesystem::path& file) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  H5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!h5.valid()) fail(file, "cannot open HDF5 file");
+  study::ImpactorHistory impactor;
+  if (H5Lexists(h5.get(), kImpactorGroup, H5P_DEFAULT) <= 0) return impactor;
+  const std::string prefix = std::string(kImpactorGroup) + "/";
+  const std::vector<double> mass = read_dataset(h5.get(), file, prefix + "mass");
+  if (mass.size() != 1) fail(file, "dataset " + prefix + "mass does not hold one value");
+  impactor.mass = mass[0];
+  impactor.vx = read_dataset(h5.get(), file, prefix + "vx");
+  impactor.vy = read_dataset(h5.get(), file, prefix + "vy");
+  impactor.vz = read_dataset(h5.get(), file, prefix + "vz");
+  return impactor;
 }
 
 }  // namespace ccm::db

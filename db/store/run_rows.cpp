@@ -176,7 +176,8 @@ void StudyStore::record_run(const study::RunRecord& run, const RunProvenance& pr
   const std::string name =
       fmt::format("{}-{}.h5", grid_point_hash(run.point), study::to_string(run.model));
   std::filesystem::create_directories(history_dir());
-  write_history_file(history_dir() / name, run.artifact);  // complete before it is referenced
+  write_history_file(history_dir() / name, run.artifact,
+                     run.impactor);  // complete before it is referenced
   Transaction transaction(*connection_);
   upsert_run(point_id(run.point), run, provenance, status,
              (std::filesystem::path(history_dir().filename()) / name).string());
@@ -233,6 +234,7 @@ std::optional<study::RunRecord> StudyStore::load_run(const study::GridPoint& poi
   if (!q.is_null(32)) run.reuses_point = static_cast<int>(q.column_int(32));
   const std::string dataset = q.column_text(22);
   run.artifact = read_history_file(history_path(q.column_text(21)), dataset.c_str());
+  run.impactor = read_impactor_history(history_path(q.column_text(21)));
   return run;
 }
 

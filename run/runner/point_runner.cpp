@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/body/mass_properties.hpp"
 #include "engine/observe/history.hpp"
 #include "records/content_hash.hpp"
 #include "records/provenance/timestamp.hpp"
@@ -38,6 +39,37 @@ ArtifactHistory artifact_history(const HistoryRecorder& history, const std::stri
     h.kinetic_energy.push_back(row[ke]);
     h.u_mean.push_back(row[u_mean]);
     h.u_max.push_back(row[u_max]);
+  }
+  return h;
+}
+
+// The impactor's centre-of-mass velocity columns (a deformable or meshed rigid body's
+// <name>.vx, an analytic sphere's <name>.sphere_vx) and its mass; empty when the scene has no
+// such columns.
+ImpactorHistory impactor_history(const HistoryRecorder& history, const SceneRun& run,
+                                 const std::string& name) {
+  const std::vector<std::string>& cols = history.columns();
+  const auto has = [&](const std::string& c) {
+    return std::find(cols.begin(), cols.end(), c) != cols.end();
+  };
+  const std::string prefix = has(name + ".vx") ? name + "." : name + ".sphere_";
+  if (!has(prefix + "vx")) return {};
+  ImpactorHistory h;
+  for (const Body& b : run.model.mesh.bodies)
+    if (b.name == name) {
+      const std::vector<Tet> tets(run.model.mesh.tets.begin() + b.first_element,
+                                  run.model.mesh.tets.begin() + b.first_element + b.n_elements);
+      h.mass = tet_mass_properties(tets, run.model.mesh.X, b.material.rho).mass;
+    }
+  for (const ContactSpec& c : run.scene.contacts)
+    if (c.kind == ContactKind::rigid_penalty && !c.rigid && c.sphere.name == name)
+      h.mass = c.sphere.mass;
+  const size_t x = column_index(history, prefix + "vx"), y = column_index(history, prefix + "vy"),
+               z = column_index(history, prefix + "vz");
+  for (const std::vector<double>& row : history.rows()) {
+    h.vx.push_back(row[x]);
+    h.vy.push_back(row[y]);
+    h.vz.push_back(row[z]);
   }
   return h;
 }
@@ -98,6 +130,7 @@ RunRecord run_point(const GridSpec& spec, const GridPoint& point, ImpactModel mo
     run.progress = [&](const Progress& p) { options.progress(point, model, p); };
   record_summary(run_explicit(scene.model, run), r);
   r.artifact = artifact_history(history, study_artifact(spec, scene.scene));
+  r.impactor = impactor_history(history, scene, study_impactor(spec));
   r.ended_at = utc_timestamp(SystemClock::now());
   return r;
 }

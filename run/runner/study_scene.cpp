@@ -48,4 +48,8 @@ std::string study_artifact(const GridSpec& spec, const Scene& scene) {
   return spec.scene_template ? template_artifact(spec, scene) : kArtifactBody;
 }
 
+std::string study_impactor(const GridSpec& spec) {
+  return spec.scene_template ? spec.scene_template->rigid.front() : kImpactorName;
+}
+
 }  // namespace ccm::study

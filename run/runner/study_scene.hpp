@@ -36,4 +36,7 @@ Scene study_scene(const GridSpec& spec, const GridPoint& point, ImpactModel mode
 // The body whose kinetic energy, u_mean and u_max are the point's histories.
 std::string study_artifact(const GridSpec& spec, const Scene& scene);
 
+// The impactor: the thesis grid's sphere, or the template's body made rigid in the rigid model.
+std::string study_impactor(const GridSpec& spec);
+
 }  // namespace ccm::study

@@ -51,6 +51,10 @@ void check_same_run(const study::RunRecord& a, const study::RunRecord& b) {
   CHECK(a.artifact.u_mean == b.artifact.u_mean);
   CHECK(a.artifact.u_max == b.artifact.u_max);
   CHECK(a.artifact.kinetic_energy == b.artifact.kinetic_energy);
+  CHECK(a.impactor.mass == b.impactor.mass);
+  CHECK(a.impactor.vx == b.impactor.vx);
+  CHECK(a.impactor.vy == b.impactor.vy);
+  CHECK(a.impactor.vz == b.impactor.vz);
 }
 
 }  // namespace

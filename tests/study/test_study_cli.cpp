@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <fstream>
 #include <thread>
@@ -339,6 +340,14 @@ TEST_CASE("ccm study run: whole impacts, a point's two runs end together after b
       // Ended by separation, after the first touch (t_c = 20 ms) plus the hold, before the guard.
       CHECK(last_time(*c) > 0.02 + 0.005);
       CHECK(last_time(*c) < kWholeImpactGuard);
+      // The impactor's centre-of-mass velocity at the same samples, and its mass: the point
+      // scene gives the meshed sphere the analytic sphere's mass (rho pi D^3 / 6).
+      for (const auto* run : {&*c, &*r}) {
+        CHECK(run->impactor.vz.size() == run->artifact.time.size());
+        CHECK(run->impactor.vz.front() < 0.0);  // it approaches along -z
+      }
+      CHECK(c->impactor.mass == Approx(1000.0 * M_PI / 6.0 * 0.125).epsilon(1e-9));
+      CHECK(r->impactor.mass == Approx(c->impactor.mass).epsilon(1e-9));
       rigid_runs.push_back(*r);
     }
     // The two points differ in ER alone: their rigid scenes are the same, their ends need not be

@@ -22,6 +22,7 @@ inline study::RunRecord synthetic_run(study::ImpactModel model, int point_index 
     run.artifact.u_mean = {0.0, 1.0, 2.0, 2.0};
     run.artifact.u_max = {0.0, 2.0, 4.0, 3.0};
     run.artifact.kinetic_energy = {0.0, 4.0, 2.0, 1.0};
+    run.impactor.vz = {-2.0, -1.0, 0.5, 0.5};  // 10 kg: 200 N, then 300 N, then free
     run.average_iteration_seconds = 4e-3;
     run.initial_stable_dt = 1e-6;
     run.steps = 150000;
@@ -29,11 +30,15 @@ inline study::RunRecord synthetic_run(study::ImpactModel model, int point_index 
     run.artifact.u_mean = {0.0, 1.0, 3.0, 4.0};
     run.artifact.u_max = {0.0, 2.0, 5.0, 6.0};
     run.artifact.kinetic_energy = {0.0, 4.0, 4.0, 4.0};
+    run.impactor.vz = {-2.0, 0.0, 1.0, 1.0};  // 400 N, then 200 N, then free
     run.average_iteration_seconds = 1e-3;
     run.initial_stable_dt = 2e-6;
     // Contact-limited: 4 x the t_f / ISTS = 75000 steps the thesis's estimate assumes.
     run.steps = 300000;
   }
+  run.impactor.mass = 10.0;
+  run.impactor.vx.assign(4, 0.0);
+  run.impactor.vy.assign(4, 0.0);
   run.wall_seconds = run.average_iteration_seconds * static_cast<double>(run.steps);
   run.dt_max = run.initial_stable_dt;
   study::MeasuredCost cost;
