@@ -2,6 +2,8 @@
 // cumulative and final-state errors, normalised runtimes, runtime ratio and weighting functions.
 #pragma once
 
+#include <algorithm>
+#include <optional>
 #include <string>
 
 #include "records/grid_point.hpp"
@@ -14,6 +16,23 @@ struct ArtifactErrors {
   double u_mean = 0.0;          // mean nodal displacement magnitude
   double u_max = 0.0;           // max nodal displacement magnitude
   double kinetic_energy = 0.0;  // artifact kinetic energy
+};
+
+// The designer's quantities of one run (study/metrics/impact_metrics.hpp, IM.1-IM.4).
+struct ImpactQuantities {
+  double peak_force = 0.0;        // [N]
+  double indentation = 0.0;       // [m]
+  double contact_duration = 0.0;  // [s]
+  double rebound_speed = 0.0;     // [m/s]
+  double approach_speed = 0.0;    // [m/s]
+};
+
+// The rigid run's error against the CCM run in each (IM.5), in [0, 1].
+struct ImpactErrors {
+  double peak_force = 0.0, indentation = 0.0, contact_duration = 0.0, rebound_speed = 0.0;
+  double worst() const {
+    return std::max({peak_force, indentation, contact_duration, rebound_speed});
+  }
 };
 
 // Timing of one model's run.
@@ -48,6 +67,10 @@ struct PointMetrics {
   // the measured ratio, never used for a decision.
   double runtime_ratio_thesis_estimate = 0.0;
   ArtifactErrors weighting;  // w = final-state error / RTR, measured RTR (thesis 2.8, App. B)
+  // The designer's metrics: each run's quantities and the rigid run's errors; none when either
+  // run kept no impactor history (stored before ccm did) or the point is not usable.
+  std::optional<ImpactQuantities> ccm_impact, rigid_impact;
+  std::optional<ImpactErrors> impact_errors;
 };
 
 // Derives the metrics of one point from its CCM and rigid runs. The runs must belong to the

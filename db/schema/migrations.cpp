@@ -349,7 +349,28 @@ CREATE TABLE comparisons (
 );
 )sql";
 
-constexpr std::array<const char*, 6> kSteps = {kStep1, kStep2, kStep3, kStep4, kStep5, kStep6};
+// Step 7: the designer's metrics of a point (study/metrics/impact_metrics.hpp, IM.1-IM.5): each
+// run's peak contact force, deepest indentation of the artifact, contact duration and rebound
+// speed, and the rigid run's error in each. NULL where the runs kept no impactor history (stored
+// before this step): `ccm study run` recomputes the metrics, not the runs.
+constexpr const char* kStep7 = R"sql(
+ALTER TABLE metrics ADD COLUMN peak_force_ccm REAL;
+ALTER TABLE metrics ADD COLUMN peak_force_rigid REAL;
+ALTER TABLE metrics ADD COLUMN indentation_ccm REAL;
+ALTER TABLE metrics ADD COLUMN indentation_rigid REAL;
+ALTER TABLE metrics ADD COLUMN contact_duration_ccm REAL;
+ALTER TABLE metrics ADD COLUMN contact_duration_rigid REAL;
+ALTER TABLE metrics ADD COLUMN rebound_speed_ccm REAL;
+ALTER TABLE metrics ADD COLUMN rebound_speed_rigid REAL;
+ALTER TABLE metrics ADD COLUMN approach_speed REAL;
+ALTER TABLE metrics ADD COLUMN error_peak_force REAL;
+ALTER TABLE metrics ADD COLUMN error_indentation REAL;
+ALTER TABLE metrics ADD COLUMN error_contact_duration REAL;
+ALTER TABLE metrics ADD COLUMN error_rebound_speed REAL;
+)sql";
+
+constexpr std::array<const char*, 7> kSteps = {kStep1, kStep2, kStep3, kStep4,
+                                               kStep5, kStep6, kStep7};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

@@ -42,7 +42,35 @@ void StudyStore::save_metrics(const study::PointMetrics& m) {
   s.bind(21, if_usable(m, m.rigid.total_runtime_thesis_estimate));
   s.bind(22, if_usable(m, m.runtime_ratio_thesis_estimate));
   s.run();
+  save_impact_metrics(m);
   transaction.commit();
+}
+
+// The designer's metrics of a point, NULL where it has none.
+void StudyStore::save_impact_metrics(const study::PointMetrics& m) {
+  Statement s(*connection_, R"sql(
+    UPDATE metrics SET peak_force_ccm = ?2, peak_force_rigid = ?3, indentation_ccm = ?4,
+      indentation_rigid = ?5, contact_duration_ccm = ?6, contact_duration_rigid = ?7,
+      rebound_speed_ccm = ?8, rebound_speed_rigid = ?9, approach_speed = ?10,
+      error_peak_force = ?11, error_indentation = ?12, error_contact_duration = ?13,
+      error_rebound_speed = ?14
+    WHERE grid_point_id = ?1)sql");
+  s.bind(1, point_id(m.point));
+  const bool has = m.ccm_impact && m.rigid_impact && m.impact_errors;
+  const auto put = [&](int column, double value) {
+    if (has)
+      s.bind(column, value);
+    else
+      s.bind_null(column);
+  };
+  const study::ImpactQuantities c = m.ccm_impact.value_or(study::ImpactQuantities{});
+  const study::ImpactQuantities r = m.rigid_impact.value_or(study::ImpactQuantities{});
+  const study::ImpactErrors e = m.impact_errors.value_or(study::ImpactErrors{});
+  put(2, c.peak_force), put(3, r.peak_force), put(4, c.indentation), put(5, r.indentation);
+  put(6, c.contact_duration), put(7, r.contact_duration), put(8, c.rebound_speed);
+  put(9, r.rebound_speed), put(10, c.approach_speed), put(11, e.peak_force);
+  put(12, e.indentation), put(13, e.contact_duration), put(14, e.rebound_speed);
+  s.run();
 }
 
 namespace {
@@ -69,7 +97,11 @@ std::vector<study::PointMetrics> StudyStore::load_metrics() const {
            m.w_u_mean, m.w_u_max, m.w_kinetic_energy, m.t_final,
            c.status, c.steps, c.wall_seconds, c.average_iteration_seconds, c.initial_stable_dt,
            r.status, r.steps, r.wall_seconds, r.average_iteration_seconds, r.initial_stable_dt,
-           m.tr_ccm_thesis_estimate, m.tr_rigid_thesis_estimate, m.rtr_thesis_estimate
+           m.tr_ccm_thesis_estimate, m.tr_rigid_thesis_estimate, m.rtr_thesis_estimate,
+           m.peak_force_ccm, m.peak_force_rigid, m.indentation_ccm, m.indentation_rigid,
+           m.contact_duration_ccm, m.contact_duration_rigid, m.rebound_speed_ccm,
+           m.rebound_speed_rigid, m.approach_speed, m.error_peak_force, m.error_indentation,
+           m.error_contact_duration, m.error_rebound_speed
     FROM metrics m JOIN grid_points gp ON gp.id = m.grid_point_id
     LEFT JOIN runs c ON c.grid_point_id = gp.id AND c.model = 'ccm'
     LEFT JOIN runs r ON r.grid_point_id = gp.id AND r.model = 'rigid'
@@ -96,6 +128,11 @@ std::vector<study::PointMetrics> StudyStore::load_metrics() const {
     m.rigid.total_runtime_thesis_estimate = v(34);
     m.runtime_ratio_thesis_estimate = v(35);
     m.t_final = v(22);
+    if (!q.is_null(48)) {  // the designer's metrics (schema 7 on)
+      m.ccm_impact = study::ImpactQuantities{v(36), v(38), v(40), v(42), v(44)};
+      m.rigid_impact = study::ImpactQuantities{v(37), v(39), v(41), v(43), v(44)};
+      m.impact_errors = study::ImpactErrors{v(45), v(46), v(47), v(48)};
+    }
     out.push_back(std::move(m));
   }
   return out;

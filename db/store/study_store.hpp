@@ -100,7 +100,7 @@ class StudyStore {
   std::vector<PointStatus> status() const;
 
   // Metrics per point (replacing earlier ones) and all fits (replacing the study's fits).
-  void save_metrics(const study::PointMetrics& metrics);
+  void save_metrics(const study::PointMetrics& metrics);  // with the designer's metrics
   std::vector<study::PointMetrics> load_metrics() const;
   void save_fits(const study::StudyFits& fits);
   study::StudyFits load_fits() const;
@@ -123,6 +123,7 @@ class StudyStore {
   Connection& connection() const { return *connection_; }
 
  private:
+  void save_impact_metrics(const study::PointMetrics& metrics);
   long long study_id() const;
   long long point_id(const study::GridPoint& point);
   long long point_id_by_index(int point_index) const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "study/metrics/impact_metrics.hpp"
 #include "study/metrics/model_errors.hpp"
 #include "study/metrics/runtime_ratio.hpp"
 
@@ -88,6 +89,10 @@ PointMetrics compute_point_metrics(const RunRecord& ccm, const RunRecord& rigid)
   m.weighting = {m.final_state.u_mean / m.runtime_ratio, m.final_state.u_max / m.runtime_ratio,
                  m.final_state.kinetic_energy / m.runtime_ratio};
   m.usable = true;
+  m.ccm_impact = impact_quantities(ccm);
+  m.rigid_impact = impact_quantities(rigid);
+  if (m.ccm_impact && m.rigid_impact)
+    m.impact_errors = impact_errors(*m.ccm_impact, *m.rigid_impact);
   return m;
 }
 

@@ -80,8 +80,14 @@ TEST_CASE(
   SECTION("a store of an older schema is read (migrated in memory) and not changed") {
     const fs::path db = synthetic_store(dir, "old.sqlite");
     {
-      db::Connection c(db);  // back to schema 4: without step 5's tables (the study's grid)
+      db::Connection c(db);  // back to schema 4: without the tables and columns of steps 5-7
       c.exec("DROP TABLE comparisons; DROP TABLE study_grids; PRAGMA user_version = 4");
+      for (const char* column :
+           {"peak_force_ccm", "peak_force_rigid", "indentation_ccm", "indentation_rigid",
+            "contact_duration_ccm", "contact_duration_rigid", "rebound_speed_ccm",
+            "rebound_speed_rigid", "approach_speed", "error_peak_force", "error_indentation",
+            "error_contact_duration", "error_rebound_speed"})
+        c.exec(std::string("ALTER TABLE metrics DROP COLUMN ") + column);
     }
     const auto before = snapshot(db.parent_path());
     const auto r = test::run_ccm(status_of(db), dir);

@@ -202,6 +202,19 @@ TEST_CASE("metrics and fits round-trip, unusable points stay visible", "[db]") {
     CHECK(loaded[i].runtime_ratio_thesis_estimate == points[i].runtime_ratio_thesis_estimate);
     CHECK(loaded[i].rigid.total_runtime_thesis_estimate ==
           points[i].rigid.total_runtime_thesis_estimate);
+    // The designer's metrics, for the usable points (none for the unstable one).
+    REQUIRE(loaded[i].impact_errors.has_value() == points[i].impact_errors.has_value());
+    CHECK(points[i].impact_errors.has_value() == points[i].usable);
+    if (!points[i].impact_errors) continue;
+    CHECK(loaded[i].impact_errors->peak_force == points[i].impact_errors->peak_force);
+    CHECK(loaded[i].impact_errors->indentation == points[i].impact_errors->indentation);
+    CHECK(loaded[i].impact_errors->contact_duration == points[i].impact_errors->contact_duration);
+    CHECK(loaded[i].impact_errors->rebound_speed == points[i].impact_errors->rebound_speed);
+    CHECK(loaded[i].ccm_impact->peak_force == points[i].ccm_impact->peak_force);
+    CHECK(loaded[i].rigid_impact->indentation == points[i].rigid_impact->indentation);
+    CHECK(loaded[i].rigid_impact->contact_duration == points[i].rigid_impact->contact_duration);
+    CHECK(loaded[i].ccm_impact->rebound_speed == points[i].ccm_impact->rebound_speed);
+    CHECK(loaded[i].rigid_impact->approach_speed == points[i].rigid_impact->approach_speed);
   }
 
   const study::StudyFits fits = study::fit_study(points);

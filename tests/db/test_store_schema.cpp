@@ -47,7 +47,7 @@ TEST_CASE("a version-1 store (runs only) is migrated to the latest schema, data 
   }
   db::StudyStore store(file);
   CHECK(db::schema_version(store.connection()) == db::latest_schema_version());
-  CHECK(db::latest_schema_version() == 6);
+  CHECK(db::latest_schema_version() == 7);
   CHECK(store.study_name() == "old");
   const auto status = store.status();
   REQUIRE(status.size() == 1);
@@ -102,7 +102,7 @@ TEST_CASE("a version-3 store's runs and metrics migrate without an invented meas
   }
   db::StudyStore store(file);
   db::Connection& c = store.connection();
-  CHECK(db::schema_version(c) == 6);
+  CHECK(db::schema_version(c) == 7);
   // The old run keeps its figures; what was not measured stays NULL, not a made-up number.
   CHECK(test::count_rows(c,
                          "SELECT count(*) FROM runs WHERE steps = 9000 AND "
@@ -119,6 +119,7 @@ TEST_CASE("a version-3 store's runs and metrics migrate without an invented meas
   CHECK(metrics[0].ccm.total_runtime_thesis_estimate == 6.0);
   CHECK(metrics[0].rigid.total_runtime_thesis_estimate == 0.05);
   CHECK(metrics[0].final_state.u_mean == 0.2);  // the errors are kept
+  CHECK_FALSE(metrics[0].impact_errors);        // no designer's metrics before schema 7
   CHECK(test::count_rows(c,
                          "SELECT count(*) FROM metrics WHERE rtr IS NOT NULL OR "
                          "tr_ccm IS NOT NULL OR w_u_mean IS NOT NULL") == 0);
@@ -170,6 +171,6 @@ TEST_CASE("foreign files are refused with a message naming the file, and left un
     }
     CHECK(open_error(file) == file.string() +
                                   ": schema version 99 was written by a newer ccm (this build "
-                                  "knows up to 6); upgrade ccm to open it");
+                                  "knows up to 7); upgrade ccm to open it");
   }
 }

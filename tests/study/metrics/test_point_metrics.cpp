@@ -1,6 +1,7 @@
 // All metrics of one grid point from two synthetic runs, against values worked out by hand.
 #include <catch2/catch.hpp>
 
+#include "study/metrics/impact_metrics.hpp"
 #include "study/metrics/point_metrics.hpp"
 #include "tests/study/metrics/synthetic_runs.hpp"
 #include "tests/support/tolerance.hpp"
@@ -45,6 +46,53 @@ TEST_CASE("point metrics of two synthetic runs match the hand computation", "[me
   // Measured timings are carried along.
   CHECK(m.ccm.steps == 150000);
   CHECK(m.rigid.wall_seconds == Approx(300.0).epsilon(1e-14));
+}
+
+TEST_CASE("the designer's metrics of two synthetic runs match the hand computation", "[metrics]") {
+  const PointMetrics m =
+      compute_point_metrics(synthetic_run(ImpactModel::ccm), synthetic_run(ImpactModel::rigid));
+  REQUIRE(m.ccm_impact);
+  REQUIRE(m.rigid_impact);
+  REQUIRE(m.impact_errors);
+  // 10 kg, samples 0.05 s apart. CCM: v_z -2, -1, 0.5, 0.5 -> 200 N, 300 N, 0 (IM.1); force in
+  // the first two intervals -> 0.1 s (IM.3); u_max peaks at 4 (IM.2); leaves at 0.5 m/s (IM.4).
+  CHECK(relative_error(m.ccm_impact->peak_force, 300.0) < kRounding);
+  CHECK(relative_error(m.ccm_impact->contact_duration, 0.1) < kRounding);
+  CHECK(m.ccm_impact->indentation == 4.0);
+  CHECK(relative_error(m.ccm_impact->rebound_speed, 0.5) < kRounding);
+  CHECK(m.ccm_impact->approach_speed == 2.0);
+  // Rigid: v_z -2, 0, 1, 1 -> 400 N, 200 N, 0; 0.1 s; u_max peaks at 6; leaves at 1 m/s.
+  CHECK(relative_error(m.rigid_impact->peak_force, 400.0) < kRounding);
+  CHECK(relative_error(m.rigid_impact->contact_duration, 0.1) < kRounding);
+  CHECK(m.rigid_impact->indentation == 6.0);
+  CHECK(relative_error(m.rigid_impact->rebound_speed, 1.0) < kRounding);
+  // IM.5: 100 / 400, 2 / 6, 0, 0.5 / 2.
+  CHECK(relative_error(m.impact_errors->peak_force, 0.25) < kRounding);
+  CHECK(relative_error(m.impact_errors->indentation, 1.0 / 3.0) < kRounding);
+  CHECK(m.impact_errors->contact_duration == 0.0);
+  CHECK(relative_error(m.impact_errors->rebound_speed, 0.25) < kRounding);
+  CHECK(relative_error(m.impact_errors->worst(), 1.0 / 3.0) < kRounding);
+}
+
+TEST_CASE("the designer's metrics: an oblique blow, a noise floor, a run without the history",
+          "[metrics]") {
+  RunRecord run = synthetic_run(ImpactModel::ccm);
+  // Along x as well: 10 kg x |(0.3, 0, 0.4)| / 0.05 s = 100 N in the first interval; then a
+  // change below 1e-3 of the peak in the last (noise, not contact).
+  run.impactor.vx = {0.3, 0.0, 0.0, 0.0};
+  run.impactor.vz = {-0.4, 0.0, 0.0, 1e-7};
+  const auto q = ccm::study::impact_quantities(run);
+  REQUIRE(q);
+  CHECK(relative_error(q->peak_force, 100.0) < kRounding);
+  CHECK(relative_error(q->approach_speed, 0.5) < kRounding);
+  CHECK(relative_error(q->contact_duration, 0.05) < kRounding);
+  // Leaving at 1e-7 m/s along +z: -v . e = 1e-7 x 0.8.
+  CHECK(relative_error(q->rebound_speed, 0.8e-7) < 1e-9);
+  run.impactor = {};
+  CHECK_FALSE(ccm::study::impact_quantities(run));
+  const PointMetrics m = compute_point_metrics(run, synthetic_run(ImpactModel::rigid));
+  CHECK(m.usable);  // the thesis's metrics do not need it
+  CHECK_FALSE(m.impact_errors);
 }
 
 TEST_CASE("a point with an unstable run is kept but marked unusable, with the reason",
