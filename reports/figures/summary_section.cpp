@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 
+#include "reports/figures/impact_table.hpp"
 #include "reports/figures/recommendation_map.hpp"
 #include "study/recommend/modelling_choices.hpp"
 #include "study/recommend/recommendation.hpp"
@@ -21,7 +22,7 @@ std::string flag_text(const study::PointDecision& d) {
   return d.fitted->reliability.reliable ? "ok" : "UNRELIABLE";
 }
 
-std::string joined(const std::vector<std::string>& items) {
+std::string reasons_text(const std::vector<std::string>& items) {
   std::string out;
   for (const auto& s : items) out += (out.empty() ? "" : "; ") + s;
   return out;
@@ -142,7 +143,7 @@ Table points_table(const ReportData& data, double max_error) {
     row.push_back(std::string(study::to_string(d.measured.model)));
     row.push_back(d.fitted ? std::string(study::to_string(d.fitted->model)) : "-");
     row.push_back(flag_text(d));
-    row.push_back(d.fitted ? joined(d.fitted->reliability.reasons) : "");
+    row.push_back(d.fitted ? reasons_text(d.fitted->reliability.reasons) : "");
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -172,11 +173,13 @@ Section summary_section(const ReportData& data, double max_error) {
       "grid point's measured values and to the fitted surfaces (docs/recommendation.md).");
   for (std::string& sentence : summary_sentences(data, max_error))
     s.paragraphs.push_back(std::move(sentence));
+  if (auto sentence = impact_sentence(data, max_error)) s.paragraphs.push_back(*sentence);
   add_choices(data, s);
   RecommendationMaps maps = recommendation_maps(data, max_error);
   for (auto& note : maps.notes) s.paragraphs.push_back(std::move(note));
   s.figures = std::move(maps.figures);
   s.tables.push_back(points_table(data, max_error));
+  if (auto impact = impact_table(data)) s.tables.push_back(std::move(*impact));
   return s;
 }
 

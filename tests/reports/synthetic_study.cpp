@@ -44,6 +44,19 @@ study::ArtifactHistory history(const study::GridPoint& p, double factor, double 
   return h;
 }
 
+// A 2 kg impactor at 1 m/s along -z until contact, then steadily to `rebound` along +z at t_f:
+// a constant force m (1 + rebound) / (t_f - t_c) while in contact.
+study::ImpactorHistory impactor(const std::vector<double>& time, double rebound) {
+  study::ImpactorHistory h;
+  h.mass = kSyntheticImpactorMass;
+  for (double t : time) {
+    h.vx.push_back(0.0);
+    h.vy.push_back(0.0);
+    h.vz.push_back(-1.0 + (1.0 + rebound) * ramp(t));
+  }
+  return h;
+}
+
 double initial_stable_dt(ImpactModel model, double er, double scale) {
   return model == ImpactModel::ccm ? 1e-4 * scale / std::sqrt(er) : 1e-4 * scale;
 }
@@ -90,6 +103,7 @@ study::RunRecord run(const study::GridPoint& p, ImpactModel model) {
                                         : 1.0;
   const double factor = (ccm ? 1.0 - synthetic_final_error(er) : 1.0) * convergence_factor;
   r.artifact = history(p, factor, unstable ? 0.12 : kFinalTime);
+  r.impactor = impactor(r.artifact.time, ccm ? kSyntheticReboundCcm : kSyntheticReboundRigid);
   return r;
 }
 

@@ -14,6 +14,9 @@
 //   the finest CCM run (s = 0.5) times (1 - 0.1 (s - 0.5)), the rigid run is as on the grid, so
 //   the final-state errors against the finest CCM run are 0.1 (s - 0.5) (CCM) and a (rigid).
 // The rigid run of the point (ER 1e2, RLS 1, KE 10 J) is unstable at t = 0.12 s.
+// Impactor: 2 kg at 1 m/s along -z until t_c, then steadily to a rebound of 0.5 m/s (CCM) or
+//   1 m/s (rigid) at t_f: peak forces 60 N and 80 N (IM.1), durations 0.05 s both, indentation
+//   error a (the u_max histories), rebound error 0.5 (IM.5): the worst designer's error.
 #pragma once
 
 #include <array>
@@ -27,6 +30,8 @@ inline constexpr int kSyntheticPoints = 24;  // the main grid
 inline constexpr int kUnstablePointIndex =
     5;  // ER 1e2, RLS 1, KE 10 J (index = 12 KE_i + 4 RLS_i + ER_i)
 inline constexpr const char* kUnstableReason = "energy-balance error 0.2 above 0.05";
+inline constexpr double kSyntheticImpactorMass = 2.0;                              // [kg]
+inline constexpr double kSyntheticReboundCcm = 0.5, kSyntheticReboundRigid = 1.0;  // [m/s]
 
 struct SyntheticCase {
   double modulus_ratio, length_ratio, kinetic_energy;

@@ -110,8 +110,8 @@ TEST_CASE("ccm report on the synthetic study: files, self-contained page, proven
       CHECK(read_text(out / (id + ".svg")).find("<svg") != std::string::npos);
     }
     const auto table_ids = attribute_values(html, "<table id");
-    CHECK(table_ids ==
-          std::vector<std::string>{"points", "stability", "fits", "convergence", "provenance"});
+    CHECK(table_ids == std::vector<std::string>{"points", "impact", "stability", "fits",
+                                                "convergence", "provenance"});
     for (const auto& id : table_ids) {
       INFO(id);
       CHECK(fs::exists(out / (id + ".csv")));

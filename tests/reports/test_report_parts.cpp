@@ -4,6 +4,7 @@
 
 #include "db/store/study_store.hpp"
 #include "reports/data/report_loader.hpp"
+#include "reports/figures/impact_table.hpp"
 #include "reports/figures/recommendation_map.hpp"
 #include "reports/figures/stability_section.hpp"
 #include "reports/figures/summary_section.hpp"
@@ -188,6 +189,31 @@ TEST_CASE("synthetic study: stability table and recommendation map against close
       CHECK(std::stod(row[9]) == Approx(m.runtime_ratio_thesis_estimate).epsilon(5e-4));
       CHECK(std::stod(row[6]) == Approx(test::synthetic_final_error(er)).margin(1e-3));
     }
+  }
+
+  SECTION("the designer's metrics: a table of every usable point, a sentence, closed forms") {
+    const auto t = impact_table(data);
+    REQUIRE(t);
+    REQUIRE(t->rows.size() == std::size_t(test::kSyntheticPoints - 1));  // not the unstable one
+    REQUIRE(t->header.size() == 18);
+    for (const auto& row : t->rows) {
+      REQUIRE(row.size() == t->header.size());
+      const double er = std::stod(row[1]);
+      CHECK(std::stod(row[5]) == Approx(60.0).epsilon(5e-4));  // 2 kg x 1.5 m/s / 0.05 s
+      CHECK(std::stod(row[6]) == Approx(80.0).epsilon(5e-4));  // 2 kg x 2 m/s / 0.05 s
+      CHECK(std::stod(row[7]) == Approx(0.25).epsilon(5e-4));
+      CHECK(std::stod(row[10]) == Approx(test::synthetic_final_error(er)).margin(1e-3));
+      CHECK(std::stod(row[11]) == Approx(0.05).epsilon(5e-4));
+      CHECK(std::stod(row[13]) == Approx(0.0).margin(1e-9));
+      CHECK(std::stod(row[14]) == Approx(test::kSyntheticReboundCcm).epsilon(5e-4));
+      CHECK(std::stod(row[16]) == Approx(0.5).epsilon(5e-4));
+      CHECK(std::stod(row[17]) == Approx(0.5).epsilon(5e-4));
+    }
+    const auto sentence = impact_sentence(data, 0.1);
+    REQUIRE(sentence);
+    CHECK_THAT(*sentence, Catch::Contains("within 0.1 on all four at 0 of 23 points") &&
+                              Catch::Contains("most often the rebound speed (23 points)"));
+    CHECK(impact_sentence(data, 0.5)->find("at 23 of 23 points") != std::string::npos);
   }
 
   SECTION("the summary's sentences are generated from the measured points") {
