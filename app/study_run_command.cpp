@@ -45,9 +45,11 @@ int study_run(const StudyRunArgs& args, const study::RankContext& ranks) {
   }
   if (ranks.is_root() && !args.quiet)
     fmt::print(
-        "study \"{}\": {} runs ({} points x 2 models; {} distinct scenes, each simulated once) "
-        "on {} worker(s), store {}\n",
-        spec.title, runs.size(), runs.size() / 2, group_by_scene(runs).size(),
+        "study \"{}\": {} runs ({} points x 2 models; {}) on {} worker(s), store {}\n", spec.title,
+        runs.size(), runs.size() / 2,
+        whole_impact_study(spec, runs)
+            ? "whole impacts: each point's two runs together, ending after both separate"
+            : fmt::format("{} distinct scenes, each simulated once", group_by_scene(runs).size()),
         ranks.size() * args.jobs, args.db.string());
 
   run_all({args.db, args.jobs, args.quiet}, ranks, spec, grid_hash, runs);

@@ -264,13 +264,16 @@ long count_failed(const fs::path& db, const GridSpec& spec, const std::string& g
   return failed;
 }
 
+bool whole_impact_study(const GridSpec& spec, const std::vector<PlannedRun>& runs) {
+  return !runs.empty() && study::study_scene(spec, runs.front().point, ImpactModel::ccm)
+                              .time.end_after_separation.has_value();
+}
+
 int run_all(const StudyRunsSetup& args, const study::RankContext& ranks, const GridSpec& spec,
             const std::string& grid_hash, const std::vector<PlannedRun>& runs) {
   const int jobs = ranks.size() > 1 ? 1 : args.jobs;
   const auto provenance = db::current_provenance(grid_hash, ranks.size(), jobs);
-  const bool whole_impacts =
-      !runs.empty() && study::study_scene(spec, runs.front().point, ImpactModel::ccm)
-                           .time.end_after_separation.has_value();
+  const bool whole_impacts = whole_impact_study(spec, runs);
   const std::vector<std::vector<std::size_t>> groups =
       whole_impacts ? group_by_point(runs) : group_by_scene(runs);
   const std::vector<std::size_t> order = longest_first(runs, groups);

@@ -32,6 +32,10 @@ void prepare_store(const std::filesystem::path& db, const study::GridSpec& spec,
 void register_points(const std::filesystem::path& db, const study::GridSpec& spec,
                      const std::string& grid_hash, const std::vector<PlannedRun>& runs);
 
+// Whether the study compares whole impacts (its scenes end after separation): then a point's two
+// runs are run together and no run is shared between points (docs/grid-file.md).
+bool whole_impact_study(const study::GridSpec& spec, const std::vector<PlannedRun>& runs);
+
 // Runs this process's share (run_schedule.hpp): forked workers (--jobs) take the runs longest
 // first from a shared counter; an MPI rank takes every size()-th run of that order. Rank 0 shows
 // progress. Returns the largest exit code of the workers.

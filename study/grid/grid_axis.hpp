@@ -20,7 +20,8 @@ enum class GridAxis {
                         // element-scaled penalty s K A^2 / V
   damping,              // zeta, the penalty's dashpot, fraction of critical (rigid model)
   restitution,          // e (ccm model)
-  friction              // mu (ccm model)
+  friction,             // mu (ccm model)
+  density_ratio         // rho_I / rho_A: the impactor's density over the artifact's
 };
 
 struct GridAxisName {
@@ -29,7 +30,7 @@ struct GridAxisName {
 };
 
 // The name table, in the order the docs list the axes.
-inline constexpr std::array<GridAxisName, 9> kGridAxisNames = {{
+inline constexpr std::array<GridAxisName, 10> kGridAxisNames = {{
     {GridAxis::nu, "nu"},
     {GridAxis::artifact_mesh_size, "artifact_mesh_size"},
     {GridAxis::impactor_mesh_ratio, "impactor_mesh_ratio"},
@@ -39,6 +40,7 @@ inline constexpr std::array<GridAxisName, 9> kGridAxisNames = {{
     {GridAxis::damping, "damping"},
     {GridAxis::restitution, "restitution"},
     {GridAxis::friction, "friction"},
+    {GridAxis::density_ratio, "density_ratio"},
 }};
 
 constexpr std::string_view to_string(GridAxis axis) {

@@ -36,6 +36,7 @@ std::string axis_problem(GridAxis axis, double value) {
     case GridAxis::artifact_mesh_size:
     case GridAxis::mesh_scale:
     case GridAxis::penalty:
+    case GridAxis::density_ratio:
       return positive_problem(value);
     case GridAxis::penalty_scale:  // 0: the per-point K_P
       return non_negative_problem(value);
@@ -80,6 +81,9 @@ void apply_axis(GridAxis axis, double value, PointParameters& p) {
       return;
     case GridAxis::friction:
       p.contact.friction = value;
+      return;
+    case GridAxis::density_ratio:
+      p.impactor_rho = value * p.artifact.rho;
       return;
   }
 }

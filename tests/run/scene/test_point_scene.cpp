@@ -164,6 +164,17 @@ TEST_CASE("point parameters: closed forms of the impact", "[grid]") {
   CHECK(axis_value_problem("restitution", 1.5) == "must lie in [0, 1] (got 1.5)");
   CHECK(axis_value_problem("K", 1.0) == "unknown grid axis 'K'");
   CHECK(axis_value_problem("friction", 0.0).empty());
+  // A density_ratio axis sets rho_I = ratio x rho_A: the mass, the speed at the same KE, and the
+  // density written into both models' scenes.
+  GridPoint steel = point(1e4, 1.0, 50.0);
+  steel.other_axes["density_ratio"] = 7.8;
+  const PointParameters q = point_parameters(g, steel);
+  CHECK(q.impactor_rho == 7800.0);
+  CHECK(relative_error(q.impactor_mass, 7.8 * p.impactor_mass) < 1e-14);
+  CHECK(relative_error(q.impact_speed, p.impact_speed / std::sqrt(7.8)) < 1e-14);
+  CHECK_THAT(point_scene_text(g, steel, ImpactModel::ccm), Catch::Contains("rho = 7800"));
+  CHECK_THAT(point_scene_text(g, steel, ImpactModel::rigid), Catch::Contains("7800"));
+  CHECK(axis_value_problem("density_ratio", 0.0) == "must be > 0 (got 0)");
 }
 
 TEST_CASE("contact zones, the sphere's mass and the penalty's damping reach the scenes", "[grid]") {
