@@ -52,6 +52,15 @@ nlohmann::json groups_json(const std::vector<study::GroupRange>& groups) {
   return out;
 }
 
+// The designer's errors (docs/metrics.md), or null when the point's runs did not keep them.
+nlohmann::json impact_errors_json(const std::optional<study::ImpactErrors>& e) {
+  if (!e) return nullptr;
+  return {{"peak_force", e->peak_force},
+          {"indentation", e->indentation},
+          {"contact_duration", e->contact_duration},
+          {"rebound_speed", e->rebound_speed}};
+}
+
 nlohmann::json nearest_json(const std::vector<study::NearbyPoint>& points) {
   nlohmann::json out = nlohmann::json::array();
   for (const study::NearbyPoint& p : points)
@@ -63,7 +72,8 @@ nlohmann::json nearest_json(const std::vector<study::NearbyPoint>& points) {
                    {"final_state_error", errors_json(p.measured.final_state)},
                    {"runtime_ratio", p.measured.runtime_ratio},
                    {"weighting", errors_json(p.weighting)},
-                   {"model", study::to_string(p.decision.model)}});
+                   {"model", study::to_string(p.decision.model)},
+                   {"impact_errors", impact_errors_json(p.impact_errors)}});
   return out;
 }
 
@@ -107,6 +117,11 @@ void print_nearest(const std::vector<study::NearbyPoint>& points) {
         p.distance, e.u_mean, e.u_max, e.kinetic_energy, p.measured.runtime_ratio,
         std::max({p.weighting.u_mean, p.weighting.u_max, p.weighting.kinetic_energy}),
         study::to_string(p.decision.model));
+    if (const auto& i = p.impact_errors)
+      fmt::print(
+          "    designer's errors (docs/metrics.md): peak force {:.3f}, indentation {:.3f}, "
+          "contact duration {:.3f}, rebound speed {:.3f}\n",
+          i->peak_force, i->indentation, i->contact_duration, i->rebound_speed);
   }
 }
 

@@ -189,7 +189,7 @@ std::vector<NearbyPoint> nearest_points(std::span<const PointMetrics> measured,
                                 (m->point.length_ratio - q.length_ratio) / dy,
                                 (m->point.kinetic_energy - q.kinetic_energy) / dk);
     const DecisionInputs in = measured_inputs(*m);
-    out.push_back({m->point, d, in, m->weighting, decide_model(in, max_error)});
+    out.push_back({m->point, d, in, m->weighting, decide_model(in, max_error), m->impact_errors});
   }
   std::stable_sort(out.begin(), out.end(), [](const NearbyPoint& a, const NearbyPoint& b) {
     return a.distance < b.distance;

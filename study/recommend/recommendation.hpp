@@ -43,6 +43,8 @@ struct NearbyPoint {
   DecisionInputs measured;
   ArtifactErrors weighting;
   Decision decision;
+  // The designer's errors of its whole runs (docs/metrics.md), when its runs kept them.
+  std::optional<ImpactErrors> impact_errors;
 };
 
 inline constexpr int kNearestPoints = 3;

@@ -129,6 +129,8 @@ TEST_CASE("ccm study run: a serial study completes, resumes without rerunning, r
                             "\"rigid_penalty\"", "\"dcr_restitution\"", "\"clamped\""})
     CHECK_THAT(json, Catch::Contains(field));
   CHECK_THAT(json, Catch::Contains("\"value\": 1000000.0"));  // K_P of the grid
+  CHECK_THAT(json, Catch::Contains("\"impact_errors\": {") &&
+                       Catch::Contains("\"contact_duration\":"));  // the designer's errors
 
   const std::string text = (tmp.path / "rec.txt").string();
   REQUIRE(shell(fmt::format("'{}' recommend --db '{}' --er 1 --rls 0.5 --ke 0.001 > '{}'",
@@ -138,6 +140,7 @@ TEST_CASE("ccm study run: a serial study completes, resumes without rerunning, r
   CHECK_THAT(read_file(text),
              Catch::Contains("point 0: ER 1, RLS 0.5, KE 0.001 J (distance 0.00)"));
   CHECK_THAT(read_file(text), Catch::Contains("rigid damping zeta (fraction of critical): 0"));
+  CHECK_THAT(read_file(text), Catch::Contains("designer's errors (docs/metrics.md): peak force"));
 
   // The study has no other axis: naming one is bad input.
   CHECK(shell(fmt::format("'{}' recommend --db '{}' --er 1 --rls 0.5 --ke 0.001 --axis damping=1",
