@@ -23,6 +23,9 @@ struct DataFolder {
 
 DataFolder find_data_folder();
 
+// The reference store ccm ships, relative to the data folder (scripts/build-reference-store.sh).
+inline constexpr std::string_view kReferenceStore = "reference/whole-impacts.sqlite";
+
 // <data folder>/<relative>, or an empty path when there is no data folder.
 std::filesystem::path default_data_file(std::string_view relative);
 

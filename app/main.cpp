@@ -206,7 +206,9 @@ int main(int argc, char** argv) {
   ccm::RecommendArgs rec;
   CLI::App* recommend = app.add_subcommand(
       "recommend", "Which impactor model to use at a design point, and why (from a study)");
-  recommend->add_option("--db", rec.db, "Study store (SQLite)")->required();
+  recommend->add_option("--db", rec.db,
+                        "Study store (SQLite); default the reference store ccm ships "
+                        "(share/ccm/reference/whole-impacts.sqlite)");
   recommend->add_option("--er", rec.er, "Modulus ratio E_impactor / E_artifact")->required();
   recommend->add_option("--rls", rec.rls, "Length ratio D_impactor / L_artifact")->required();
   recommend->add_option("--ke", rec.ke, "Impactor kinetic energy [J]")->required();

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/command_errors.hpp"
+#include "app/data_paths.hpp"
 #include "app/json_output.hpp"
 #include "app/run_command.hpp"
 #include "app/stored_grid.hpp"
@@ -106,6 +107,13 @@ nlohmann::json recommendation_json(const RecommendArgs& q, const study::Recommen
       {"groups", groups_json(r.groups)}};
 }
 
+// Which store and study an answer came from.
+struct StoreSource {
+  std::filesystem::path path;
+  std::string study;
+  bool reference = false;  // the shipped reference store, not --db
+};
+
 void print_nearest(const std::vector<study::NearbyPoint>& points) {
   fmt::print("nearest measured points (distance in grid spacings of log10 ER, RLS, KE):\n");
   for (const study::NearbyPoint& p : points) {
@@ -169,6 +177,20 @@ void print_recommendation(const RecommendArgs& q, const study::Recommendation& r
 
 }  // namespace
 
+// The store a recommendation reads: --db, or the reference store ccm ships (the whole-impact
+// grid over the users' regime, docs/recommendation.md "The reference store").
+std::filesystem::path recommendation_store(const RecommendArgs& args) {
+  if (!args.db.empty()) return args.db;
+  const std::filesystem::path reference = default_data_file(kReferenceStore);
+  if (reference.empty()) throw StudyInputError(missing_data_message("--db"));
+  if (!std::filesystem::is_regular_file(reference))
+    throw StudyInputError(fmt::format(
+        "no --db given and no reference store at {} (scripts/build-reference-store.sh builds it "
+        "from scenes/grids/whole-impacts.toml; or pass --db FILE, a store of `ccm study run`)",
+        reference.string()));
+  return reference;
+}
+
 int recommend_command(const RecommendArgs& args) {
   return run_reporting_errors([&] {
     if (!(std::isfinite(args.max_error) && args.max_error >= 0.0))
@@ -180,19 +202,29 @@ int recommend_command(const RecommendArgs& args) {
     query.kinetic_energy = args.ke;
     query.max_error = args.max_error;
     query.axes = parse_axes(args.axes);
-    auto store = open_study_store(args.db);
+    const std::filesystem::path db = recommendation_store(args);
+    auto store = open_study_store(db);
     const std::vector<study::PointMetrics> measured = store->load_metrics();
     const study::StudyFits fits = study::fit_study(measured);
     if (fits.fits.empty())
-      throw StudyInputError(args.db.string() +
+      throw StudyInputError(db.string() +
                             ": the study has no fitted surfaces yet (no point with both runs "
                             "completed): finish `ccm study run` first");
     const auto grid = stored_grid_spec(*store);
     const study::Recommendation r = study::recommend(fits, measured, query);
-    if (args.json)
-      print_json(recommendation_json(args, r, grid));
-    else
+    const StoreSource source{db, store->study_name(), args.db.empty()};
+    if (args.json) {
+      nlohmann::json j = recommendation_json(args, r, grid);
+      j["store"] = {{"path", source.path.string()},
+                    {"study", source.study},
+                    {"reference", source.reference},
+                    {"grid_file", grid ? grid->source.string() : ""}};
+      print_json(j);
+    } else {
+      fmt::print("store: {} (study \"{}\"{})\n", source.path.string(), source.study,
+                 source.reference ? ", the reference store ccm ships" : "");
       print_recommendation(args, r, grid);
+    }
     return exit_code::completed;
   });
 }

@@ -3,7 +3,8 @@
 # (scenes/grids/whole-impacts.toml, 96 points) run both ways at every point, then refined along ER
 # where the answer changes (`ccm study refine`, twice the grid's runs in all), and its report.
 #
-#   scripts/build-reference-store.sh [STORE]     default: results/reference/whole-impacts.sqlite
+#   scripts/build-reference-store.sh [STORE]     default: data/reference/whole-impacts.sqlite, the
+#                                                one `ccm recommend` reads without --db
 #
 # Resumable: after a stop, the same command picks up where it was (no run is done twice).
 # JOBS local worker processes (default: the cores). With CCM_MPI_RANKS=N the grid is spread over
@@ -13,7 +14,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-store="${1:-results/reference/whole-impacts.sqlite}"
+store="${1:-data/reference/whole-impacts.sqlite}"
 grid=scenes/grids/whole-impacts.toml
 ccm="${CCM:-build/ccm}"
 jobs="${JOBS:-$(nproc)}"

@@ -142,6 +142,27 @@ TEST_CASE("ccm study run: a serial study completes, resumes without rerunning, r
   CHECK_THAT(read_file(text), Catch::Contains("rigid damping zeta (fraction of critical): 0"));
   CHECK_THAT(read_file(text), Catch::Contains("designer's errors (docs/metrics.md): peak force"));
 
+  // Without --db: the reference store in ccm's data folder (here the tiny study, copied there),
+  // named in the answer; without one there, bad input naming where it looked.
+  const fs::path data = tmp.path / "data";
+  fs::create_directories(data / "rig");
+  fs::create_directories(data / "reference");
+  fs::copy_file(fs::path(CCM_SOURCE_DIR) / "rig_models/cases.toml", data / "rig/cases.toml");
+  fs::copy_file(db, data / "reference/whole-impacts.sqlite");
+  const std::string histories = db.stem().string() + ".histories";  // as the store names it
+  fs::copy(db.parent_path() / histories, data / "reference" / histories,
+           fs::copy_options::recursive);
+  const std::string reference_rec = fmt::format(
+      "CCM_DATA_DIR='{}' '{}' recommend --er 10 --rls 0.5 --ke 0.001", data.string(), CCM_BINARY);
+  REQUIRE(shell(reference_rec + " > '" + text + "'", tmp.path / "err", err) == 0);
+  CHECK_THAT(read_file(text), Catch::Contains("whole-impacts.sqlite (study \"tiny\", the "
+                                              "reference store ccm ships)"));
+  REQUIRE(shell(reference_rec + " --json > '" + rec + "'", tmp.path / "err", err) == 0);
+  CHECK_THAT(read_file(rec), Catch::Contains("\"reference\": true"));
+  fs::remove(data / "reference/whole-impacts.sqlite");
+  CHECK(shell(reference_rec, tmp.path / "err", err) == 2);
+  CHECK_THAT(err, Catch::Contains("no --db given and no reference store at"));
+
   // The study has no other axis: naming one is bad input.
   CHECK(shell(fmt::format("'{}' recommend --db '{}' --er 1 --rls 0.5 --ke 0.001 --axis damping=1",
                           CCM_BINARY, db.string()),
