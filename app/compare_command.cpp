@@ -286,8 +286,11 @@ int compare(const CompareArgs& args) {
   check_observables(observables, deformable.history->columns(), rigid.history->columns());
   const fs::path out =
       args.out.empty() ? fs::path("compare-" + args.scene.stem().string()) : args.out;
-  // A --db that is there must be a ccm store this ccm can read and write: checked before the runs.
-  if (fs::exists(args.db)) db::StudyStore check(args.db, db::Access::read_only);
+  const fs::path record_db = args.db.empty() ? fs::path(kMainJobStore) : args.db;
+  const fs::path predict_db = prediction_store(args.db, record_db);
+  // A store that is there must be a ccm store this ccm can read and write: checked before the runs.
+  for (const fs::path& db : {record_db, predict_db})
+    if (fs::exists(db)) db::StudyStore check(db, db::Access::read_only);
   if (fs::exists(out) && !fs::is_directory(out))
     throw std::invalid_argument(
         fmt::format("--out {}: exists and is not a directory", out.string()));
@@ -298,16 +301,17 @@ int compare(const CompareArgs& args) {
   if (const auto t_c = contact_time(d, groups))
     groups.groups->window = contact_window(*groups.groups, scene, *t_c);
   const ComparePrediction prediction =
-      predict_for_scene(args.db, std::move(groups), o, args.max_error);
+      predict_for_scene(predict_db, std::move(groups), o, args.max_error,
+                        scene.time.end_after_separation.has_value());
   nlohmann::json j = comparison_json(args, observables, d, r, o);
-  j["study_prediction"] = prediction_json(args.db, prediction);
+  j["study_prediction"] = prediction_json(predict_db, prediction);
   // Recorded in the study's store, for `ccm report`, when there is one.
-  std::string recorded = fmt::format("not recorded: no store at {}", args.db.string());
-  if (fs::is_regular_file(args.db)) {
+  std::string recorded = fmt::format("not recorded: no store at {}", record_db.string());
+  if (fs::is_regular_file(record_db)) {
     const long long id =
-        db::record_comparison(args.db, comparison_row(args, observables, d, r, o, prediction, j));
-    recorded =
-        fmt::format("recorded in {} (comparison {}; `ccm report` shows it)", args.db.string(), id);
+        db::record_comparison(record_db, comparison_row(args, observables, d, r, o, prediction, j));
+    recorded = fmt::format("recorded in {} (comparison {}; `ccm report` shows it)",
+                           record_db.string(), id);
   }
   j["store"] = recorded;
   write_atomic(out / "comparison.json", j.dump(2) + "\n");
@@ -315,7 +319,7 @@ int compare(const CompareArgs& args) {
     print_json(j);
   else {
     print_table(args, d, r, o);
-    print_prediction(args.db, prediction);
+    print_prediction(predict_db, prediction);
     fmt::print("\n  {}\n", recorded);
   }
   if (!o.unusable.empty()) return exit_code::unstable;

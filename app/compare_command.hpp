@@ -20,12 +20,17 @@ struct CompareArgs {
   // The runs (each kept under its content hash, so asking again reuses it) and
   // comparison.json; default: compare-<scene file's stem>.
   std::filesystem::path out;
-  // The study whose prediction is shown beside the measured answer (the main job's store).
-  std::filesystem::path db = "results/default-study.sqlite";
+  // --db: the study whose prediction is shown beside the measured answer, and where the
+  // comparison is recorded. Empty: the prediction from the reference store ccm ships when it is
+  // installed, else from the main job's store, and the record in the main job's store.
+  std::filesystem::path db;
   bool json = false;   // the comparison as JSON on stdout instead of the table
   bool quiet = false;  // no progress line
   int threads = 0;     // as `ccm run --threads`
 };
+
+// The main job's store: where a comparison is recorded without --db.
+inline constexpr const char* kMainJobStore = "results/default-study.sqlite";
 
 int compare_command(const CompareArgs& args);
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/data_paths.hpp"
 #include "app/stored_grid.hpp"
 #include "app/study_store_open.hpp"
 #include "study/fit/study_fits.hpp"
@@ -30,8 +31,33 @@ void check_value(const char* name, double value, double grid, std::vector<std::s
 
 }  // namespace
 
+std::filesystem::path prediction_store(const std::filesystem::path& db,
+                                       const std::filesystem::path& fallback) {
+  if (!db.empty()) return db;
+  const std::filesystem::path reference = default_data_file(kReferenceStore);
+  if (!reference.empty() && std::filesystem::is_regular_file(reference)) return reference;
+  return fallback;
+}
+
+namespace {
+
+// The grid's density_ratio level nearest the scene's (in log), or its one impactor density.
+double grid_density_ratio(const study::GridSpec& grid, double scene_ratio,
+                          study::AxisLevels& axes) {
+  const auto levels = grid.other_axes.find("density_ratio");
+  if (levels == grid.other_axes.end()) return grid.impactor.rho / grid.artifact.rho;
+  double best = levels->second.front();
+  for (double v : levels->second)
+    if (std::abs(std::log(v / scene_ratio)) < std::abs(std::log(best / scene_ratio))) best = v;
+  axes["density_ratio"] = best;
+  return best;
+}
+
+}  // namespace
+
 ComparePrediction predict_for_scene(const std::filesystem::path& db, GroupsOrReason groups,
-                                    const ComparisonOutcome& measured, double max_error) {
+                                    const ComparisonOutcome& measured, double max_error,
+                                    bool whole_impact) {
   ComparePrediction p;
   p.groups = std::move(groups);
   if (!p.groups.groups) {
@@ -56,13 +82,20 @@ ComparePrediction predict_for_scene(const std::filesystem::path& db, GroupsOrRea
   p.er = g.modulus_ratio;
   p.rls = g.length_ratio;
   p.ke = g.kinetic_energy_star * a.E * a.length * a.length * a.length;
-  p.grid_density_ratio = grid->impactor.rho / a.rho;
-  p.grid_window = (grid->time.end - grid->time.contact_time) * std::sqrt(a.E / a.rho) / a.length;
+  study::AxisLevels axes;
+  p.grid_density_ratio = grid_density_ratio(*grid, g.density_ratio, axes);
+  if (!grid->time.end_after_separation)
+    p.grid_window = (grid->time.end - grid->time.contact_time) * std::sqrt(a.E / a.rho) / a.length;
   check_range("ER", p.er, grid->modulus_ratios, p.outside);
   check_range("RLS", p.rls, grid->length_ratios, p.outside);
   check_range("KE (from KE*)", p.ke, grid->kinetic_energies, p.outside);
   check_value("density ratio", g.density_ratio, p.grid_density_ratio, p.outside);
-  if (g.window) check_value("window (t_f - t_c) c_A / L_A", *g.window, p.grid_window, p.outside);
+  if (p.grid_window && g.window)
+    check_value("window (t_f - t_c) c_A / L_A", *g.window, *p.grid_window, p.outside);
+  if (!p.grid_window && !whole_impact)
+    p.outside.push_back(
+        "window: the store compares whole impacts, this scene ends at its [time] end (add "
+        "[time] end_after_separation to compare like with like)");
   const std::vector<study::PointMetrics> points = store->load_metrics();
   const study::StudyFits fits = study::fit_study(points);
   if (fits.fits.empty()) {
@@ -74,6 +107,7 @@ ComparePrediction predict_for_scene(const std::filesystem::path& db, GroupsOrRea
   q.length_ratio = p.rls;
   q.kinetic_energy = p.ke;
   q.max_error = max_error;
+  q.axes = axes;
   try {
     p.recommendation = study::recommend(fits, points, q);
   } catch (const std::exception& e) {
@@ -137,7 +171,12 @@ nlohmann::json prediction_json(const std::filesystem::path& db, const ComparePre
     j["note"] = p.note;
     return j;
   }
-  j["on_grid"] = {{"er", p.er}, {"rls", p.rls}, {"ke", p.ke}};
+  j["on_grid"] = {{"er", p.er},
+                  {"rls", p.rls},
+                  {"ke", p.ke},
+                  {"density_ratio", p.grid_density_ratio},
+                  {"window", p.grid_window ? nlohmann::json(*p.grid_window) : nlohmann::json()},
+                  {"whole_impacts", !p.grid_window.has_value()}};
   j["outside_grid"] = p.outside;
   if (p.recommendation) {
     const study::Recommendation& r = *p.recommendation;

@@ -21,16 +21,24 @@ struct ComparePrediction {
   GroupsOrReason groups;
   // The query on the grid: ER and RLS as they are, KE = KE* E_A,grid L_A,grid^3 [J].
   double er = 0.0, rls = 0.0, ke = 0.0;
-  double grid_density_ratio = 0.0;
-  double grid_window = 0.0;
-  std::vector<std::string> outside;  // each group outside the grid's range, with both
+  double grid_density_ratio = 0.0;    // the grid's, or its density_ratio level nearest the scene's
+  std::optional<double> grid_window;  // none: the store compares whole impacts
+  std::vector<std::string> outside;   // each group outside the grid's range, with both
   std::optional<study::Recommendation> recommendation;
   std::optional<bool> agrees;  // the predicted model is the measured one
   std::string note;            // why there is no prediction (no store, no groups, no fits)
 };
 
+// The store a prediction comes from: --db when given, else the reference store ccm ships when
+// it is installed, else the main job's store (`fallback`).
+std::filesystem::path prediction_store(const std::filesystem::path& db,
+                                       const std::filesystem::path& fallback);
+
+// `whole_impact`: the scene ends after separation. A store of whole impacts is compared on whole
+// impacts (no window to match); a fixed-window store by its window.
 ComparePrediction predict_for_scene(const std::filesystem::path& db, GroupsOrReason groups,
-                                    const ComparisonOutcome& measured, double max_error);
+                                    const ComparisonOutcome& measured, double max_error,
+                                    bool whole_impact);
 
 void print_prediction(const std::filesystem::path& db, const ComparePrediction& p);
 nlohmann::json prediction_json(const std::filesystem::path& db, const ComparePrediction& p);

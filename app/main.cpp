@@ -121,11 +121,11 @@ int main(int argc, char** argv) {
   compare->add_option("--out,-o", compare_args.out,
                       "Folder for the two runs (kept under their content hash: asking again "
                       "reuses them) and comparison.json; default compare-<scene name>");
-  compare
-      ->add_option("--db", compare_args.db,
-                   "Study store whose prediction for this scene's ER, RLS and KE is shown beside "
-                   "the measured answer")
-      ->capture_default_str();
+  compare->add_option("--db", compare_args.db,
+                      "Study store whose prediction for this scene's groups is shown beside the "
+                      "measured answer, and where the comparison is recorded (default: the "
+                      "prediction from the reference store ccm ships when installed, else from "
+                      "results/default-study.sqlite; the record in results/default-study.sqlite)");
   compare->add_flag("--json", compare_args.json, "Print the comparison as JSON");
   compare->add_flag("--quiet,-q", compare_args.quiet, "No progress line");
   compare->add_option("--threads", compare_args.threads, "As `ccm run --threads`");

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "tests/app/cli_shell.hpp"
+#include "tests/study/grid/grid_fixtures.hpp"
 #include "tests/support/scene_fixtures.hpp"
 
 namespace fs = std::filesystem;
@@ -143,4 +144,54 @@ TEST_CASE("ccm compare on a whole impact: both runs end together, after both hav
     CHECK(ad[i] == 0.0);
     CHECK(ak[i] == 0.0);
   }
+}
+
+// Without --db the prediction comes from the reference store ccm ships (here a tiny whole-impact
+// study over two density ratios, put in a data folder): the store is named, the density ratio
+// level nearest the scene's is used, and a scene that stops at its end is told that the store
+// compares whole impacts. The comparison is recorded in the main job's store, not the reference.
+TEST_CASE("ccm compare without --db: the prediction from the reference store", "[compare][cli]") {
+  ccm::test::TempDir dir;
+  std::string bodies(ccm::test::kTinyGridBodies);
+  bodies.replace(bodies.find("E = 1000.0"), 10, "E = 1.0e5");
+  const fs::path grid = dir.write("reference.toml", R"(title = "reference"
+[axes]
+ER = [1.0, 100.0]
+RLS = [0.5]
+KE = [1.0]
+density_ratio = [1.0, 7.8]
+[time]
+contact_time = 0.02
+end = 0.4
+output_interval = 1e-3
+end_after_separation = 0.005
+)" + bodies);
+  const fs::path data = dir.path / "data";
+  fs::create_directories(data / "rig");
+  fs::create_directories(data / "reference");
+  fs::copy_file(fs::path(CCM_SOURCE_DIR) / "rig_models/cases.toml", data / "rig/cases.toml");
+  const fs::path store = data / "reference/whole-impacts.sqlite";
+  const auto study = ccm::test::run_ccm(
+      fmt::format("study run '{}' --db '{}' --quiet", grid.string(), store.string()), dir);
+  INFO(study.err);
+  REQUIRE(study.status == 0);
+  const fs::path scene = dir.write("strike.toml", ccm::test::kStrikeScene);
+  // From the temporary folder: no main job's store there, so nothing is recorded.
+  const auto cmp = ccm::test::run_command(
+      fmt::format("cd '{}' && CCM_DATA_DIR='{}' '{}' compare '{}' --rigid striker --out cmp --json",
+                  dir.path.string(), data.string(), CCM_BINARY, scene.string()),
+      dir);
+  INFO(cmp.err);
+  REQUIRE(cmp.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(cmp.out);
+  const nlohmann::json& p = j["study_prediction"];
+  CHECK(p["db"] == store.string());
+  REQUIRE(p.contains("on_grid"));
+  CHECK(p["on_grid"]["density_ratio"] == 1.0);  // the striker and the base are both 1000 kg/m^3
+  CHECK(p["on_grid"]["whole_impacts"] == true);
+  bool told = false;
+  for (const auto& o : p["outside_grid"])
+    told |= o.get<std::string>().find("the store compares whole impacts") != std::string::npos;
+  CHECK(told);
+  CHECK(j["store"] == "not recorded: no store at results/default-study.sqlite");
 }
