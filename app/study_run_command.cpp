@@ -62,6 +62,18 @@ int study_run(const StudyRunArgs& args, const study::RankContext& ranks) {
     print_convergence_table(stdout, results.convergence_rows);
     if (!spec.scene_template) print_trend_table(stdout, results.trends, results.grid);
   }
+  if (const auto guarded = points_at_guard(spec, results.grid); !guarded.empty()) {
+    std::string which;
+    for (const study::GridPoint& p : guarded)
+      which += (which.empty() ? "" : ", ") + std::to_string(p.index);
+    fmt::print(
+        stderr,
+        "ccm: warning: whole impacts: {} of {} points reached the guard [time] end before both "
+        "bodies had "
+        "separated (points {}): their final state is read before the impact ended; raise "
+        "[time] end\n",
+        guarded.size(), results.grid.size(), which);
+  }
   if (const long failed = count_failed(args.db, spec, grid_hash); failed > 0) {
     fmt::print(stderr, "ccm: error: {} run(s) failed; `ccm study status --db {}` names them\n",
                failed, args.db.string());

@@ -269,6 +269,18 @@ bool whole_impact_study(const GridSpec& spec, const std::vector<PlannedRun>& run
                               .time.end_after_separation.has_value();
 }
 
+std::vector<GridPoint> points_at_guard(const GridSpec& spec,
+                                       const std::vector<study::PointMetrics>& metrics) {
+  std::vector<GridPoint> out;
+  for (const study::PointMetrics& m : metrics) {
+    if (!m.usable) continue;
+    const Scene scene = study::study_scene(spec, m.point, ImpactModel::ccm);
+    if (scene.time.end_after_separation && m.t_final >= scene.time.end * (1.0 - 1e-9))
+      out.push_back(m.point);
+  }
+  return out;
+}
+
 int run_all(const StudyRunsSetup& args, const study::RankContext& ranks, const GridSpec& spec,
             const std::string& grid_hash, const std::vector<PlannedRun>& runs) {
   const int jobs = ranks.size() > 1 ? 1 : args.jobs;

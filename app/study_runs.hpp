@@ -36,6 +36,11 @@ void register_points(const std::filesystem::path& db, const study::GridSpec& spe
 // runs are run together and no run is shared between points (docs/grid-file.md).
 bool whole_impact_study(const study::GridSpec& spec, const std::vector<PlannedRun>& runs);
 
+// The points of a whole-impact study whose runs reached the guard ([time] end) before both bodies
+// had separated: their final state is not read after the impact.
+std::vector<study::GridPoint> points_at_guard(const study::GridSpec& spec,
+                                              const std::vector<study::PointMetrics>& metrics);
+
 // Runs this process's share (run_schedule.hpp): forked workers (--jobs) take the runs longest
 // first from a shared counter; an MPI rank takes every size()-th run of that order. Rank 0 shows
 // progress. Returns the largest exit code of the workers.

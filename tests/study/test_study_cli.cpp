@@ -398,4 +398,12 @@ TEST_CASE("ccm study run: whole impacts, a point's two runs end together after b
   CHECK(redone->artifact.kinetic_energy == rigid_runs[0].artifact.kinetic_energy);
   CHECK(redone->artifact.u_mean == rigid_runs[0].artifact.u_mean);
   CHECK(redone->artifact.u_max == rigid_runs[0].artifact.u_max);
+
+  // A guard below the impact's end: the runs end there, and the study says which points did.
+  std::string short_grid = whole_impact_grid();
+  short_grid.replace(short_grid.find("end = 0.4"), 9, "end = 0.1");
+  const fs::path guarded = tmp.write("guarded.toml", short_grid);
+  REQUIRE(shell(study_run(guarded, tmp.path / "g.sqlite"), tmp.path / "err", err) == 0);
+  CHECK_THAT(err, Catch::Contains("whole impacts: 1 of 2 points reached the guard [time] end") &&
+                      Catch::Contains("(points 0)"));
 }
