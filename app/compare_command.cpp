@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "app/compare_prediction.hpp"
@@ -22,6 +23,7 @@
 #include "engine/threads/thread_count.hpp"
 #include "records/content_hash.hpp"
 #include "records/provenance/version.hpp"
+#include "run/compare/compare_impact.hpp"
 #include "run/compare/rigid_variant.hpp"
 #include "run/compare/scene_comparison.hpp"
 #include "run/compare/scene_groups.hpp"
@@ -247,6 +249,44 @@ void print_table(const CompareArgs& args, const ComparedRun& d, const ComparedRu
              compare_rule_text(args.max_error));
 }
 
+// The designer's metrics (docs/metrics.md), or why there are none.
+void print_impact(const std::optional<CompareImpact>& impact) {
+  if (!impact) {
+    fmt::print("\n  designer's metrics: none (no single impactor and artifact, or no contact)\n");
+    return;
+  }
+  const study::ImpactQuantities &d = impact->deformable, &r = impact->rigid;
+  const study::ImpactErrors& e = impact->errors;
+  fmt::print("\n  {:<28} {:>12} {:>12} {:>8}   (docs/metrics.md)\n", "designer's metric",
+             "deformable", "rigid", "error");
+  for (const auto& [name, dv, rv, ev] :
+       {std::tuple{"peak contact force [N]", d.peak_force, r.peak_force, e.peak_force},
+        std::tuple{"deepest indentation [m]", d.indentation, r.indentation, e.indentation},
+        std::tuple{"contact duration [s]", d.contact_duration, r.contact_duration,
+                   e.contact_duration},
+        std::tuple{"rebound speed [m/s]", d.rebound_speed, r.rebound_speed, e.rebound_speed}})
+    fmt::print("  {:<28} {:>12.4g} {:>12.4g} {:>8.3f}\n", name, dv, rv, ev);
+}
+
+nlohmann::json impact_json(const std::optional<CompareImpact>& impact) {
+  if (!impact) return nullptr;
+  auto quantities = [](const study::ImpactQuantities& q) {
+    return nlohmann::json{{"peak_force", q.peak_force},
+                          {"indentation", q.indentation},
+                          {"contact_duration", q.contact_duration},
+                          {"rebound_speed", q.rebound_speed},
+                          {"approach_speed", q.approach_speed}};
+  };
+  const study::ImpactErrors& e = impact->errors;
+  return {{"deformable", quantities(impact->deformable)},
+          {"rigid", quantities(impact->rigid)},
+          {"errors",
+           {{"peak_force", e.peak_force},
+            {"indentation", e.indentation},
+            {"contact_duration", e.contact_duration},
+            {"rebound_speed", e.rebound_speed}}}};
+}
+
 // The comparison as a row of the store (db/store/comparison_store.hpp).
 db::ComparisonRow comparison_row(const CompareArgs& args,
                                  const std::vector<std::string>& observables, const ComparedRun& d,
@@ -300,10 +340,14 @@ int compare(const CompareArgs& args) {
   GroupsOrReason groups = scene_groups(scene, deformable.run.model, args.rigid, {});
   if (const auto t_c = contact_time(d, groups))
     groups.groups->window = contact_window(*groups.groups, scene, *t_c);
+  std::optional<CompareImpact> impact;
+  if (const auto& g = groups.groups; g && o.unusable.empty())
+    impact = compare_impact(d, r, g->impactor, g->artifact, g->m_I);
   const ComparePrediction prediction =
       predict_for_scene(predict_db, std::move(groups), o, args.max_error,
                         scene.time.end_after_separation.has_value());
   nlohmann::json j = comparison_json(args, observables, d, r, o);
+  j["impact"] = impact_json(impact);
   j["study_prediction"] = prediction_json(predict_db, prediction);
   // Recorded in the study's store, for `ccm report`, when there is one.
   std::string recorded = fmt::format("not recorded: no store at {}", record_db.string());
@@ -319,6 +363,7 @@ int compare(const CompareArgs& args) {
     print_json(j);
   else {
     print_table(args, d, r, o);
+    print_impact(impact);
     print_prediction(predict_db, prediction);
     fmt::print("\n  {}\n", recorded);
   }

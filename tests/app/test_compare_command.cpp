@@ -83,6 +83,26 @@ TEST_CASE("ccm compare: errors, cost ratio and answer, checked against the two r
   }
   // The base was struck: it moved, so the comparison compares something.
   CHECK(column(out / "runs" / (dh + ".csv"), "base.u_max").back() > 0.0);
+  // The designer's metrics (IM.1, IM.2) from each run's own columns: the striker's mass times
+  // its largest velocity change over an output interval, the base's largest u_max.
+  REQUIRE(j["impact"].is_object());
+  const double mass = j["study_prediction"]["groups"]["m_I"];
+  for (const auto& [side, hash] : {std::pair{"deformable", dh}, std::pair{"rigid", rh}}) {
+    const fs::path csv = out / "runs" / (hash + ".csv");
+    const auto t = column(csv, "time"), vx = column(csv, "striker.vx"),
+               vy = column(csv, "striker.vy"), vz = column(csv, "striker.vz");
+    double peak = 0.0;
+    for (size_t k = 1; k < t.size(); ++k)
+      peak = std::max(peak,
+                      mass * std::hypot(vx[k] - vx[k - 1], vy[k] - vy[k - 1], vz[k] - vz[k - 1]) /
+                          (t[k] - t[k - 1]));
+    INFO(side);
+    CHECK(peak > 0.0);
+    CHECK(j["impact"][side]["peak_force"].get<double>() == Approx(peak).epsilon(1e-12));
+    const auto u = column(csv, "base.u_max");
+    CHECK(j["impact"][side]["indentation"].get<double>() == *std::max_element(u.begin(), u.end()));
+  }
+  CHECK_THAT(first.out, Contains("peak contact force [N]"));
 
   // Asked again (as JSON): both runs reused, the same numbers.
   const auto again = ccm::test::run_ccm(
