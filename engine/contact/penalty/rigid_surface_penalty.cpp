@@ -72,6 +72,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
   f_prev_ = f_now_;
   x_prev_ = f_now_;
   outcode_.assign(nodes_.size(), 0);
+  x_ref_.assign(nodes_.size(), Vec3::Zero());
   // The bounding sphere about the body's centre of mass (its rotation leaves it unchanged).
   const Body& rb = mesh.bodies[static_cast<size_t>(rigid_body)];
   const std::vector<Tet> tets(mesh.tets.begin() + rb.first_element,
@@ -144,6 +145,7 @@ const std::vector<int>& RigidSurfacePenalty::candidates(const State& s, const Fr
   for (int i : deformable_local_) {
     const Vec3 x =
         frame.to_reference_fast(s.x[static_cast<size_t>(nodes_[static_cast<size_t>(i)])]);
+    x_ref_[static_cast<size_t>(i)] = x;
     unsigned code = 0;
     for (int d = 0; d < 3; ++d)
       code |= (x[d] < lo[d] ? 1u : 0u) << (2 * d) | (x[d] > hi[d] ? 2u : 0u) << (2 * d);
@@ -275,13 +277,16 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   for (int candidate : self.candidates(s, frame, travel + rounding_margin())) {
     const auto t = static_cast<size_t>(candidate);
     for (int k = 0; k < 3; ++k) {
+      // The point in the body's frame from its nodes' (the map is affine): a bound needs no
+      // more than that point's cells.
       const auto N = surface_point_weights(k);
       Vec3 x = Vec3::Zero();
       for (int a = 0; a < 3; ++a)
-        x += N[static_cast<size_t>(a)] * s.x[static_cast<size_t>(tris_[t][static_cast<size_t>(a)])];
-      if ((x - r->center).norm() > band) continue;
+        x += N[static_cast<size_t>(a)] *
+             x_ref_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
+      if ((x - r->reference_center).norm() > band) continue;
       // Only a point that can reach the surface within the step loads a spring in it (DS.2).
-      if (!distance_.inside_or_within(frame.to_reference(x), travel)) continue;
+      if (!distance_.inside_or_within(x, travel)) continue;
       ++near;
       for (int a = 0; a < 3; ++a) {
         const auto local = static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)]);

@@ -95,6 +95,7 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   Vec3 center_prev_ = Vec3::Zero();
   Eigen::Quaterniond rotation_prev_ = Eigen::Quaterniond::Identity();
   std::vector<unsigned char> outcode_;  // per entry of nodes_: candidates()'s outcode
+  std::vector<Vec3> x_ref_;             // per entry of nodes_: candidates()'s body-frame place
   std::vector<int> candidates_;         // deformable triangles near the body (scratch)
   std::vector<Vec3> f_now_, f_prev_, x_prev_;
   double work_ = 0.0, penetration_max_ = 0.0, damping_factor_ = 1.0;
