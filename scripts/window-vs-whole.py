@@ -10,6 +10,10 @@ error (eqs. 2.37-2.39) and the rule's answer in each window, the whole impact's 
 
     scripts/window-vs-whole.py [--ccm build/ccm] [--er "1.0, 1.0e2, 1.0e4"] [--rls "1.0"]
         [--ke "1.0, 10.0, 100.0"] [--density "1.0"] [--work out/window-vs-whole] [--jobs 2]
+        [--whole-store data/reference/whole-impacts.sqlite]
+
+With --whole-store the whole impacts are read from that store (the reference store holds every
+point of the whole-impact grid) and only the thesis-window runs are made.
 """
 import argparse
 import pathlib
@@ -59,12 +63,16 @@ def main():
     p.add_argument("--max-error", type=float, default=0.1)
     p.add_argument("--work", default="out/window-vs-whole")
     p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--whole-store", default="")
     a = p.parse_args()
     work = pathlib.Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
     base = GRID.read_text()
     stores = {}
     for name, whole in (("window", False), ("whole", True)):
+        if whole and a.whole_store:
+            stores[name] = pathlib.Path(a.whole_store)
+            continue
         grid = work / f"{name}.toml"
         grid.write_text(grid_text(base, f"{name}", a.er, a.rls, a.ke, a.density, whole))
         stores[name] = work / f"{name}.sqlite"
