@@ -31,6 +31,8 @@ nlohmann::json rig_parameters_json(const rig::RigParameters& r) {
                             {"spring_cylinder_diameter", &r.spring_cylinder_diameter},
                             {"artifact_mass", &r.artifact_mass},
                             {"artifact_inertia_pivot", &r.artifact_inertia_pivot},
+                            {"clamp_stiffness", &r.clamp_stiffness},
+                            {"clamp_damping", &r.clamp_damping},
                             {"pivot_to_sensor", &r.pivot_to_sensor},
                             {"sensor_area", &r.sensor_area},
                             {"sensor_deadband", &r.sensor_deadband},

@@ -10,6 +10,7 @@
 // `ccm compare SCENE --rigid BODY[,BODY...] [--observe COL,...] [--max-error E] [--out DIR]
 // [--json]`.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
 
@@ -22,6 +23,7 @@
 #include "app/study_commands.hpp"
 #include "engine/mesh/mesh_cache.hpp"
 #include "records/provenance/version.hpp"
+#include "rig_models/sim/run_parameters.hpp"
 
 namespace {
 
@@ -52,8 +54,8 @@ void add_rig_options(CLI::App* app, ccm::RigCommonArgs& a) {
   app->add_option("--mesh-scale", a.mesh_scale, "Every mesh size times this (2: coarser, faster)")
       ->capture_default_str();
   app->add_option("--set", a.set,
-                  "Run parameter name=value (mu_s, mu_k, track_friction, track_damping, "
-                  "spring_stiffness); repeatable");
+                  fmt::format("Run parameter name=value ({}); repeatable",
+                              fmt::join(ccm::rig::kRunParameterNames, ", ")));
   app->add_flag("--score-drive-trial", a.score_drive_trial,
                 "Open loop: score the run on the trial that drives it too (left out by default: "
                 "its V_i before contact and its contact onset are the run's input)");
@@ -270,8 +272,8 @@ int main(int argc, char** argv) {
   add_rig_options(rig_calibrate, rig_calibrate_args.common);
   rig_calibrate
       ->add_option("--params", rig_calibrate_args.params,
-                   "Parameters to tune, comma-separated: mu_s, mu_k, track_friction, "
-                   "track_damping, spring_stiffness")
+                   fmt::format("Parameters to tune, comma-separated: {}",
+                               fmt::join(ccm::rig::kRunParameterNames, ", ")))
       ->required();
   rig_calibrate->add_option("--bounds", rig_calibrate_args.bounds,
                             "Search range name=lower:upper (repeatable; defaults in "

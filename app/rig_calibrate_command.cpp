@@ -35,6 +35,10 @@ Range default_range(std::string_view name, const RigInputs& in) {
   if (name == "mu_s" || name == "mu_k") return fixed ? Range{0.0, 100.0} : Range{0.0, 1.0};
   if (name == "track_friction") return {0.0, 0.2};
   if (name == "track_damping") return {0.0, 5.0};
+  // The clamp: a decade either side of cases.toml's estimate, 0 to 20 % of critical damping.
+  if (name == "clamp_stiffness")
+    return {0.1 * in.cases.rig.clamp_stiffness.value, 10.0 * in.cases.rig.clamp_stiffness.value};
+  if (name == "clamp_damping") return {0.0, 4.0 * in.cases.rig.clamp_damping.value};
   const double K = in.cases.rig.spring_stiffness.value;
   return {0.5 * K, 2.0 * K};
 }

@@ -151,10 +151,10 @@ std::string parameter_text(const rig::RunParameters& p, const rig::RigCase& c, r
   std::string s;
   for (std::string_view name : rig::kRunParameterNames) {
     if (!rig::parameter_problem(name, c, d).empty()) continue;
-    if ((name == "mu_s" || name == "mu_k") && !p.mu_s) continue;  // exact fixed pin
+    if ((name == "mu_s" || name == "mu_k") && !p.mu_s) continue;  // a frictionless clamp
     s += fmt::format("{}{}={}", s.empty() ? "" : ";", name, rig::get_parameter(p, name));
   }
-  return s.empty() ? "pin=exact" : (p.mu_s ? s : "pin=exact;" + s);
+  return s;
 }
 
 }  // namespace ccm

@@ -34,6 +34,16 @@ std::string instability(const Instability& i) {
 
 // summary.toml's [comparison]: which trials scored the run and each channel's mean RMSE and
 // nRMSE over them, V_i also inside the measured contact windows.
+// How the artifact hangs on its pin (3.3.2, PJ.1).
+std::string pin_description(const rig::RigModelFacts& m) {
+  std::string s =
+      m.frictional_pin ? "on a pin with friction (eq. 3.2-3.6)" : "on a frictionless pin";
+  if (m.clamp_stiffness > 0.0)
+    s += fmt::format(", clamped: {:.4g} N m/rad, {:.4g} N m s/rad (PJ.1)", m.clamp_stiffness,
+                     m.clamp_damping);
+  return s;
+}
+
 std::string comparison_toml(const RigInputs& in, const RigRunOutcome& o) {
   std::vector<int> scored;
   for (const rig::MeasuredTrial& m : in.scored) scored.push_back(m.trial);
@@ -110,8 +120,7 @@ std::string run_table(const RigInputs& in, const RigRunOutcome& o) {
   row("artifact",
       fmt::format("mass {:.4g} kg, J {:.4g} kg m^2 about the pin, centre of mass "
                   "{:.4g} m below it; {}",
-                  m.artifact_mass, m.artifact_inertia, m.artifact_cm_depth,
-                  m.frictional_pin ? "on the pin (eq. 3.2-3.6)" : "pin nodes fixed (all DOF)"));
+                  m.artifact_mass, m.artifact_inertia, m.artifact_cm_depth, pin_description(m)));
   row("sensor",
       fmt::format("A_p {:.4g} m^2 (meshed patch {:.4g} m^2)", m.sensor_area, m.sensor_mesh_area));
   if (c.impactor == rig::ImpactorKind::flexible)

@@ -117,6 +117,8 @@ nlohmann::json model_json(const rig::RigModelFacts& m) {
           {"sensor_area", m.sensor_area},
           {"sensor_mesh_area", m.sensor_mesh_area},
           {"frictional_pin", m.frictional_pin},
+          {"clamp_stiffness", m.clamp_stiffness},
+          {"clamp_damping", m.clamp_damping},
           {"parts", parts}};
 }
 

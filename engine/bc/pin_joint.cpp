@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/core/parameter_ranges.hpp"
+
 namespace ccm {
 
 PinJoint::PinJoint(PinJointSpec spec, const std::vector<Vec3>& X) : spec_(std::move(spec)) {
@@ -13,6 +15,10 @@ PinJoint::PinJoint(PinJointSpec spec, const std::vector<Vec3>& X) : spec_(std::m
     throw std::invalid_argument("pin joint: the axis direction must be non-zero and finite");
   if (!(spec_.mu_s >= 0.0) || !(spec_.mu_k >= 0.0))
     throw std::invalid_argument("pin joint: friction coefficients must be >= 0");
+  for (const double v : {spec_.stiffness, spec_.damping})
+    if (!kClampRange.contains(v))
+      throw std::invalid_argument("pin joint: the clamp's stiffness and damping " +
+                                  kClampRange.problem(v));
   e_ = spec_.axis_direction / norm;
   double largest = 0.0;
   for (int n : spec_.nodes) {
@@ -52,6 +58,7 @@ void PinJoint::apply(State& s, double dt) {
     L += r.mass * r.radius * e_.cross(n).dot(v_end);  // (3.3) as angular momentum
     C += r.mass * r.radius * std::abs(n.dot(v_end));  // (3.2) as angular impulse capacity
   }
+  L -= dt * spec_.stiffness * phi_;  // (PJ.1) the clamp's spring at phi_n
   // (3.4): stick below mu_s, else slip with mu_k; kinetic friction never reverses the rotation.
   sticking_ = std::abs(L) <= spec_.mu_s * C;
   double L_new = 0.0;
@@ -59,7 +66,7 @@ void PinJoint::apply(State& s, double dt) {
     L_new = L - std::copysign(spec_.mu_k * C, L);
     if (L_new * L <= 0.0) L_new = 0.0;
   }
-  omega_ = L_new / J_ring_;
+  omega_ = L_new / (J_ring_ + dt * spec_.damping + dt * dt * spec_.stiffness);  // (PJ.1)
   phi_ += dt * omega_;
   place(s, dt);
 }

@@ -26,6 +26,16 @@
 // advances by dt omega (3.6 as printed, theta = v_t / r, is not dimensionally an angle;
 // docs/equations.md "Pin joint with Coulomb friction"). With mu_s = mu_k = 0 the reaction exerts no
 // torque about the axis: the angular momentum of the body about the axis is kept.
+//
+// A clamp (a pin held by a tightened screw that still lets it deflect, thesis 3.4.1) adds a
+// torsional spring k and damper c about the axis on the ring, torque -k phi - c omega. Both enter
+// the ring's update implicitly, so the stiff spring on the light ring never limits the step:
+//   L' = L - dt k phi_n                                  the spring's impulse at phi_n
+//   stick/slip (3.4) on L' as above, giving L''
+//   omega = L'' / (J_ring + dt c + dt^2 k)               k phi_{n+1} = k (phi_n + dt omega)  (PJ.1)
+// The spring's and the damper's torques act on the ring as its other reactions do, so their
+// work is booked with the constraint's; spring_energy() = k phi^2 / 2 is the part of it stored.
+// With k = c = 0 the update is the frictional pin's.
 #pragma once
 
 #include <vector>
@@ -38,15 +48,18 @@ struct PinJointSpec {
   std::vector<int> nodes;          // nodes held by the pin (sorted unique not required)
   Vec3 axis_point = Vec3::Zero();  // a point on the pin axis [m]
   Vec3 axis_direction = Vec3::UnitX();
-  double mu_s = 0.0;  // static coefficient
-  double mu_k = 0.0;  // kinetic coefficient
+  double mu_s = 0.0;       // static coefficient
+  double mu_k = 0.0;       // kinetic coefficient
+  double stiffness = 0.0;  // N m/rad, torsional spring of a clamp about the axis (PJ.1)
+  double damping = 0.0;    // N m s/rad, its damper
 };
 
 class PinJoint : public KinematicConstraint {
  public:
   // X: the reference positions of the model. Throws std::invalid_argument when there is no
   // node, the axis direction is zero or not finite, a coefficient is negative, or every node
-  // lies on the axis (no ring to turn).
+  // lies on the axis (no ring to turn), or the clamp's stiffness or damping is negative or not
+  // finite.
   PinJoint(PinJointSpec spec, const std::vector<Vec3>& X);
 
   std::string_view name() const override { return "pin_joint"; }
@@ -57,6 +70,7 @@ class PinJoint : public KinematicConstraint {
   double angle() const { return phi_; }   // rotation about e since t = 0 [rad]
   double rate() const { return omega_; }  // [rad/s]
   bool sticking() const { return sticking_; }
+  double spring_energy() const { return 0.5 * spec_.stiffness * phi_ * phi_; }  // J
   double ring_inertia() const { return J_ring_; }  // kg m^2 about the axis
   const PinJointSpec& spec() const { return spec_; }
 

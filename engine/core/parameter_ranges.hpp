@@ -38,6 +38,9 @@ inline constexpr ParameterRange kFrictionRange{0.0, std::numeric_limits<double>:
                                                false};
 inline constexpr ParameterRange kDampingRange{0.0, std::numeric_limits<double>::infinity(), true,
                                               false};
+// A pin's clamp (engine/bc/pin_joint.hpp, PJ.1): torsional stiffness and damping.
+inline constexpr ParameterRange kClampRange{0.0, std::numeric_limits<double>::infinity(), true,
+                                            false};
 // Poisson's ratio of an isotropic solid.
 inline constexpr ParameterRange kPoissonRange{-1.0, 0.5, false, false};
 

@@ -24,8 +24,9 @@ RigParameters read_rig(const StrictTable& root) {
   const StrictTable t = root.need_table("rig");
   t.allow_only({"hanging_mass", "impactor_mass", "spring_stiffness", "spring_length",
                 "spring_cylinder_diameter", "artifact_mass", "artifact_inertia_pivot",
-                "pivot_to_sensor", "sensor_area", "sensor_deadband", "pressure_rate", "angle_rate",
-                "velocity_rate", "low_pass_cutoff", "trials_per_case"});
+                "clamp_stiffness", "clamp_damping", "pivot_to_sensor", "sensor_area",
+                "sensor_deadband", "pressure_rate", "angle_rate", "velocity_rate",
+                "low_pass_cutoff", "trials_per_case"});
   RigParameters r;
   r.hanging_mass = read_sourced(t, "hanging_mass", "kg");
   r.impactor_mass = read_sourced(t, "impactor_mass", "kg");
@@ -34,6 +35,8 @@ RigParameters read_rig(const StrictTable& root) {
   r.spring_cylinder_diameter = read_sourced(t, "spring_cylinder_diameter", "m");
   r.artifact_mass = read_sourced(t, "artifact_mass", "kg");
   r.artifact_inertia_pivot = read_sourced(t, "artifact_inertia_pivot", "kg m^2");
+  r.clamp_stiffness = read_sourced(t, "clamp_stiffness", "N m/rad");
+  r.clamp_damping = read_sourced(t, "clamp_damping", "N m s/rad", {0.0, false});
   r.pivot_to_sensor = read_sourced(t, "pivot_to_sensor", "m");
   r.sensor_area = read_sourced(t, "sensor_area", "m^2");
   r.sensor_deadband = read_sourced(t, "sensor_deadband", "kPa");
@@ -130,8 +133,8 @@ RigCase read_case(const StrictTable& t) {
     c.pivot_friction = read_friction(t);
   else if (t.has("pivot_friction"))
     t.fail("pivot_friction",
-           "a fixed artifact is constrained exactly (thesis 3.3.2); "
-           "pivot friction is for free artifacts");
+           "a fixed artifact is held by the pin's clamp ([rig] clamp_stiffness, "
+           "clamp_damping); pivot friction is for free artifacts");
   return c;
 }
 

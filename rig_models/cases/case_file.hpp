@@ -2,7 +2,7 @@
 // Every parameter is { value, unit, source }: the unit must be the one expected, the source
 // must be given. The 12 cases must be those of thesis Table 3.2, each code agreeing with its
 // number, impactor, artifact and target speed; free artifacts carry pivot friction, fixed
-// ones not (they are constrained exactly, thesis 3.3.2).
+// ones not (they are held by the pin's clamp, [rig] clamp_stiffness and clamp_damping).
 #pragma once
 
 #include <filesystem>

@@ -21,6 +21,8 @@ std::string parameters_section(const RigCaseTable& table) {
       {"spring cylinder diameter", &r.spring_cylinder_diameter},
       {"artifact mass", &r.artifact_mass},
       {"artifact J about pivot", &r.artifact_inertia_pivot},
+      {"pin clamp stiffness", &r.clamp_stiffness},
+      {"pin clamp damping", &r.clamp_damping},
       {"pivot to sensor", &r.pivot_to_sensor},
       {"sensor area A_p", &r.sensor_area},
       {"sensor deadband", &r.sensor_deadband},
@@ -51,7 +53,7 @@ std::string parameters_section(const RigCaseTable& table) {
 }
 
 std::string friction_cell(const RigCase& c) {
-  if (!c.pivot_friction) return "exact (fixed)";
+  if (!c.pivot_friction) return "clamped (rig table)";
   return fmt::format("mu_s {:g}, mu_k {:g}", c.pivot_friction->mu_s, c.pivot_friction->mu_k);
 }
 

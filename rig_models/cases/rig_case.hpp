@@ -26,6 +26,8 @@ struct RigParameters {
   SourcedValue spring_cylinder_diameter;  // m, the cylinder that stands in for the spring
   SourcedValue artifact_mass;             // kg, the rotating artifact segment
   SourcedValue artifact_inertia_pivot;    // kg m^2, J about the centre of rotation
+  SourcedValue clamp_stiffness;           // N m/rad, the Fixed artifact's pin clamp (torsional)
+  SourcedValue clamp_damping;             // N m s/rad, its damper
   SourcedValue pivot_to_sensor;           // m, centre of rotation to the contact point
   SourcedValue sensor_area;               // m^2, A_p of the pressure sensor (eq. 3.8)
   SourcedValue sensor_deadband;           // kPa, pressures below read 0

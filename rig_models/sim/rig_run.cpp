@@ -53,7 +53,7 @@ struct Samples {
 constexpr const char* kSensorSurface = "envelope/sensor";
 std::string sensor_pressure_column() { return fmt::format("contact.{}.pressure", kSensorSurface); }
 
-RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, bool frictional_pin) {
+RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, const PinJointSpec& pin) {
   RigModelFacts f;
   f.n_nodes = rig.model.mesh.n_nodes();
   f.n_elements = rig.model.mesh.n_elements();
@@ -67,9 +67,24 @@ RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, bool fric
   f.spring_stiffness = rig.spring_stiffness;
   f.pin_nodes = static_cast<int>(rig.pin_nodes.size());
   f.guide_nodes = static_cast<int>(rig.guide_nodes.size());
-  f.frictional_pin = frictional_pin;
+  f.frictional_pin = pin.mu_s > 0.0 || pin.mu_k > 0.0;
+  f.clamp_stiffness = pin.stiffness;
+  f.clamp_damping = pin.damping;
   f.parts = rig.parts;
   return f;
+}
+
+// The artifact's pin (3.3.2): a Free artifact turns on it against Coulomb friction (3.2-3.6); a
+// Fixed one is held by the screw's clamp, a torsional spring and damper (PJ.1), and has friction
+// only when it is given (3.4.1's frictional "fixed" pin).
+PinJointSpec pin_of(const RigModel& rig, const RigCase& c, const RunParameters& par) {
+  PinJointSpec s{rig.pin_nodes, rig.pin_point, rig.pin_axis, par.mu_s.value_or(0.0),
+                 par.mu_k.value_or(0.0)};
+  if (c.artifact == ArtifactKind::fixed) {
+    s.stiffness = par.clamp_stiffness;
+    s.damping = par.clamp_damping;
+  }
+  return s;
 }
 
 // The raw channels (3.3.3): V_i of the two pearls, theta_a (3.7), and the DCR's sensor pressure
@@ -130,10 +145,9 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   out.window = run_window(table, c, {req.drive, req.trial, req.start, req.end},
                           weight_settings(table, par, gravity));
   const RunWindow& w = out.window;
-  const bool pin = c.artifact == ArtifactKind::free || par.mu_s.has_value();
   RigModelRequest mr;
   mr.impactor = c.impactor;
-  mr.artifact = pin ? ArtifactKind::free : ArtifactKind::fixed;
+  mr.artifact = ArtifactKind::free;  // on the pin joint below: free, or Fixed on its clamp
   mr.gap = w.gap;
   mr.mesh_scale = req.mesh_scale;
   mr.spring_stiffness = par.spring_stiffness;
@@ -154,12 +168,8 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
                                              rig.track, weight_settings(table, par, gravity));
   }
   SlideConstraint guide(rig.guide_nodes, rig.track);
-  std::unique_ptr<PinJoint> pin_joint;
-  if (pin)
-    pin_joint =
-        std::make_unique<PinJoint>(PinJointSpec{rig.pin_nodes, rig.pin_point, rig.pin_axis,
-                                                par.mu_s.value_or(0.0), par.mu_k.value_or(0.0)},
-                                   rig.model.mesh.X);
+  const PinJointSpec pin_spec = pin_of(rig, c, par);
+  PinJoint pin_joint(pin_spec, rig.model.mesh.X);
   dcr::DcrSettings contact;
   contact.surfaces = rig.contact_surfaces;
   contact.friction = setup.geometry.contact.friction.value;
@@ -178,7 +188,7 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   opt.time.output_interval = table.simulation.output_interval.value;
   opt.contact = &dcr;
   opt.constraints.push_back(&guide);
-  if (pin_joint) opt.constraints.push_back(pin_joint.get());
+  opt.constraints.push_back(&pin_joint);
   if (weight) opt.loads.push_back(weight.get());
   opt.progress = req.progress;
   const auto angle = static_cast<size_t>(rig.angle_node);
@@ -191,11 +201,11 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
     row.clear();
     dcr.append_history(st, row);  // closes the output interval of the contact output
     s.pressure_pa.push_back(row.at(pressure_at));
-    s.pin_angle.push_back(pin_joint ? pin_joint->angle() : 0.0);
+    s.pin_angle.push_back(pin_joint.angle());
   };
   if (req.instrument) req.instrument(rig.model, opt);
   out.summary = run_explicit(rig.model, opt);
-  out.model = facts_of(rig, table, pin);
+  out.model = facts_of(rig, table, pin_spec);
   out.raw = raw_histories(s, rig.track, rig.sensor_mesh_area);
   out.channels = sensed_channels(out.raw, table, req.trial);
   return out;

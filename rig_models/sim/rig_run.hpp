@@ -38,8 +38,10 @@ struct RigModelFacts {
   double sensor_mesh_area = 0.0, sensor_area = 0.0;
   double spring_modulus = 0.0, spring_stiffness = 0.0;
   int pin_nodes = 0, guide_nodes = 0;
-  bool frictional_pin = false;  // a pin joint with friction holds the artifact
-  std::vector<RigPart> parts;   // material, mass and elements of each part
+  bool frictional_pin = false;   // the artifact's pin has friction
+  double clamp_stiffness = 0.0;  // N m/rad, the Fixed artifact's pin clamp (0: free)
+  double clamp_damping = 0.0;    // N m s/rad
+  std::vector<RigPart> parts;    // material, mass and elements of each part
 };
 
 // The raw simulated histories at the output samples (trial time).

@@ -25,6 +25,8 @@ RunParameters default_parameters(const RigCaseTable& table, const RigCase& c) {
   p.track_friction = table.drive.track_friction.value;
   p.track_damping = table.drive.track_damping.value;
   p.spring_stiffness = table.rig.spring_stiffness.value;
+  p.clamp_stiffness = table.rig.clamp_stiffness.value;
+  p.clamp_damping = table.rig.clamp_damping.value;
   return p;
 }
 
@@ -41,6 +43,9 @@ std::string parameter_problem(std::string_view name, const RigCase& c, DriveKind
         name);
   if (name == "spring_stiffness" && c.impactor != ImpactorKind::flexible)
     return fmt::format("'{}' needs a flexible impactor; {} has a rigid one", name, c.code);
+  if ((name == "clamp_stiffness" || name == "clamp_damping") && c.artifact != ArtifactKind::fixed)
+    return fmt::format("'{}' holds a Fixed artifact's pin; {} turns freely on its pin", name,
+                       c.code);
   return {};
 }
 
@@ -50,6 +55,8 @@ double get_parameter(const RunParameters& p, std::string_view name) {
   if (name == "track_friction") return p.track_friction;
   if (name == "track_damping") return p.track_damping;
   if (name == "spring_stiffness") return p.spring_stiffness;
+  if (name == "clamp_stiffness") return p.clamp_stiffness;
+  if (name == "clamp_damping") return p.clamp_damping;
   throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
 }
 
@@ -65,6 +72,10 @@ void set_parameter(RunParameters& p, std::string_view name, double value) {
     p.track_damping = value;
   } else if (name == "spring_stiffness") {
     p.spring_stiffness = value;
+  } else if (name == "clamp_stiffness") {
+    p.clamp_stiffness = value;
+  } else if (name == "clamp_damping") {
+    p.clamp_damping = value;
   } else {
     throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
   }
@@ -72,7 +83,9 @@ void set_parameter(RunParameters& p, std::string_view name, double value) {
 
 std::string describe(const RunParameters& p, const RigCase& c, DriveKind drive) {
   std::string s = p.mu_s ? fmt::format("pin mu_s {:g}, mu_k {:g}", *p.mu_s, *p.mu_k)
-                         : std::string("pin exact (fixed)");
+                         : std::string("pin frictionless");
+  if (c.artifact == ArtifactKind::fixed)
+    s += fmt::format(", clamp {:g} N m/rad, {:g} N m s/rad", p.clamp_stiffness, p.clamp_damping);
   if (drive == DriveKind::physical)
     s += fmt::format(", track mu {:g}, c {:g} N s/m", p.track_friction, p.track_damping);
   if (c.impactor == ImpactorKind::flexible) s += fmt::format(", K_s {:g} N/m", p.spring_stiffness);

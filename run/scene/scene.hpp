@@ -130,6 +130,8 @@ struct JointSpec {
   Vec3 point = Vec3::Zero();      // pin: a point on the axis [m]
   Vec3 axis = Vec3::UnitX();      // pin: the axis; slide: the direction of travel (non-zero)
   double mu_s = 0.0, mu_k = 0.0;  // pin: static and kinetic friction coefficients
+  double stiffness = 0.0;         // pin: the clamp's torsional spring [N m/rad] (pin_joint.hpp)
+  double damping = 0.0;           // pin: its damper [N m s/rad]
   SourceRef where;
 };
 

@@ -502,7 +502,8 @@ std::vector<std::unique_ptr<KinematicConstraint>> build_joints(const Scene& scen
     try {
       if (j.kind == JointKind::pin)
         joints.push_back(std::make_unique<PinJoint>(
-            PinJointSpec{nodes, j.point, j.axis, j.mu_s, j.mu_k}, model.mesh.X));
+            PinJointSpec{nodes, j.point, j.axis, j.mu_s, j.mu_k, j.stiffness, j.damping},
+            model.mesh.X));
       else
         joints.push_back(std::make_unique<SlideConstraint>(nodes, j.axis));
     } catch (const std::invalid_argument& e) {

@@ -526,15 +526,26 @@ void parse_fixed(const Table& root, Scene& scene) {
   for (const Table& t : root.tables("fixed")) scene.fixed.push_back(parse_fixed_one(t));
 }
 
-// [[joints]]: kind = "pin" (point, axis, mu_s, mu_k) or "slide" (direction) on selected nodes.
+// A pin's clamp: stiffness and damping in kClampRange (default 0: no clamp).
+double clamp_value(const Table& t, const char* key) {
+  const double v = t.get_or(key, 0.0);
+  if (!kClampRange.contains(v)) t.fail(key, kClampRange.problem(v));
+  return v;
+}
+
+// [[joints]]: kind = "pin" (point, axis, mu_s, mu_k, the clamp's stiffness and damping) or
+// "slide" (direction) on selected nodes.
 JointSpec parse_joint(const Table& t) {
   const std::string kind = t.need<std::string>("kind");
   JointSpec j;
   if (kind == "pin") {
-    t.allow_only({"kind", "body", "node_set", "box", "plane", "point", "axis", "mu_s", "mu_k"});
+    t.allow_only({"kind", "body", "node_set", "box", "plane", "point", "axis", "mu_s", "mu_k",
+                  "stiffness", "damping"});
     j.point = t.need<Vec3>("point");
     j.axis = non_zero(t, "axis", t.need<Vec3>("axis"));
     parse_pin_friction(t, j.mu_s, j.mu_k);
+    j.stiffness = clamp_value(t, "stiffness");
+    j.damping = clamp_value(t, "damping");
   } else if (kind == "slide") {
     t.allow_only({"kind", "body", "node_set", "box", "plane", "direction"});
     j.kind = JointKind::slide;

@@ -81,6 +81,11 @@ TEST_CASE("ccm rig run --json prints the run and its comparison as the store hol
         stored_number(c, "SELECT max_energy_error FROM rig_runs"));
   CHECK(j["window"]["start"].get<double>() == Approx(0.0595));
   CHECK(j["model"]["n_elements"] == stored_number(c, "SELECT n_elements FROM rig_runs"));
+  // The Fixed artifact hangs on its clamp, as cases.toml gives it, without friction.
+  const rig::RigCaseTable table = rig::read_case_table(kSourceCases);
+  CHECK(j["model"]["clamp_stiffness"].get<double>() == table.rig.clamp_stiffness.value);
+  CHECK(j["model"]["clamp_damping"].get<double>() == table.rig.clamp_damping.value);
+  CHECK(j["model"]["frictional_pin"] == false);
   const nlohmann::json& cmp = j["comparison"];
   CHECK(cmp["scored_trials"] == nlohmann::json({1, 3}));
   CHECK(cmp["left_out_trial"] == 2);

@@ -248,6 +248,13 @@ TEST_CASE("ccm rig: bad input exits 2 naming the defect, before anything is writ
                              dir);
   CHECK(spring.err.find("'spring_stiffness' needs a flexible impactor; RX025 has a rigid one") !=
         std::string::npos);
+  const Shell clamp = shell(rig(fmt::format("run RF025 --drive physical --set "
+                                            "clamp_stiffness=2000 --out '{}'",
+                                            out.string())),
+                            dir);
+  CHECK(clamp.status == 2);
+  CHECK(clamp.err.find("'clamp_stiffness' holds a Fixed artifact's pin; RF025 turns freely on "
+                       "its pin") != std::string::npos);
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(dir.path / "rig.sqlite"));
   if (!have_dev_data()) return;
@@ -318,9 +325,10 @@ TEST_CASE("ccm rig: a logger clock glitch, or no trial to score, exits 2 before 
 }
 
 // The full 12 cases of Table 3.2 on rig_models/geometry.toml over the whole dev trials (open
-// loop, trial 2), as in the rig performance table of docs/benchtop-rig.md: every one must complete with the
-// automatic time step (the thesis's runs at 0.5 and 1.0 m/s went unstable at contact, 4.2.2),
-// its energy balance within the monitor's 5 %, scored on its 2 trials other than the driving one.
+// loop, trial 2), as in the rig performance table of docs/benchtop-rig.md: every one must complete
+// with the automatic time step (the thesis's runs at 0.5 and 1.0 m/s went unstable at
+// contact, 4.2.2), its energy balance within the monitor's 5 %, scored on its 2 trials other than
+// the driving one.
 TEST_CASE("ccm rig run: all 12 cases complete (full trials)", "[validation][rig-full]") {
   if (!have_dev_data()) return;
   test::TempDir dir;

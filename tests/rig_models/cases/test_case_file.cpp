@@ -105,10 +105,11 @@ TEST_CASE("rig cases: the printed table has every case and every parameter with 
           "[rig]") {
   const RigCaseTable table = read_case_table(kCaseFile);
   const std::string text = format_case_table(table);
-  // heading, 15 rig rows, E_s; drive heading and its 9 rows; blank, header, 12 cases
-  CHECK(std::count(text.begin(), text.end(), '\n') == 1 + 15 + 1 + 1 + 9 + 1 + 1 + 12);
+  // heading, 17 rig rows, E_s; drive heading and its 9 rows; blank, header, 12 cases
+  CHECK(std::count(text.begin(), text.end(), '\n') == 1 + 17 + 1 + 1 + 9 + 1 + 1 + 12);
   CHECK_THAT(text, Catch::Contains("string stiffness                   5000 N/m     assumption"));
-  CHECK_THAT(text, Catch::Contains(" 1  RX025         0.25  rigid     fixed     exact (fixed)"));
+  CHECK_THAT(text,
+             Catch::Contains(" 1  RX025         0.25  rigid     fixed     clamped (rig table)"));
   CHECK_THAT(text,
              Catch::Contains("12  FF100         1.00  flexible  free      mu_s 0.4, mu_k 0.7"));
   CHECK_THAT(text, Catch::Contains("spring stiffness K_s               1895 N/m     thesis"));
@@ -187,8 +188,9 @@ TEST_CASE("rig cases: duplicated, missing, friction where it does not belong", "
   CHECK(error_of(with(good, "artifact = \"fixed\"",
                       "artifact = \"fixed\"\npivot_friction = { mu_s = 1.0, mu_k = 0.5, "
                       "source = \"x\" }")) ==
-        fmt::format("cases.toml:{}: cases[0].pivot_friction: a fixed artifact is constrained "
-                    "exactly (thesis 3.3.2); pivot friction is for free artifacts",
+        fmt::format("cases.toml:{}: cases[0].pivot_friction: a fixed artifact is held by the "
+                    "pin's clamp ([rig] clamp_stiffness, clamp_damping); pivot friction is for "
+                    "free artifacts",
                     line_of(good, "artifact = \"fixed\"") + 1));
   const int l_rf025 = line_of(good, "[[cases]]\nnumber = 7");
   CHECK(error_of(with(good,

@@ -131,6 +131,18 @@ TEST_CASE("joints: what cannot be a joint is refused with file, line and key", "
                                             "axis = [0.0, 1.0, 0.0]\nmu_s = 0.1\nmu_k = 0.2\n"
                                             "node_set = \"cube/boundary\"\n"),
              Contains("joints[0].mu_k") && Contains("at most mu_s"));
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"pin\"\npoint = [0.0, 0.0, 0.0]\n"
+                                            "axis = [0.0, 1.0, 0.0]\nstiffness = -5.0\n"
+                                            "node_set = \"cube/boundary\"\n"),
+             Contains("s.toml:17: joints[0].stiffness") && Contains(">= 0 (got -5)"));
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"pin\"\npoint = [0.0, 0.0, 0.0]\n"
+                                            "axis = [0.0, 1.0, 0.0]\ndamping = nan\n"
+                                            "node_set = \"cube/boundary\"\n"),
+             Contains("joints[0].damping"));
+  CHECK_THAT(
+      test::assembly_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
+                                     "0.0]\nnode_set = \"cube/boundary\"\nstiffness = 1.0\n"),
+      Contains("unknown key 'stiffness'"));
   CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
                                             "0.0]\nnode_set = \"cube/boundary\"\naxis = [1.0, 0.0, "
                                             "0.0]\n"),
