@@ -11,6 +11,7 @@
 #include "records/content_hash.hpp"
 #include "rig_models/cases/case_code.hpp"
 #include "rig_models/cases/case_file.hpp"
+#include "rig_models/cases/trial_rig_file.hpp"
 #include "rig_models/compare/case_comparison.hpp"
 #include "rig_models/core/rig_error.hpp"
 #include "rig_models/geometry/geometry_file.hpp"
@@ -51,6 +52,18 @@ void apply_settings(const std::vector<std::string>& set, const rig::RigCase& c,
     if (v < 0.0) throw std::invalid_argument(fmt::format("--set {}: must be >= 0", s));
     rig::set_parameter(p, name, v);
   }
+}
+
+// The rig the trials were measured on (--data's rig.toml): its values replace the case file's,
+// and its sensor patch takes the trials' sensor area.
+void apply_trial_rig(const RigCommonArgs& args, RigInputs& in) {
+  if (!args.data) return;
+  const double area = in.cases.rig.sensor_area.value;
+  const auto file = rig::apply_trial_rig_file(*args.data, in.cases.rig);
+  if (!file) return;
+  in.trial_rig_text = file->text;
+  if (in.cases.rig.sensor_area.value != area)
+    rig::fit_sensor_patch(in.geometry, in.cases.rig.sensor_area.value);
 }
 
 // The case's trials from the folder (every file read and checked), and the driving one.
@@ -118,6 +131,7 @@ RigInputs read_rig_inputs(const RigCommonArgs& args) {
   in.cases = rig::parse_case_table(in.cases_text, args.cases);
   in.geometry_text = file_text(args.geometry);
   in.geometry = rig::parse_geometry(in.geometry_text, args.geometry);
+  apply_trial_rig(args, in);
   rig::check_against_cases(in.geometry, in.cases.rig);
   if (!rig::is_case_code(args.case_code))
     throw std::invalid_argument(
@@ -141,7 +155,7 @@ RigInputs read_rig_inputs(const RigCommonArgs& args) {
         "--trial N), or use --drive physical");
   choose_scored_trials(args, in);
   check_out(args.out);
-  in.cases_hash = study::fnv1a64(in.cases_text);
+  in.cases_hash = study::fnv1a64(in.cases_text + in.trial_rig_text);
   in.geometry_hash = study::fnv1a64(in.geometry_text);
   in.db = args.db ? *args.db : args.out ? *args.out / "rig.sqlite" : fs::path("rig.sqlite");
   return in;

@@ -43,6 +43,7 @@ inline constexpr int kDefaultTrial = 2;
 
 struct RigInputs {
   std::string cases_text, geometry_text;
+  std::string trial_rig_text;  // --data's rig.toml (trial_rig_file.hpp), hashed with the cases
   rig::RigCaseTable cases;
   rig::RigGeometry geometry;
   const rig::RigCase* rig_case = nullptr;

@@ -20,35 +20,55 @@ namespace fs = std::filesystem;
 
 constexpr int kCaseCount = 12;
 
-RigParameters read_rig(const StrictTable& root) {
-  const StrictTable t = root.need_table("rig");
-  t.allow_only({"hanging_mass", "impactor_mass", "spring_stiffness", "spring_length",
-                "spring_cylinder_diameter", "artifact_mass", "artifact_inertia_pivot",
-                "clamp_stiffness", "clamp_damping", "pivot_to_sensor", "sensor_area",
-                "sensor_deadband", "pressure_rate", "angle_rate", "velocity_rate",
-                "low_pass_cutoff", "trials_per_case"});
-  RigParameters r;
-  r.hanging_mass = read_sourced(t, "hanging_mass", "kg");
-  r.impactor_mass = read_sourced(t, "impactor_mass", "kg");
-  r.spring_stiffness = read_sourced(t, "spring_stiffness", "N/m");
-  r.spring_length = read_sourced(t, "spring_length", "m");
-  r.spring_cylinder_diameter = read_sourced(t, "spring_cylinder_diameter", "m");
-  r.artifact_mass = read_sourced(t, "artifact_mass", "kg");
-  r.artifact_inertia_pivot = read_sourced(t, "artifact_inertia_pivot", "kg m^2");
-  r.clamp_stiffness = read_sourced(t, "clamp_stiffness", "N m/rad");
-  r.clamp_damping = read_sourced(t, "clamp_damping", "N m s/rad", {0.0, false});
-  r.pivot_to_sensor = read_sourced(t, "pivot_to_sensor", "m");
-  r.sensor_area = read_sourced(t, "sensor_area", "m^2");
-  r.sensor_deadband = read_sourced(t, "sensor_deadband", "kPa");
-  r.pressure_rate = read_sourced(t, "pressure_rate", "Hz");
-  r.angle_rate = read_sourced(t, "angle_rate", "Hz");
-  r.velocity_rate = read_sourced(t, "velocity_rate", "Hz");
-  r.low_pass_cutoff = read_sourced(t, "low_pass_cutoff", "Hz");
-  r.trials_per_case = read_sourced(t, "trials_per_case", "count");
+// Every key of [rig]: its member, unit and bound; read alike from cases.toml (all required) and
+// from a trial folder's rig file (any of them, trial_rig_file.hpp).
+struct RigKey {
+  std::string_view key, unit;
+  SourcedValue RigParameters::*member;
+  ValueBound bound;
+};
+
+constexpr ValueBound kPositive{};
+constexpr ValueBound kNonNegative{0.0, false};
+constexpr std::array<RigKey, 17> kRigKeys = {{
+    {"hanging_mass", "kg", &RigParameters::hanging_mass, kPositive},
+    {"impactor_mass", "kg", &RigParameters::impactor_mass, kPositive},
+    {"spring_stiffness", "N/m", &RigParameters::spring_stiffness, kPositive},
+    {"spring_length", "m", &RigParameters::spring_length, kPositive},
+    {"spring_cylinder_diameter", "m", &RigParameters::spring_cylinder_diameter, kPositive},
+    {"artifact_mass", "kg", &RigParameters::artifact_mass, kPositive},
+    {"artifact_inertia_pivot", "kg m^2", &RigParameters::artifact_inertia_pivot, kPositive},
+    {"clamp_stiffness", "N m/rad", &RigParameters::clamp_stiffness, kPositive},
+    {"clamp_damping", "N m s/rad", &RigParameters::clamp_damping, kNonNegative},
+    {"pivot_to_sensor", "m", &RigParameters::pivot_to_sensor, kPositive},
+    {"sensor_area", "m^2", &RigParameters::sensor_area, kPositive},
+    {"sensor_deadband", "kPa", &RigParameters::sensor_deadband, kPositive},
+    {"pressure_rate", "Hz", &RigParameters::pressure_rate, kPositive},
+    {"angle_rate", "Hz", &RigParameters::angle_rate, kPositive},
+    {"velocity_rate", "Hz", &RigParameters::velocity_rate, kPositive},
+    {"low_pass_cutoff", "Hz", &RigParameters::low_pass_cutoff, kPositive},
+    {"trials_per_case", "count", &RigParameters::trials_per_case, kPositive},
+}};
+
+std::vector<std::string_view> rig_key_names() {
+  std::vector<std::string_view> names;
+  for (const RigKey& k : kRigKeys) names.push_back(k.key);
+  return names;
+}
+
+void check_low_pass(const StrictTable& t, const RigParameters& r) {
   if (2.0 * r.low_pass_cutoff.value > r.pressure_rate.value)
     t.fail("low_pass_cutoff", fmt::format("{} Hz is above the Nyquist frequency of the {} Hz "
                                           "pressure sensor",
                                           r.low_pass_cutoff.value, r.pressure_rate.value));
+}
+
+RigParameters read_rig(const StrictTable& root) {
+  const StrictTable t = root.need_table("rig");
+  t.allow_only(rig_key_names());
+  RigParameters r;
+  for (const RigKey& k : kRigKeys) r.*k.member = read_sourced(t, k.key, k.unit, k.bound);
+  check_low_pass(t, r);
   return r;
 }
 
@@ -184,6 +204,13 @@ RigCaseTable parse_case_table(std::string_view text, const fs::path& source) {
   table.simulation = read_simulation(fields);
   table.cases = read_cases(fields);
   return table;
+}
+
+void override_rig(const StrictTable& t, RigParameters& rig) {
+  t.allow_only(rig_key_names());
+  for (const RigKey& k : kRigKeys)
+    if (t.has(k.key)) rig.*k.member = read_sourced(t, k.key, k.unit, k.bound);
+  check_low_pass(t, rig);
 }
 
 RigCaseTable read_case_table(const fs::path& file) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "config/strict_table.hpp"
 #include "rig_models/cases/rig_case.hpp"
 
 namespace ccm::rig {
@@ -17,6 +18,10 @@ RigCaseTable parse_case_table(std::string_view text, const std::filesystem::path
 
 // Reads and parses a case file; throws RigInputError when it cannot be read or is wrong.
 RigCaseTable read_case_table(const std::filesystem::path& file);
+
+// Sets every [rig] key that `table` gives (each { value, unit, source }, checked as in a case
+// file) in `rig`, leaving the others; throws RigInputError naming the key.
+void override_rig(const StrictTable& table, RigParameters& rig);
 
 // Table 3.2's code of case `number` (1..12): RX025 RX050 RX100 FX... RF... FF...
 std::string table_3_2_code(int number);

@@ -187,6 +187,17 @@ RigGeometry read_geometry(const fs::path& file) {
   return parse_geometry(text.str(), file);
 }
 
+void fit_sensor_patch(RigGeometry& geometry, double area) {
+  ArtifactGeometry& a = geometry.artifact;
+  const double scale = std::sqrt(area / (a.sensor_width.value * a.sensor_height.value));
+  if (std::abs(scale - 1.0) < 1e-12) return;
+  const std::string why = fmt::format("; scaled by {:.6g} to the trials' sensor area", scale);
+  a.sensor_width.value *= scale;
+  a.sensor_width.source += why;
+  a.sensor_height.value *= scale;
+  a.sensor_height.source += why;
+}
+
 void check_against_cases(const RigGeometry& geometry, const RigParameters& rig) {
   const ArtifactGeometry& a = geometry.artifact;
   const double depth = rig.pivot_to_sensor.value;
@@ -206,7 +217,11 @@ void check_against_cases(const RigGeometry& geometry, const RigParameters& rig) 
          fmt::format("the sensor patch is {:.4g} m^2, cases.toml sensor_area is {:.4g} m^2", area,
                      rig.sensor_area.value));
   if (a.sensor_width.value > 0.5 * std::acos(-1.0) * a.envelope_outer_diameter.value / 2)
-    fail("artifact.sensor_width", "the sensor patch must fit on the struck half of the envelope");
+    fail("artifact.sensor_width",
+         fmt::format("the sensor patch ({:.4g} m wide) must fit on the struck half of the "
+                     "envelope ({:.4g} m of arc)",
+                     a.sensor_width.value,
+                     0.5 * std::acos(-1.0) * a.envelope_outer_diameter.value / 2));
 }
 
 }  // namespace ccm::rig

@@ -15,6 +15,10 @@ namespace ccm::rig {
 RigGeometry parse_geometry(std::string_view text, const std::filesystem::path& source);
 RigGeometry read_geometry(const std::filesystem::path& file);
 
+// Scales the sensor patch (artifact.sensor_width and sensor_height, its aspect kept) to `area`
+// [m^2]: a trial folder's rig file may give its own sensor area (trial_rig_file.hpp).
+void fit_sensor_patch(RigGeometry& geometry, double area);
+
 // The checks that involve the case file too: the contact point (cases.toml pivot_to_sensor)
 // must lie on the envelope, below the core's split and within the sensor's reach of the lower
 // stabilizer's plane, and the sensor patch's area must be cases.toml sensor_area (1 %).

@@ -101,4 +101,42 @@ TEST_CASE("ccm rig run --json prints the run and its comparison as the store hol
   }
 }
 
+TEST_CASE("ccm rig run: a rig.toml beside the trials sets their sensor's area and deadband",
+          "[cli][rig][rig_file][heavy]") {
+  // The dev trials copied with a rig file: a 30 x 30 mm sensor patch and a 74 kPa deadband. The
+  // run meshes the smaller patch (its mesh area within a tenth of the given one: the patch is
+  // the envelope's triangles whose centroids fall inside it) and reads the measured contact
+  // onset at the higher threshold (above trial 2's first contact sample, 72.8 kPa), one sample
+  // later than at the case file's 1 kPa.
+  test::TempDir dir;
+  const fs::path data = dir.path / "trials";
+  fs::create_directories(data);
+  for (const auto& e : fs::directory_iterator(fs::path(CCM_SOURCE_DIR) / "tests/data/rig-dev"))
+    if (e.path().extension() == ".csv") fs::copy_file(e.path(), data / e.path().filename());
+  const std::string run =
+      "rig run RX025 --geometry '" +
+      (fs::path(CCM_SOURCE_DIR) / "tests/rig_models/data/short_geometry.toml").string() +
+      "' --start 0.0595 --end 0.0705 --json --data '" + data.string() + "'";
+  const auto plain = test::run_ccm(run + " --db '" + (dir.path / "a.sqlite").string() + "'", dir);
+  INFO(plain.err);
+  REQUIRE(plain.status == 0);
+  dir.write("trials/rig.toml",
+            "[rig]\nsensor_area = { value = 9e-4, unit = \"m^2\", source = \"30 mm mat\" }\n"
+            "sensor_deadband = { value = 74.0, unit = \"kPa\", source = \"threshold\" }\n");
+  const auto r = test::run_ccm(run + " --db '" + (dir.path / "b.sqlite").string() + "'", dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const nlohmann::json a = nlohmann::json::parse(plain.out), b = nlohmann::json::parse(r.out);
+  CHECK(b["model"]["sensor_area"].get<double>() == 9e-4);
+  CHECK(b["model"]["sensor_mesh_area"].get<double>() == Approx(9e-4).epsilon(0.1));
+  CHECK(a["model"]["sensor_mesh_area"].get<double>() > 1.3e-3);
+  CHECK(b["window"]["measured_onset"].get<double>() > a["window"]["measured_onset"].get<double>());
+  // A defect in the rig file is refused before any run, naming it.
+  dir.write("trials/rig.toml", "[rig]\nsensor_area = 1.0\n");
+  const auto bad = test::run_ccm(run + " --db '" + (dir.path / "c.sqlite").string() + "'", dir);
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("rig.toml:2: rig.sensor_area") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.path / "c.sqlite"));
+}
+
 }  // namespace ccm
