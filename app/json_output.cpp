@@ -45,9 +45,9 @@ nlohmann::json rig_parameters_json(const rig::RigParameters& r) {
 
 nlohmann::json drive_parameters_json(const rig::DriveParameters& d) {
   return sourced_rows_json({{"velocity_smoothing", &d.velocity_smoothing},
+                            {"track_static_friction", &d.track_static_friction},
                             {"track_friction", &d.track_friction},
                             {"track_damping", &d.track_damping},
-                            {"friction_regularisation", &d.friction_regularisation},
                             {"string_stiffness", &d.string_stiffness},
                             {"string_damping", &d.string_damping}});
 }

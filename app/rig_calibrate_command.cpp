@@ -33,7 +33,7 @@ struct Range {
 Range default_range(std::string_view name, const RigInputs& in) {
   const bool fixed = in.rig_case->artifact == rig::ArtifactKind::fixed;
   if (name == "mu_s" || name == "mu_k") return fixed ? Range{0.0, 100.0} : Range{0.0, 1.0};
-  if (name == "track_friction") return {0.0, 0.2};
+  if (name == "track_friction" || name == "track_static_friction") return {0.0, 0.2};
   if (name == "track_damping") return {0.0, 5.0};
   // The clamp: a decade either side of cases.toml's estimate, 0 to 20 % of critical damping.
   if (name == "clamp_stiffness")
@@ -69,7 +69,7 @@ std::vector<rig::SearchParameter> search_parameters(const RigCalibrateArgs& args
   std::vector<rig::SearchParameter> out;
   std::stringstream names(args.params);
   for (std::string name; std::getline(names, name, ',');) {
-    if (const std::string p = rig::parameter_problem(name, *in.rig_case, in.drive); !p.empty())
+    if (const std::string p = rig::parameter_problem(name, *in.rig_case); !p.empty())
       throw std::invalid_argument(fmt::format("--params: {}", p));
     for (const auto& q : out)
       if (q.name == name) throw std::invalid_argument(fmt::format("--params: {} twice", name));

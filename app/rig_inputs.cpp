@@ -38,15 +38,15 @@ double number_of(std::string_view text, std::string_view what) {
   return v;
 }
 
-// --set name=value: each a parameter that applies to this case and drive, value >= 0.
+// --set name=value: each a parameter that applies to this case, value >= 0.
 void apply_settings(const std::vector<std::string>& set, const rig::RigCase& c,
-                    rig::DriveKind drive, rig::RunParameters& p) {
+                    rig::RunParameters& p) {
   for (const std::string& s : set) {
     const size_t eq = s.find('=');
     if (eq == std::string::npos)
       throw std::invalid_argument(fmt::format("--set {}: expected name=value", s));
     const std::string name = s.substr(0, eq);
-    if (const std::string problem = rig::parameter_problem(name, c, drive); !problem.empty())
+    if (const std::string problem = rig::parameter_problem(name, c); !problem.empty())
       throw std::invalid_argument(fmt::format("--set {}: {}", s, problem));
     const double v = number_of(std::string_view(s).substr(eq + 1), "--set " + s);
     if (v < 0.0) throw std::invalid_argument(fmt::format("--set {}: must be >= 0", s));
@@ -147,7 +147,7 @@ RigInputs read_rig_inputs(const RigCommonArgs& args) {
     throw std::invalid_argument(
         fmt::format("--mesh-scale {}: must lie in (0, 4]", args.mesh_scale));
   in.parameters = rig::default_parameters(in.cases, *in.rig_case);
-  apply_settings(args.set, *in.rig_case, in.drive, in.parameters);
+  apply_settings(args.set, *in.rig_case, in.parameters);
   read_trials(args, in);
   if (in.drive == rig::DriveKind::open_loop && !in.drive_trial)
     throw std::invalid_argument(
@@ -161,10 +161,10 @@ RigInputs read_rig_inputs(const RigCommonArgs& args) {
   return in;
 }
 
-std::string parameter_text(const rig::RunParameters& p, const rig::RigCase& c, rig::DriveKind d) {
+std::string parameter_text(const rig::RunParameters& p, const rig::RigCase& c) {
   std::string s;
   for (std::string_view name : rig::kRunParameterNames) {
-    if (!rig::parameter_problem(name, c, d).empty()) continue;
+    if (!rig::parameter_problem(name, c).empty()) continue;
     if ((name == "mu_s" || name == "mu_k") && !p.mu_s) continue;  // a frictionless clamp
     s += fmt::format("{}{}={}", s.empty() ? "" : ";", name, rig::get_parameter(p, name));
   }

@@ -67,7 +67,7 @@ void print_warnings(const RigInputs& in);
 // std::invalid_argument (a wrong argument, saying what to do).
 RigInputs read_rig_inputs(const RigCommonArgs& args);
 
-// "name=value;..." of every parameter that applies to this case and drive.
-std::string parameter_text(const rig::RunParameters& p, const rig::RigCase& c, rig::DriveKind d);
+// "name=value;..." of every parameter that applies to this case.
+std::string parameter_text(const rig::RunParameters& p, const rig::RigCase& c);
 
 }  // namespace ccm

@@ -208,7 +208,7 @@ db::RigRunRecord store_record(const RigInputs& in, const RigRunOutcome& o,
   w.case_code = in.rig_case->code;
   w.drive = std::string(name_of(in.drive));
   if (in.drive_trial) w.drive_trial = in.drive_trial->trial;
-  w.parameters = parameter_text(o.parameters, *in.rig_case, in.drive);
+  w.parameters = parameter_text(o.parameters, *in.rig_case);
   w.purpose = std::string(purpose);
   w.status = std::string(to_string(s.verdict));
   if (s.verdict == Verdict::unstable) {
@@ -280,7 +280,7 @@ void write_run_files(const fs::path& out, const RigInputs& in, const RigRunOutco
     t += fmt::format("trial = {}\ntrial_file = {}\n", in.drive_trial->trial,
                      toml_string(fs::absolute(in.drive_trial->source).lexically_normal().string()));
   t += fmt::format("parameters = {}\nmesh_scale = {}\n",
-                   toml_string(parameter_text(o.parameters, *in.rig_case, in.drive)),
+                   toml_string(parameter_text(o.parameters, *in.rig_case)),
                    toml_float(args.mesh_scale));
   t += fmt::format("cases_fnv1a64 = {}\ngeometry_fnv1a64 = {}\ndata_fnv1a64 = {}\n",
                    toml_string(in.cases_hash), toml_string(in.geometry_hash),

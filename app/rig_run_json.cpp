@@ -154,7 +154,7 @@ nlohmann::json rig_run_json(const RigInputs& in, const RigRunOutcome& o, const R
           {"target_speed", c.target_speed.value},
           {"drive", rig::name_of(in.drive)},
           {"drive_trial", trial},
-          {"parameters", parameter_text(o.parameters, c, in.drive)},
+          {"parameters", parameter_text(o.parameters, c)},
           {"mesh_scale", args.mesh_scale},
           {"window",
            {{"start", r.window.start},

@@ -74,13 +74,16 @@ RigParameters read_rig(const StrictTable& root) {
 
 DriveParameters read_drive(const StrictTable& root) {
   const StrictTable t = root.need_table("drive");
-  t.allow_only({"velocity_smoothing", "track_friction", "track_damping", "friction_regularisation",
+  t.allow_only({"velocity_smoothing", "track_static_friction", "track_friction", "track_damping",
                 "string_stiffness", "string_damping"});
   DriveParameters d;
   d.velocity_smoothing = read_sourced(t, "velocity_smoothing", "s");
+  d.track_static_friction = read_sourced(t, "track_static_friction", "1", {0.0, false});
   d.track_friction = read_sourced(t, "track_friction", "1", {0.0, false});
+  if (d.track_friction.value > d.track_static_friction.value)
+    t.fail("track_friction", fmt::format("the kinetic coefficient {} exceeds the static one {}",
+                                         d.track_friction.value, d.track_static_friction.value));
   d.track_damping = read_sourced(t, "track_damping", "N s/m", {0.0, false});
-  d.friction_regularisation = read_sourced(t, "friction_regularisation", "m/s");
   d.string_stiffness = read_sourced(t, "string_stiffness", "N/m");
   d.string_damping = read_sourced(t, "string_damping", "N s/m", {0.0, false});
   return d;

@@ -39,9 +39,9 @@ std::string parameters_section(const RigCaseTable& table) {
   const SimulationParameters& sim = table.simulation;
   const std::pair<std::string_view, const SourcedValue*> drive_rows[] = {
       {"V_i smoothing half window", &d.velocity_smoothing},
-      {"track Coulomb coefficient", &d.track_friction},
+      {"track static coefficient", &d.track_static_friction},
+      {"track kinetic coefficient", &d.track_friction},
       {"track viscous coefficient", &d.track_damping},
-      {"Coulomb regularisation", &d.friction_regularisation},
       {"string stiffness", &d.string_stiffness},
       {"string damping", &d.string_damping},
       {"run lead before contact", &sim.lead},

@@ -41,12 +41,12 @@ struct RigParameters {
 // How the impactor is driven (thesis 3.3.2): the open-loop drive's smoothing of the measured
 // velocity, and the physical drive's string and track (the future work of 3.3.2 and 3.5).
 struct DriveParameters {
-  SourcedValue velocity_smoothing;       // s, half window of the local fit of V_i (open loop)
-  SourcedValue track_friction;           // 1, Coulomb coefficient of the track
-  SourcedValue track_damping;            // N s/m, viscous coefficient of the track
-  SourcedValue friction_regularisation;  // m/s, Coulomb's sign(v) as tanh(v / this)
-  SourcedValue string_stiffness;         // N/m, string, pulley and bracket in series
-  SourcedValue string_damping;           // N s/m, while the string is taut
+  SourcedValue velocity_smoothing;     // s, half window of the local fit of V_i (open loop)
+  SourcedValue track_static_friction;  // 1, static Coulomb coefficient of the track
+  SourcedValue track_friction;         // 1, its kinetic coefficient
+  SourcedValue track_damping;          // N s/m, viscous coefficient of the track
+  SourcedValue string_stiffness;       // N/m, string, pulley and bracket in series
+  SourcedValue string_damping;         // N s/m, while the string is taut
 };
 
 // The simulated window and output.

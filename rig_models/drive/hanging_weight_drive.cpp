@@ -29,9 +29,8 @@ HangingWeightDrive::HangingWeightDrive(const ModelMesh& mesh,
   }
   if (nodes_.empty()) throw std::invalid_argument("hanging weight: no impactor node");
   if (!(track.norm() > 0.0)) throw std::invalid_argument("hanging weight: zero track direction");
-  if (!(set_.weight_mass > 0.0) || !(set_.string_stiffness > 0.0) || !(set_.regularisation > 0.0))
-    throw std::invalid_argument(
-        "hanging weight: weight mass, string stiffness and regularisation must be > 0");
+  if (!(set_.weight_mass > 0.0) || !(set_.string_stiffness > 0.0))
+    throw std::invalid_argument("hanging weight: weight mass and string stiffness must be > 0");
   d_ = track.normalized();
 }
 
@@ -57,18 +56,11 @@ void HangingWeightDrive::add_forces(const State& s, std::span<Vec3> f) {
   const double k = set_.string_stiffness;
   const double e = set_.weight_mass * set_.gravity / k + s_w_ - u;
   const double T = e > 0.0 ? std::max(0.0, k * e + set_.string_damping * (w_ - u_dot)) : 0.0;
-  const double F_f =
-      -(set_.track_friction * set_.track_normal_force * std::tanh(u_dot / set_.regularisation) +
-        set_.track_damping * u_dot);
   for (size_t j = 0; j < drive_nodes_.size(); ++j)
     f[static_cast<size_t>(drive_nodes_[j])] += drive_share_[j] * T * d_;
-  for (size_t j = 0; j < nodes_.size(); ++j)
-    f[static_cast<size_t>(nodes_[j])] += mass_share_[j] * F_f * d_;
-  // Work on the impactor: trapezoidal in time, on the displacement each force follows.
-  work_ += 0.5 * (T_ + T) * (u_drive - u_drive_) + 0.5 * (F_f_ + F_f) * (u - u_);
+  // Work on the impactor: trapezoidal in time, on the displacement the drive surface follows.
+  work_ += 0.5 * (T_ + T) * (u_drive - u_drive_);
   T_ = T;
-  F_f_ = F_f;
-  u_ = u;
   u_drive_ = u_drive;
 }
 
@@ -78,15 +70,20 @@ void HangingWeightDrive::end_step(const State& /*s*/, double dt) {
   s_w_ += dt * w_;
 }
 
-double run_up_distance(const HangingWeightSettings& s, double impactor_mass, double speed) {
+double run_up_distance(const HangingWeightSettings& s, const TrackFrictionSpec& track,
+                       double impactor_mass, double speed) {
   if (!(speed > 0.0) || !(impactor_mass > 0.0))
     throw std::invalid_argument("run-up distance: speed and impactor mass must be > 0");
+  const double pull = s.weight_mass * s.gravity;
+  if (pull <= track.mu_s * track.normal_force)
+    throw std::invalid_argument(fmt::format(
+        "run-up distance: the weight's pull ({:.3g} N) cannot break the impactor away from the "
+        "track's static friction ({:.3g} N)",
+        pull, track.mu_s * track.normal_force));
   const double M = impactor_mass + s.weight_mass, dt = 1e-5;
   double v = 0.0, x = 0.0;
   for (double t = 0.0; t < 60.0; t += dt) {
-    const double F = s.weight_mass * s.gravity -
-                     s.track_friction * s.track_normal_force * std::tanh(v / s.regularisation) -
-                     s.track_damping * v;
+    const double F = pull - track.mu_k * track.normal_force - track.damping * v;
     const double v_next = v + dt * F / M;
     if (v_next >= speed) return x + dt * 0.5 * (v + speed);
     if (!(v_next > v)) break;  // terminal speed below the target

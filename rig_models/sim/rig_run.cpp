@@ -10,6 +10,7 @@
 
 #include "engine/bc/pin_joint.hpp"
 #include "engine/bc/slide_constraint.hpp"
+#include "engine/bc/track_friction.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "rig_models/drive/hanging_weight_drive.hpp"
 #include "rig_models/drive/open_loop_drive.hpp"
@@ -20,18 +21,28 @@
 namespace ccm::rig {
 namespace {
 
-HangingWeightSettings weight_settings(const RigCaseTable& t, const RunParameters& p,
-                                      double gravity) {
+HangingWeightSettings weight_settings(const RigCaseTable& t, double gravity) {
   HangingWeightSettings s;
   s.weight_mass = t.rig.hanging_mass.value;
   s.gravity = gravity;
   s.string_stiffness = t.drive.string_stiffness.value;
   s.string_damping = t.drive.string_damping.value;
-  s.track_friction = p.track_friction;
-  s.track_normal_force = t.rig.impactor_mass.value * gravity;
-  s.track_damping = p.track_damping;
-  s.regularisation = t.drive.friction_regularisation.value;
   return s;
+}
+
+// The track's friction on the impactor (engine/bc/track_friction.hpp) with its weight as the
+// normal force; a kinetic coefficient above the static one raises the static one to it. The
+// open-loop drive's measured motion carries the friction until the measured contact onset, so
+// there it acts from the onset (thesis 3.4.1: the drive does not carry it once contact starts).
+TrackFrictionSpec track_of(const RigCaseTable& t, const RunParameters& p, double gravity,
+                           std::vector<int> impactor_nodes, const Vec3& track, double active_from) {
+  return {std::move(impactor_nodes),
+          track,
+          t.rig.impactor_mass.value * gravity,
+          std::max(p.track_static_friction, p.track_friction),
+          p.track_friction,
+          p.track_damping,
+          active_from};
 }
 
 // F_in of the open-loop drive on the simulation's clock (t = 0 at the window's start).
@@ -143,7 +154,8 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   const double gravity = setup.geometry.gravity.value;
   RigRunResult out;
   out.window = run_window(table, c, {req.drive, req.trial, req.start, req.end},
-                          weight_settings(table, par, gravity));
+                          weight_settings(table, gravity),
+                          track_of(table, par, gravity, {}, Vec3::UnitY(), 0.0));
   const RunWindow& w = out.window;
   RigModelRequest mr;
   mr.impactor = c.impactor;
@@ -165,8 +177,12 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   } else {
     weight =
         std::make_unique<HangingWeightDrive>(rig.model.mesh, rig.drive_surface, rig.impactor_nodes,
-                                             rig.track, weight_settings(table, par, gravity));
+                                             rig.track, weight_settings(table, gravity));
   }
+  const double friction_from =
+      req.drive == DriveKind::open_loop && w.measured_onset ? *w.measured_onset - w.start : 0.0;
+  TrackFriction track_friction(
+      track_of(table, par, gravity, rig.impactor_nodes, rig.track, friction_from));
   SlideConstraint guide(rig.guide_nodes, rig.track);
   const PinJointSpec pin_spec = pin_of(rig, c, par);
   PinJoint pin_joint(pin_spec, rig.model.mesh.X);
@@ -189,6 +205,7 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   opt.contact = &dcr;
   opt.constraints.push_back(&guide);
   opt.constraints.push_back(&pin_joint);
+  opt.constraints.push_back(&track_friction);
   if (weight) opt.loads.push_back(weight.get());
   opt.progress = req.progress;
   const auto angle = static_cast<size_t>(rig.angle_node);

@@ -22,6 +22,7 @@ RunParameters default_parameters(const RigCaseTable& table, const RigCase& c) {
     p.mu_s = c.pivot_friction->mu_s;
     p.mu_k = c.pivot_friction->mu_k;
   }
+  p.track_static_friction = table.drive.track_static_friction.value;
   p.track_friction = table.drive.track_friction.value;
   p.track_damping = table.drive.track_damping.value;
   p.spring_stiffness = table.rig.spring_stiffness.value;
@@ -30,17 +31,12 @@ RunParameters default_parameters(const RigCaseTable& table, const RigCase& c) {
   return p;
 }
 
-std::string parameter_problem(std::string_view name, const RigCase& c, DriveKind drive) {
+std::string parameter_problem(std::string_view name, const RigCase& c) {
   bool known = false;
   for (std::string_view n : kRunParameterNames) known = known || n == name;
   if (!known)
     return fmt::format("unknown parameter '{}' (known: {})", name,
                        fmt::join(kRunParameterNames, ", "));
-  if ((name == "track_friction" || name == "track_damping") && drive != DriveKind::physical)
-    return fmt::format(
-        "'{}' acts only with --drive physical (the open-loop drive follows the "
-        "measured motion, friction included)",
-        name);
   if (name == "spring_stiffness" && c.impactor != ImpactorKind::flexible)
     return fmt::format("'{}' needs a flexible impactor; {} has a rigid one", name, c.code);
   if ((name == "clamp_stiffness" || name == "clamp_damping") && c.artifact != ArtifactKind::fixed)
@@ -52,6 +48,7 @@ std::string parameter_problem(std::string_view name, const RigCase& c, DriveKind
 double get_parameter(const RunParameters& p, std::string_view name) {
   if (name == "mu_s") return p.mu_s.value_or(kFrictionalFixedMuS);
   if (name == "mu_k") return p.mu_k.value_or(kFrictionalFixedMuK);
+  if (name == "track_static_friction") return p.track_static_friction;
   if (name == "track_friction") return p.track_friction;
   if (name == "track_damping") return p.track_damping;
   if (name == "spring_stiffness") return p.spring_stiffness;
@@ -66,6 +63,8 @@ void set_parameter(RunParameters& p, std::string_view name, double value) {
     if (!p.mu_s) p.mu_s = kFrictionalFixedMuS;
     if (!p.mu_k) p.mu_k = kFrictionalFixedMuK;
     (name == "mu_s" ? *p.mu_s : *p.mu_k) = value;
+  } else if (name == "track_static_friction") {
+    p.track_static_friction = value;
   } else if (name == "track_friction") {
     p.track_friction = value;
   } else if (name == "track_damping") {
@@ -86,8 +85,9 @@ std::string describe(const RunParameters& p, const RigCase& c, DriveKind drive) 
                          : std::string("pin frictionless");
   if (c.artifact == ArtifactKind::fixed)
     s += fmt::format(", clamp {:g} N m/rad, {:g} N m s/rad", p.clamp_stiffness, p.clamp_damping);
-  if (drive == DriveKind::physical)
-    s += fmt::format(", track mu {:g}, c {:g} N s/m", p.track_friction, p.track_damping);
+  s += fmt::format(", track mu_s {:g}, mu_k {:g}, c {:g} N s/m{}", p.track_static_friction,
+                   p.track_friction, p.track_damping,
+                   drive == DriveKind::open_loop ? " (from the contact onset)" : "");
   if (c.impactor == ImpactorKind::flexible) s += fmt::format(", K_s {:g} N/m", p.spring_stiffness);
   return s;
 }

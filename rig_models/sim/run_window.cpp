@@ -37,7 +37,7 @@ double onset_of(const MeasuredTrial& m, double threshold) {
 }  // namespace
 
 RunWindow run_window(const RigCaseTable& table, const RigCase& c, const WindowRequest& req,
-                     const HangingWeightSettings& weight) {
+                     const HangingWeightSettings& weight, const TrackFrictionSpec& track) {
   const double interval = table.simulation.output_interval.value;
   RunWindow w;
   if (!req.trial) {
@@ -47,7 +47,7 @@ RunWindow run_window(const RigCaseTable& table, const RigCase& c, const WindowRe
           "--drive physical");
     if (req.start)
       throw std::invalid_argument("--start: a physical run starts at the release, t = 0");
-    w.gap = run_up_distance(weight, table.rig.impactor_mass.value, c.target_speed.value);
+    w.gap = run_up_distance(weight, track, table.rig.impactor_mass.value, c.target_speed.value);
     // Time to cover the gap from rest, about 2 gap / v for a nearly uniform acceleration.
     const double contact = 2.0 * w.gap / c.target_speed.value;
     w.end =

@@ -39,6 +39,6 @@ struct WindowRequest {
 // no trial, a physical run is given a start, the trial has no contact above the deadband, or
 // the window is empty or outside the trial.
 RunWindow run_window(const RigCaseTable& table, const RigCase& c, const WindowRequest& request,
-                     const HangingWeightSettings& weight);
+                     const HangingWeightSettings& weight, const TrackFrictionSpec& track);
 
 }  // namespace ccm::rig

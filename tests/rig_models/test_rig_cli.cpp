@@ -263,12 +263,12 @@ TEST_CASE("ccm rig: bad input exits 2 naming the defect, before anything is writ
                             dir);
   CHECK(trial.status == 2);
   CHECK(trial.err.find("--trial 7: RX025 has trials 1, 2, 3") != std::string::npos);
-  const Shell track = shell(rig(fmt::format("calibrate RX025 --params track_friction --data '{}' "
-                                            "--out '{}'",
-                                            kDevData.string(), out.string())),
-                            dir);
-  CHECK(track.status == 2);
-  CHECK(track.err.find("acts only with --drive physical") != std::string::npos);
+  const Shell clamped = shell(rig(fmt::format("calibrate RF025 --params clamp_damping --data '{}' "
+                                              "--out '{}'",
+                                              kDevData.string(), out.string())),
+                              dir);
+  CHECK(clamped.status == 2);
+  CHECK(clamped.err.find("holds a Fixed artifact's pin") != std::string::npos);
   const Shell physical = shell(rig(fmt::format("run RX025 --drive physical --score-drive-trial "
                                                "--data '{}' --out '{}'",
                                                kDevData.string(), out.string())),

@@ -1,7 +1,8 @@
 // The physical drive (rig_models/drive/hanging_weight_drive.hpp): a weight on a string over a
 // pulley pulling a block along the track. Checked against the closed forms of the lumped
 // system: impulse m_w g t shared by block and weight, a slack string leaves the block coasting,
-// Coulomb friction above the pull holds it, and the run-up distance v^2 (M + m_w) / (2 m_w g).
+// and the run-up distance v^2 (M + m_w) / (2 m_w g), with the track's Coulomb and viscous
+// friction (the friction's own evidence: tests/engine/bc/test_track_friction.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -34,7 +35,6 @@ Pull pull(HangingWeightSettings s, double end_time, double v0 = 0.0) {
   }
   const auto front = boundary_on_plane(model.mesh, 0, Vec3(0.0, 0.1, 0.0), Vec3::UnitY(), 1e-9);
   s.gravity = kG;
-  s.track_normal_force = kBlockMass * kG;
   HangingWeightDrive drive(model.mesh, front, all, Vec3::UnitY(), s);
   RunOptions opt;
   opt.time.end_time = end_time;
@@ -85,24 +85,27 @@ TEST_CASE("hanging weight: a block running ahead of the weight slackens the stri
   CHECK(p.weight_velocity == Approx(kG * 0.1).epsilon(1e-2));  // in free fall
 }
 
-TEST_CASE("hanging weight: track friction above the pull holds the block", "[rig][drive]") {
+TEST_CASE("run-up distance: v^2 (M + m_w) / (2 (m_w g - mu_k N)) against the track's friction",
+          "[rig][drive]") {
   HangingWeightSettings s;
-  s.track_friction = 2.0 * s.weight_mass / kBlockMass;  // mu N = 2 m_w g
-  const Pull p = pull(s, 0.2);
-  REQUIRE(p.summary.verdict == Verdict::completed);
-  // tanh(v / 1 mm/s) = 1/2 lets it creep at 0.55 mm/s at most.
-  CHECK(std::abs(p.v_block) < 1e-3);
-}
-
-TEST_CASE("run-up distance: v^2 (M + m_w) / (2 m_w g) without friction", "[rig][drive]") {
-  HangingWeightSettings s;
+  TrackFrictionSpec track;
+  track.normal_force = kBlockMass * kG;
   const double v = 0.5;
   // 1e-4 s steps of the lumped system integrate the constant acceleration exactly but for the
   // last partial step: 1e-3.
-  CHECK(test::relative_error(run_up_distance(s, kBlockMass, v),
+  CHECK(test::relative_error(run_up_distance(s, track, kBlockMass, v),
                              v * v * (kBlockMass + s.weight_mass) / (2 * s.weight_mass * kG)) <
         1e-3);
-  s.track_damping = 10.0;  // terminal speed m_w g / c = 0.49 m/s
-  CHECK_THROWS_WITH(run_up_distance(s, kBlockMass, v),
+  track.mu_s = 0.2;
+  track.mu_k = 0.1;  // the pull less mu_k N: 4.905 - 1.177 N
+  CHECK(test::relative_error(run_up_distance(s, track, kBlockMass, v),
+                             v * v * (kBlockMass + s.weight_mass) /
+                                 (2 * (s.weight_mass * kG - 0.1 * kBlockMass * kG))) < 1e-3);
+  track.mu_s = 0.5;  // mu_s N = 5.9 N above the 4.9 N pull: never breaks away
+  CHECK_THROWS_WITH(run_up_distance(s, track, kBlockMass, v),
+                    Catch::Contains("cannot break the impactor away"));
+  track.mu_s = track.mu_k = 0.0;
+  track.damping = 10.0;  // terminal speed m_w g / c = 0.49 m/s
+  CHECK_THROWS_WITH(run_up_distance(s, track, kBlockMass, v),
                     Catch::Contains("cannot bring the impactor to 0.5 m/s"));
 }

@@ -45,7 +45,8 @@ TEST_CASE("run window: open loop from the lead before contact, physical from the
   HangingWeightSettings weight;
   const double onset = 13.0 / 128.0;  // first pressure sample at or above the 1 kPa deadband
   const double lead = cases().simulation.lead.value;
-  const RunWindow open = run_window(cases(), c, {DriveKind::open_loop, &m, {}, {}}, weight);
+  const RunWindow open =
+      run_window(cases(), c, {DriveKind::open_loop, &m, {}, {}}, weight, ccm::TrackFrictionSpec{});
   CHECK(open.measured_onset.value() == Approx(onset));
   CHECK(open.start == Approx(onset - lead));
   // The local fit reproduces the ramp exactly: v(start) = 2.5 start, gap = its integral.
@@ -55,7 +56,8 @@ TEST_CASE("run window: open loop from the lead before contact, physical from the
   const double interval = cases().simulation.output_interval.value;
   CHECK(open.end <= 0.6 + 1e-12);
   CHECK(std::abs(std::remainder(open.end - open.start, interval)) < 1e-9);
-  const RunWindow phys = run_window(cases(), c, {DriveKind::physical, &m, {}, 0.3}, weight);
+  const RunWindow phys =
+      run_window(cases(), c, {DriveKind::physical, &m, {}, 0.3}, weight, ccm::TrackFrictionSpec{});
   CHECK(phys.start == 0.0);
   CHECK(phys.initial_velocity == 0.0);
   CHECK(phys.gap == Approx(1.25 * onset * onset).epsilon(1e-9));
@@ -65,7 +67,8 @@ TEST_CASE("run window: open loop from the lead before contact, physical from the
 TEST_CASE("run window: without data the gap gives the target speed", "[rig][window]") {
   const RigCase& c = cases().find("RX050");
   HangingWeightSettings weight;  // frictionless: gap = v^2 (M + m_w) / (2 m_w g)
-  const RunWindow w = run_window(cases(), c, {DriveKind::physical, nullptr, {}, {}}, weight);
+  const RunWindow w = run_window(cases(), c, {DriveKind::physical, nullptr, {}, {}}, weight,
+                                 ccm::TrackFrictionSpec{});
   const double M = cases().rig.impactor_mass.value;
   CHECK(w.gap == Approx(0.25 * (M + 0.5) / (2 * 0.5 * 9.81)).epsilon(1e-3));
   CHECK(w.end > 2 * w.gap / 0.5);
@@ -75,15 +78,19 @@ TEST_CASE("run window: what cannot be run is refused with what to do", "[rig][wi
   const MeasuredTrial m = ramp_trial();
   const RigCase& c = cases().find("RX025");
   HangingWeightSettings weight;
-  CHECK_THROWS_WITH(run_window(cases(), c, {DriveKind::open_loop, nullptr, {}, {}}, weight),
+  CHECK_THROWS_WITH(run_window(cases(), c, {DriveKind::open_loop, nullptr, {}, {}}, weight,
+                               ccm::TrackFrictionSpec{}),
                     Catch::StartsWith("the open-loop drive follows a measured trial: give --data"));
-  CHECK_THROWS_WITH(run_window(cases(), c, {DriveKind::physical, &m, 0.05, {}}, weight),
-                    "--start: a physical run starts at the release, t = 0");
-  CHECK_THROWS_WITH(run_window(cases(), c, {DriveKind::open_loop, &m, 0.2, {}}, weight),
-                    Catch::Contains("before its contact at 0.1015625 s"));
+  CHECK_THROWS_WITH(
+      run_window(cases(), c, {DriveKind::physical, &m, 0.05, {}}, weight, ccm::TrackFrictionSpec{}),
+      "--start: a physical run starts at the release, t = 0");
+  CHECK_THROWS_WITH(
+      run_window(cases(), c, {DriveKind::open_loop, &m, 0.2, {}}, weight, ccm::TrackFrictionSpec{}),
+      Catch::Contains("before its contact at 0.1015625 s"));
   MeasuredTrial quiet = m;
   for (double& p : quiet.pressure_kpa.value) p = 0.5;  // below the deadband
-  CHECK_THROWS_WITH(run_window(cases(), c, {DriveKind::open_loop, &quiet, {}, {}}, weight),
+  CHECK_THROWS_WITH(run_window(cases(), c, {DriveKind::open_loop, &quiet, {}, {}}, weight,
+                               ccm::TrackFrictionSpec{}),
                     "RX025_t2.csv: no measured contact (the pressure never reaches the 1 kPa "
                     "deadband); the drive needs one");
 }
