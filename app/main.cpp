@@ -282,6 +282,13 @@ int main(int argc, char** argv) {
       ->add_option("--max-evals", rig_calibrate_args.max_evaluations,
                    "Most simulations the search may run")
       ->capture_default_str();
+  rig_calibrate->add_option(
+      "--predict", rig_calibrate_args.predict,
+      "Cases left out of the fit, comma-separated, of the fitted case's "
+      "configuration: each run with the starting and the calibrated "
+      "parameters and scored on its own trials (--start and --end moved to its own contact onset)");
+  rig_calibrate->add_flag("!--no-profile", rig_calibrate_args.profile,
+                          "Skip the parameters' spread after the fit (2-3 runs per parameter)");
   rig_calibrate->footer("Exit codes: 0 done, 1 internal error, 2 bad input (nothing written).");
 
   ccm::MeshInfoArgs mesh_info_args;

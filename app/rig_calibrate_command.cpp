@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/rig_calibration_checks.hpp"
 #include "app/rig_command_errors.hpp"
 #include "app/rig_commands.hpp"
 #include "app/rig_runner.hpp"
@@ -92,12 +93,6 @@ std::vector<rig::SearchParameter> search_parameters(const RigCalibrateArgs& args
   return out;
 }
 
-rig::RunParameters with_values(rig::RunParameters p, const std::vector<rig::SearchParameter>& s,
-                               const std::vector<double>& x) {
-  for (size_t i = 0; i < s.size(); ++i) rig::set_parameter(p, s[i].name, x[i]);
-  return p;
-}
-
 std::string values_text(const std::vector<rig::SearchParameter>& s, const std::vector<double>& x) {
   std::string t;
   for (size_t i = 0; i < s.size(); ++i)
@@ -119,6 +114,7 @@ int calibrate(const RigCalibrateArgs& args) {
   if (args.max_evaluations < 1 || args.max_evaluations > 500)
     throw std::invalid_argument("--max-evals must lie in [1, 500]");
   const std::vector<rig::SearchParameter> params = search_parameters(args, in);
+  std::vector<PredictionCase> predicted = read_prediction_cases(args, in, params);
   if (in.db.has_parent_path()) std::filesystem::create_directories(in.db.parent_path());
   db::RigStore store(in.db);
   const std::string started = utc_timestamp_now();
@@ -193,6 +189,8 @@ int calibrate(const RigCalibrateArgs& args) {
     fmt::print("\nAfter (rig_runs.id {}):\n{}{}", after_id, run_table(in, after),
                comparison_table(in, after));
     fmt::print("\nstored in {} (rig_calibrations.id {})\n", in.db.string(), id);
+    if (args.profile) report_spread(in, common, params, result.best, result.best_objective);
+    report_predictions(predicted, params, result.best);
   }
   return exit_code::completed;
 }

@@ -14,6 +14,8 @@ struct RigCalibrateArgs {
   std::string params;               // comma-separated names (rig_models/sim/run_parameters.hpp)
   std::vector<std::string> bounds;  // name=lower:upper
   int max_evaluations = 12;
+  std::string predict;  // comma-separated cases scored with the calibrated parameters, unfitted
+  bool profile = true;  // the parameters' spread after the fit (2-3 runs each)
 };
 
 // Exit codes (app/run_command.hpp): 0 completed, 3 unstable (run), 2 bad input (nothing

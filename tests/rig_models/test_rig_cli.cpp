@@ -212,6 +212,72 @@ TEST_CASE("ccm rig calibrate FF025 (short): pin friction", "[rig][rig-cli][heavy
   if (have_dev_data()) check_short_calibration("FF025", "mu_s,mu_k");
 }
 
+TEST_CASE(
+    "ccm rig calibrate RX025 (short) --predict RX050: the parameter's spread, and the score "
+    "left out of the fit is the one ccm rig run gives that case",
+    "[rig][rig-cli][heavy]") {
+  if (!have_dev_data()) return;
+  test::TempDir dir;
+  // One evaluation: the calibrated parameters are the start, so the left-out case's two runs
+  // must read alike, and alike to a plain run of it in the window the table names.
+  const std::string common = fmt::format("--data '{}' --geometry '{}' {}", kDevData.string(),
+                                         kShortGeometry.string(), kShortWindow);
+  const Shell s = shell(rig(fmt::format("calibrate RX025 --params clamp_stiffness --max-evals 1 "
+                                        "{} --predict RX050 --db '{}'",
+                                        common, (dir.path / "cal.sqlite").string())),
+                        dir);
+  INFO(s.err);
+  REQUIRE(s.status == 0);
+  // The clamp acts in the 19 ms around the contact: its objective has a curvature, so a spread.
+  const size_t spread = s.out.find("\n  clamp_stiffness", s.out.find("Spread ("));
+  REQUIRE(spread != std::string::npos);
+  std::istringstream row(s.out.substr(spread));
+  std::string name, width;
+  double best = 0.0;
+  row >> name >> best >> width;
+  CHECK(best == 17000.0);
+  CHECK(std::stod(width) > 0.0);
+  const size_t left_out = s.out.find("\n  RX050", s.out.find("Left out of the fit"));
+  REQUIRE(left_out != std::string::npos);
+  std::istringstream predicted(s.out.substr(left_out));
+  std::string code;
+  double start_score = 0.0, calibrated_score = 0.0;
+  predicted >> code >> start_score >> calibrated_score;
+  CHECK(start_score == calibrated_score);
+  const std::string line = s.out.substr(left_out, s.out.find('\n', left_out + 1) - left_out);
+  const size_t w = line.find("window ");
+  REQUIRE(w != std::string::npos);
+  std::istringstream window(line.substr(w + 7));
+  std::string to;
+  double t0 = 0.0, t1 = 0.0;
+  window >> t0 >> to >> t1;
+  // RX050's trial 2 touches 62.5 ms after RX025's: the fitted window moved by as much.
+  CHECK(t0 == Approx(0.0595 + 0.0625).epsilon(1e-9));
+  const Shell plain = shell(rig(fmt::format("run RX050 --data '{}' --geometry '{}' --start {:.9g} "
+                                            "--end {:.9g} --db '{}' --json",
+                                            kDevData.string(), kShortGeometry.string(), t0, t1,
+                                            (dir.path / "run.sqlite").string())),
+                            dir);
+  INFO(plain.err);
+  REQUIRE(plain.status == 0);
+  const size_t obj = plain.out.find("\"objective\":");
+  REQUIRE(obj != std::string::npos);
+  CHECK(std::stod(plain.out.substr(obj + 12)) == Approx(calibrated_score).margin(5e-6));
+  // Another configuration, or the fitted case itself, is refused before any run.
+  for (const auto& [predict, why] :
+       {std::pair<std::string, std::string>{"RF025", "not RX025's configuration"},
+        {"RX025", "it is the fitted case"}}) {
+    const fs::path db = dir.path / ("refused-" + predict + ".sqlite");
+    const Shell refused = shell(rig(fmt::format("calibrate RX025 --params clamp_stiffness {} "
+                                                "--predict {} --db '{}'",
+                                                common, predict, db.string())),
+                                dir);
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("--predict " + predict + ": " + why) != std::string::npos);
+    CHECK_FALSE(fs::exists(db));
+  }
+}
+
 TEST_CASE("ccm rig: bad input exits 2 naming the defect, before anything is written",
           "[rig][rig-cli]") {
   test::TempDir dir;

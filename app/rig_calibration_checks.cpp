@@ -1,0 +1,143 @@
+#include "app/rig_calibration_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "app/rig_runner.hpp"
+#include "rig_models/calibrate/parameter_profile.hpp"
+#include "rig_models/compare/channel_metrics.hpp"
+
+namespace ccm {
+namespace {
+
+std::vector<std::string> split_codes(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string code; std::getline(in, code, ',');)
+    if (!code.empty()) out.push_back(code);
+  return out;
+}
+
+std::string objective_text(const RigRunOutcome& o) {
+  return o.objective ? fmt::format("{:.5f}", *o.objective) : std::string("- (not compared)");
+}
+
+std::string check_prediction(const std::string& code, const RigInputs& fitted,
+                             const RigInputs& predicted,
+                             const std::vector<rig::SearchParameter>& params) {
+  if (code == fitted.rig_case->code) return "it is the fitted case";
+  if (code.substr(0, 2) != fitted.rig_case->code.substr(0, 2))
+    return fmt::format(
+        "not {}'s configuration ({} impactor, {} artifact): one parameter set per configuration",
+        fitted.rig_case->code, rig::name_of(fitted.rig_case->impactor),
+        rig::name_of(fitted.rig_case->artifact));
+  for (const rig::SearchParameter& p : params)
+    if (const std::string problem = rig::parameter_problem(p.name, *predicted.rig_case);
+        !problem.empty())
+      return problem;
+  if (predicted.scored.empty()) return "no trial to score it on";
+  return {};
+}
+
+// The measured contact onset of the run's driving trial [s, trial time].
+double drive_onset(const RigInputs& in) {
+  const auto contact =
+      rig::first_contact(in.drive_trial->pressure_kpa, in.cases.rig.sensor_deadband.value);
+  if (!contact)
+    throw std::invalid_argument(
+        fmt::format("{}: no measured contact above the deadband", in.drive_trial->source.string()));
+  return contact->onset;
+}
+
+// The fitted case's --start and --end moved to the predicted case's own contact onset.
+void shift_window(const RigCommonArgs& fitted_args, const RigInputs& fitted, PredictionCase& c) {
+  if (!fitted_args.start && !fitted_args.end) return;
+  const double shift = drive_onset(c.inputs) - drive_onset(fitted);
+  if (fitted_args.start) c.args.start = *fitted_args.start + shift;
+  if (fitted_args.end) c.args.end = *fitted_args.end + shift;
+}
+
+}  // namespace
+
+rig::RunParameters with_values(rig::RunParameters p, const std::vector<rig::SearchParameter>& s,
+                               const std::vector<double>& x) {
+  for (size_t i = 0; i < s.size(); ++i) rig::set_parameter(p, s[i].name, x[i]);
+  return p;
+}
+
+std::vector<PredictionCase> read_prediction_cases(const RigCalibrateArgs& args,
+                                                  const RigInputs& fitted,
+                                                  const std::vector<rig::SearchParameter>& params) {
+  const std::vector<std::string> codes = split_codes(args.predict);
+  std::vector<PredictionCase> out;
+  out.reserve(codes.size());  // RigInputs points into itself: never moved once read
+  for (const std::string& code : codes) {
+    RigCommonArgs a = args.common;
+    a.case_code = code;
+    a.fields = false;
+    out.push_back({a, read_rig_inputs(a)});
+    if (const std::string problem = check_prediction(code, fitted, out.back().inputs, params);
+        !problem.empty())
+      throw std::invalid_argument(fmt::format("--predict {}: {}", code, problem));
+    shift_window(args.common, fitted, out.back());
+  }
+  return out;
+}
+
+void report_spread(const RigInputs& in, const RigCommonArgs& args,
+                   const std::vector<rig::SearchParameter>& params, const std::vector<double>& best,
+                   double best_objective) {
+  int evaluation = 0;
+  const rig::SearchObjective objective =
+      [&](const std::vector<double>& x) -> std::optional<double> {
+    const RigRunOutcome o =
+        run_rig_once(in, args, with_values(in.parameters, params, x),
+                     fmt::format("{} profile {}", in.rig_case->code, ++evaluation));
+    if (o.result.summary.verdict != Verdict::completed) return std::nullopt;
+    return o.objective;
+  };
+  const rig::ProfileSettings settings;
+  const std::vector<rig::ParameterSpread> spread =
+      rig::profile_parameters(params, best, best_objective, objective, settings);
+  fmt::print(
+      "\nSpread ({:.0f} % rise of the objective; a sensitivity, not a confidence interval)\n",
+      100.0 * settings.rise);
+  fmt::print("  {:<22} {:>12} {:>12} {:>12}\n", "parameter", "best", "+-", "curvature");
+  for (const rig::ParameterSpread& s : spread) {
+    const std::string width = s.half_width  ? fmt::format("{:.4g}", *s.half_width)
+                              : s.curvature ? std::string("unidentified")
+                                            : std::string("- (a run failed)");
+    fmt::print("  {:<22} {:>12.6g} {:>12} {:>12}\n", s.name, s.best, width,
+               s.curvature ? fmt::format("{:.4g}", *s.curvature) : std::string("-"));
+    if (s.on_lower_bound || s.on_upper_bound)
+      fmt::print(stderr,
+                 "ccm: warning: {} ended on its {} bound ({:g}): its best may lie beyond; widen "
+                 "--bounds {}=lo:hi\n",
+                 s.name, s.on_lower_bound ? "lower" : "upper", s.best, s.name);
+  }
+}
+
+void report_predictions(std::vector<PredictionCase>& cases,
+                        const std::vector<rig::SearchParameter>& params,
+                        const std::vector<double>& best) {
+  if (cases.empty()) return;
+  fmt::print("\nLeft out of the fit ({})\n", rig::kObjectiveName);
+  fmt::print("  {:<8} {:>12} {:>12}  scored on\n", "case", "start", "calibrated");
+  for (PredictionCase& c : cases) {
+    const RigInputs& in = c.inputs;
+    std::vector<double> start;
+    for (const rig::SearchParameter& p : params) start.push_back(p.initial);
+    const RigRunOutcome before = run_rig_once(in, c.args, with_values(in.parameters, params, start),
+                                              in.rig_case->code + " start");
+    const RigRunOutcome after = run_rig_once(in, c.args, with_values(in.parameters, params, best),
+                                             in.rig_case->code + " calibrated");
+    const rig::RunWindow& w = after.result.window;
+    fmt::print("  {:<8} {:>12} {:>12}  {}; window {:.9g} to {:.9g} s\n", in.rig_case->code,
+               objective_text(before), objective_text(after), scored_trials_text(in), w.start,
+               w.end);
+  }
+}
+
+}  // namespace ccm

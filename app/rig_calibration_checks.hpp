@@ -1,0 +1,49 @@
+// After `ccm rig calibrate` has found its best parameters, how far to trust them:
+//   - the spread of each parameter (rig_models/calibrate/parameter_profile.hpp: the objective's
+//     curvature along it and the half-width of a 5 % rise), with a warning for a parameter that
+//     ended on a bound of its range (its best may lie beyond);
+//   - the score of the calibrated parameters on cases left out of the fit (--predict): each run
+//     with the starting and with the calibrated parameters, scored on its own trials. One
+//     parameter set per configuration (R/F impactor x X/F artifact): a predicted case must share
+//     the fitted case's configuration, and every tuned parameter must apply to it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/rig_commands.hpp"
+#include "app/rig_inputs.hpp"
+#include "rig_models/calibrate/bounded_search.hpp"
+
+namespace ccm {
+
+struct PredictionCase {
+  // The calibration's, for this case; --start and --end (trial times of the fitted case) moved
+  // by the difference of the two cases' measured contact onsets (their driving trials').
+  RigCommonArgs args;
+  RigInputs inputs;
+};
+
+// `p` with the searched parameters set to `x`.
+rig::RunParameters with_values(rig::RunParameters p, const std::vector<rig::SearchParameter>& s,
+                               const std::vector<double>& x);
+
+// Reads and checks every --predict case before any run. Throws std::invalid_argument (a case
+// of another configuration, a parameter that does not apply, the fitted case itself) or
+// rig::RigInputError (its files).
+std::vector<PredictionCase> read_prediction_cases(const RigCalibrateArgs& args,
+                                                  const RigInputs& fitted,
+                                                  const std::vector<rig::SearchParameter>& params);
+
+// The spread of each parameter at `best` (2-3 runs of the fitted case each), printed, and a
+// warning on stderr for each that ended on a bound.
+void report_spread(const RigInputs& in, const RigCommonArgs& args,
+                   const std::vector<rig::SearchParameter>& params, const std::vector<double>& best,
+                   double best_objective);
+
+// Each predicted case run with the starting and with the calibrated parameters; printed.
+void report_predictions(std::vector<PredictionCase>& cases,
+                        const std::vector<rig::SearchParameter>& params,
+                        const std::vector<double>& best);
+
+}  // namespace ccm
