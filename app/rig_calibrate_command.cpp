@@ -40,6 +40,9 @@ Range default_range(std::string_view name, const RigInputs& in) {
   if (name == "clamp_stiffness")
     return {0.1 * in.cases.rig.clamp_stiffness.value, 10.0 * in.cases.rig.clamp_stiffness.value};
   if (name == "clamp_damping") return {0.0, 4.0 * in.cases.rig.clamp_damping.value};
+  // The mat: a stiffness from a soft foam to a stiff rubber; lambda for e from 1 down to ~0.
+  if (name == "mat_stiffness") return {1e3, 1e6};
+  if (name == "mat_damping") return {0.0, 10.0};
   const double K = in.cases.rig.spring_stiffness.value;
   return {0.5 * K, 2.0 * K};
 }

@@ -1,7 +1,6 @@
 #include "engine/bc/boundary_conditions.hpp"
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 
 #include "engine/mesh/boundary_surface.hpp"
@@ -16,20 +15,10 @@ void SurfaceLoad::add_to(std::span<Vec3> f, double t) const {
 SurfaceLoad make_surface_load(const std::string& name, const ModelMesh& mesh,
                               const std::vector<Triangle>& surface, const Vec3& direction,
                               TimeTable magnitude) {
-  std::map<int, double> share;
-  double total = 0.0;
-  for (const Triangle& t : surface) {
-    const double A = triangle_area(t, mesh.X);
-    total += A;
-    for (int n : t) share[n] += A / 3.0;
-  }
-  if (!(total > 0.0)) throw std::invalid_argument("surface load '" + name + "' has no area");
-  SurfaceLoad load{name, {}, {}, direction.normalized(), std::move(magnitude)};
-  for (const auto& [node, a] : share) {
-    load.nodes.push_back(node);
-    load.area_share.push_back(a / total);
-  }
-  return load;
+  AreaShares shares = area_shares(surface, mesh.X);
+  if (!(shares.area > 0.0)) throw std::invalid_argument("surface load '" + name + "' has no area");
+  return {name, std::move(shares.nodes), std::move(shares.share), direction.normalized(),
+          std::move(magnitude)};
 }
 
 void BoundaryConditions::fix(const std::vector<int>& nodes) {

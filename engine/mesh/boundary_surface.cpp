@@ -1,6 +1,7 @@
 #include "engine/mesh/boundary_surface.hpp"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
 
 namespace ccm {
@@ -90,6 +91,22 @@ Vec3 triangle_normal(const Triangle& t, std::span<const Vec3> x) {
 
 double triangle_area(const Triangle& t, std::span<const Vec3> x) {
   return 0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
+}
+
+AreaShares area_shares(const std::vector<Triangle>& surface, const std::vector<Vec3>& X) {
+  std::map<int, double> share;
+  AreaShares out;
+  for (const Triangle& t : surface) {
+    const double A = triangle_area(t, X);
+    out.area += A;
+    for (int n : t) share[n] += A / 3.0;
+  }
+  if (!(out.area > 0.0)) return out;
+  for (const auto& [node, a] : share) {
+    out.nodes.push_back(node);
+    out.share.push_back(a / out.area);
+  }
+  return out;
 }
 
 }  // namespace ccm

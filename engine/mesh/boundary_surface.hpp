@@ -22,4 +22,13 @@ std::vector<int> owning_tets(std::span<const Tet> tets, std::span<const Triangle
 Vec3 triangle_normal(const Triangle& t, std::span<const Vec3> x);
 double triangle_area(const Triangle& t, std::span<const Vec3> x);
 
+// Each node's share of a surface's area: a third of every triangle it belongs to, over the total
+// (nodes ascending, shares summing to 1); the weights that spread a force over a surface.
+struct AreaShares {
+  std::vector<int> nodes;
+  std::vector<double> share;
+  double area = 0.0;  // m^2, the surface's total
+};
+AreaShares area_shares(const std::vector<Triangle>& surface, const std::vector<Vec3>& X);
+
 }  // namespace ccm

@@ -30,7 +30,7 @@ struct RigKey {
 
 constexpr ValueBound kPositive{};
 constexpr ValueBound kNonNegative{0.0, false};
-constexpr std::array<RigKey, 17> kRigKeys = {{
+constexpr std::array<RigKey, 20> kRigKeys = {{
     {"hanging_mass", "kg", &RigParameters::hanging_mass, kPositive},
     {"impactor_mass", "kg", &RigParameters::impactor_mass, kPositive},
     {"spring_stiffness", "N/m", &RigParameters::spring_stiffness, kPositive},
@@ -40,6 +40,9 @@ constexpr std::array<RigKey, 17> kRigKeys = {{
     {"artifact_inertia_pivot", "kg m^2", &RigParameters::artifact_inertia_pivot, kPositive},
     {"clamp_stiffness", "N m/rad", &RigParameters::clamp_stiffness, kPositive},
     {"clamp_damping", "N m s/rad", &RigParameters::clamp_damping, kNonNegative},
+    {"mat_stiffness", "N/m^n", &RigParameters::mat_stiffness, kNonNegative},
+    {"mat_exponent", "1", &RigParameters::mat_exponent, kPositive},
+    {"mat_damping", "s/m", &RigParameters::mat_damping, kNonNegative},
     {"pivot_to_sensor", "m", &RigParameters::pivot_to_sensor, kPositive},
     {"sensor_area", "m^2", &RigParameters::sensor_area, kPositive},
     {"sensor_deadband", "kPa", &RigParameters::sensor_deadband, kPositive},

@@ -28,6 +28,9 @@ struct RigParameters {
   SourcedValue artifact_inertia_pivot;    // kg m^2, J about the centre of rotation
   SourcedValue clamp_stiffness;           // N m/rad, the Fixed artifact's pin clamp (torsional)
   SourcedValue clamp_damping;             // N m s/rad, its damper
+  SourcedValue mat_stiffness;             // N/m^n, the sensor mat's law (0: exact contact)
+  SourcedValue mat_exponent;              // 1, its n
+  SourcedValue mat_damping;               // s/m, its Hunt-Crossley lambda
   SourcedValue pivot_to_sensor;           // m, centre of rotation to the contact point
   SourcedValue sensor_area;               // m^2, A_p of the pressure sensor (eq. 3.8)
   SourcedValue sensor_deadband;           // kPa, pressures below read 0

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 #include "engine/mesh/boundary_surface.hpp"
@@ -15,18 +14,11 @@ HangingWeightDrive::HangingWeightDrive(const ModelMesh& mesh,
                                        std::vector<int> impactor_nodes, const Vec3& track,
                                        HangingWeightSettings settings)
     : nodes_(std::move(impactor_nodes)), set_(settings) {
-  std::map<int, double> share;
-  double total = 0.0;
-  for (const Triangle& t : drive_surface) {
-    const double A = triangle_area(t, mesh.X);
-    total += A;
-    for (int n : t) share[n] += A / 3.0;
-  }
-  if (!(total > 0.0)) throw std::invalid_argument("hanging weight: the drive surface has no area");
-  for (const auto& [n, a] : share) {
-    drive_nodes_.push_back(n);
-    drive_share_.push_back(a / total);
-  }
+  AreaShares shares = area_shares(drive_surface, mesh.X);
+  if (!(shares.area > 0.0))
+    throw std::invalid_argument("hanging weight: the drive surface has no area");
+  drive_nodes_ = std::move(shares.nodes);
+  drive_share_ = std::move(shares.share);
   if (nodes_.empty()) throw std::invalid_argument("hanging weight: no impactor node");
   if (!(track.norm() > 0.0)) throw std::invalid_argument("hanging weight: zero track direction");
   if (!(set_.weight_mass > 0.0) || !(set_.string_stiffness > 0.0))

@@ -174,9 +174,17 @@ void name_surfaces(const RigGeometry& g, const Layout& l, RigModel& r) {
   const double rr = g.impactor.rod_diameter.value / 2;
   std::vector<Triangle> tip;
   for (const Triangle& t : body_named(mesh, "rod").boundary) {
-    bool near_tip = true;
-    for (int n : t) near_tip = near_tip && X[static_cast<size_t>(n)].y() >= l.tip_y - rr - tol;
+    bool near_tip = true, on_face = true;
+    for (int n : t) {
+      near_tip = near_tip && X[static_cast<size_t>(n)].y() >= l.tip_y - rr - tol;
+      on_face = on_face && std::abs(X[static_cast<size_t>(n)].y() - l.tip_y) <= tol;
+    }
     if (near_tip) tip.push_back(t);
+    if (on_face) r.tip_face.push_back(t);
+  }
+  for (const Triangle& t : sensor) {
+    const Vec3 c = centroid(t, X);
+    if (std::hypot(c.x(), c.z() - l.zc) <= rr) r.mat_footprint.push_back(t);
   }
   std::vector<Triangle> drive;
   for (const Triangle& t : body_named(mesh, "carriage").boundary) {

@@ -49,6 +49,8 @@ struct RigModel {
   std::vector<Triangle> drive_surface;        // the carriage's front face (thesis Fig. 3-16)
   std::vector<std::string> contact_surfaces;  // for the DCR: "rod/tip", "envelope/contact_zone"
   std::vector<int> sensor_nodes;              // the Pliance patch (eq. 3.8's Gamma_s)
+  std::vector<Triangle> tip_face;             // the rod's flat tip (the sensor mat's one side)
+  std::vector<Triangle> mat_footprint;        // the sensor's triangles the tip covers (its other)
   double sensor_mesh_area = 0.0;              // m^2, of its triangles
   int pearl_front = -1, pearl_back = -1;      // V_i (Fig. 3-6/3-20)
   int angle_node = -1;                        // theta_a (Fig. 3-21, eq. 3.7)

@@ -11,12 +11,12 @@
 #include "engine/bc/pin_joint.hpp"
 #include "engine/bc/slide_constraint.hpp"
 #include "engine/bc/track_friction.hpp"
-#include "engine/contact/dcr/dcr_contact.hpp"
 #include "rig_models/drive/hanging_weight_drive.hpp"
 #include "rig_models/drive/open_loop_drive.hpp"
 #include "rig_models/geometry/rig_model.hpp"
 #include "rig_models/post/rig_channels.hpp"
 #include "rig_models/signal/resample.hpp"
+#include "rig_models/sim/rig_contact.hpp"
 
 namespace ccm::rig {
 namespace {
@@ -59,10 +59,6 @@ struct Samples {
   std::vector<Eigen::Vector3d> v_front, v_back;
   std::vector<double> u_y, x_z, pressure_pa, pin_angle;
 };
-
-// The DCR's sensor pressure column (engine/contact/dcr/contact_output.hpp, thesis eq. 3.8).
-constexpr const char* kSensorSurface = "envelope/sensor";
-std::string sensor_pressure_column() { return fmt::format("contact.{}.pressure", kSensorSurface); }
 
 RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, const PinJointSpec& pin) {
   RigModelFacts f;
@@ -186,23 +182,13 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   SlideConstraint guide(rig.guide_nodes, rig.track);
   const PinJointSpec pin_spec = pin_of(rig, c, par);
   PinJoint pin_joint(pin_spec, rig.model.mesh.X);
-  dcr::DcrSettings contact;
-  contact.surfaces = rig.contact_surfaces;
-  contact.friction = setup.geometry.contact.friction.value;
-  contact.restitution = setup.geometry.contact.restitution.value;
-  contact.output.force_axis = rig.track;
-  contact.output.sensors = {kSensorSurface};
-  dcr::DcrContact dcr(rig.model.mesh, contact, rig.model.bcs.fixed_nodes);
-  const std::vector<std::string> columns = dcr.history_columns();
-  const auto pressure_at = static_cast<size_t>(
-      std::find(columns.begin(), columns.end(), sensor_pressure_column()) - columns.begin());
-  std::vector<double> row;
+  RigContact contact(rig, setup.geometry, table.rig, par);
 
   Samples s;
   RunOptions opt;
   opt.time.end_time = w.end - w.start;
   opt.time.output_interval = table.simulation.output_interval.value;
-  opt.contact = &dcr;
+  contact.attach(opt);
   opt.constraints.push_back(&guide);
   opt.constraints.push_back(&pin_joint);
   opt.constraints.push_back(&track_friction);
@@ -215,9 +201,7 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
     s.v_back.push_back(st.v[static_cast<size_t>(rig.pearl_back)]);
     s.u_y.push_back(st.x[angle].y() - st.X[angle].y());
     s.x_z.push_back(rig.pin_point.z() - st.x[angle].z());  // current distance below the pin
-    row.clear();
-    dcr.append_history(st, row);  // closes the output interval of the contact output
-    s.pressure_pa.push_back(row.at(pressure_at));
+    s.pressure_pa.push_back(contact.sensor_pressure(st));
     s.pin_angle.push_back(pin_joint.angle());
   };
   if (req.instrument) req.instrument(rig.model, opt);

@@ -28,6 +28,8 @@ RunParameters default_parameters(const RigCaseTable& table, const RigCase& c) {
   p.spring_stiffness = table.rig.spring_stiffness.value;
   p.clamp_stiffness = table.rig.clamp_stiffness.value;
   p.clamp_damping = table.rig.clamp_damping.value;
+  p.mat_stiffness = table.rig.mat_stiffness.value;
+  p.mat_damping = table.rig.mat_damping.value;
   return p;
 }
 
@@ -54,6 +56,8 @@ double get_parameter(const RunParameters& p, std::string_view name) {
   if (name == "spring_stiffness") return p.spring_stiffness;
   if (name == "clamp_stiffness") return p.clamp_stiffness;
   if (name == "clamp_damping") return p.clamp_damping;
+  if (name == "mat_stiffness") return p.mat_stiffness;
+  if (name == "mat_damping") return p.mat_damping;
   throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
 }
 
@@ -75,6 +79,10 @@ void set_parameter(RunParameters& p, std::string_view name, double value) {
     p.clamp_stiffness = value;
   } else if (name == "clamp_damping") {
     p.clamp_damping = value;
+  } else if (name == "mat_stiffness") {
+    p.mat_stiffness = value;
+  } else if (name == "mat_damping") {
+    p.mat_damping = value;
   } else {
     throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
   }
@@ -85,6 +93,9 @@ std::string describe(const RunParameters& p, const RigCase& c, DriveKind drive) 
                          : std::string("pin frictionless");
   if (c.artifact == ArtifactKind::fixed)
     s += fmt::format(", clamp {:g} N m/rad, {:g} N m s/rad", p.clamp_stiffness, p.clamp_damping);
+  s += p.mat_stiffness > 0.0
+           ? fmt::format(", sensor mat {:g} N/m^n, lambda {:g} s/m", p.mat_stiffness, p.mat_damping)
+           : std::string(", exact contact");
   s += fmt::format(", track mu_s {:g}, mu_k {:g}, c {:g} N s/m{}", p.track_static_friction,
                    p.track_friction, p.track_damping,
                    drive == DriveKind::open_loop ? " (from the contact onset)" : "");

@@ -9,6 +9,8 @@
 //   spring_stiffness  N/m, K_s of the flexible impactor (eq. 3.1)
 //   clamp_stiffness   N m/rad, the Fixed artifact's pin clamp: a torsional spring about the pin
 //   clamp_damping     N m s/rad, its damper (engine/bc/pin_joint.hpp, PJ.1)
+//   mat_stiffness     N/m^n, the sensor mat's contact law (sim/sensor_mat.hpp; 0: exact contact)
+//   mat_damping       s/m, its Hunt-Crossley lambda
 #pragma once
 
 #include <array>
@@ -30,12 +32,13 @@ struct RunParameters {
   double track_damping = 0.0;
   double spring_stiffness = 0.0;
   double clamp_stiffness = 0.0, clamp_damping = 0.0;
+  double mat_stiffness = 0.0, mat_damping = 0.0;
 };
 
 // clang-format off
-inline constexpr std::array<std::string_view, 8> kRunParameterNames = {
+inline constexpr std::array<std::string_view, 10> kRunParameterNames = {
     "mu_s", "mu_k", "track_static_friction", "track_friction", "track_damping",
-    "spring_stiffness", "clamp_stiffness", "clamp_damping"};
+    "spring_stiffness", "clamp_stiffness", "clamp_damping", "mat_stiffness", "mat_damping"};
 // clang-format on
 
 // The case file's values for this case.

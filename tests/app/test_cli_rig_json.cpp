@@ -2,6 +2,8 @@
 // store, as one JSON document on stdout.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "db/sqlite/connection.hpp"
 #include "db/sqlite/statement.hpp"
@@ -137,6 +139,37 @@ TEST_CASE("ccm rig run: a rig.toml beside the trials sets their sensor's area an
   CHECK(bad.status == 2);
   CHECK(bad.err.find("rig.toml:2: rig.sensor_area") != std::string::npos);
   CHECK_FALSE(fs::exists(dir.path / "c.sqlite"));
+}
+
+TEST_CASE("ccm rig run: through the sensor mat the blow reads a pressure and lasts longer",
+          "[cli][rig][sensor_mat][heavy]") {
+  // RX025 in the short geometry, 19 ms around the contact, three times: the exact contact, and
+  // the mat at two stiffnesses. The mat's pressure is its force over the patch (eq. 3.8); a
+  // softer mat (a quarter of the stiffness) stretches the pulse: a lower peak (its impulse
+  // against the momentum: tests/rig_models/sim/test_sensor_mat.cpp).
+  test::TempDir dir;
+  const std::string run =
+      "rig run RX025 --data '" + (fs::path(CCM_SOURCE_DIR) / "tests/data/rig-dev").string() +
+      "' --geometry '" +
+      (fs::path(CCM_SOURCE_DIR) / "tests/rig_models/data/short_geometry.toml").string() +
+      "' --start 0.0595 --end 0.0785 --json";
+  std::vector<nlohmann::json> out;
+  for (const std::string set : {"", " --set mat_stiffness=4e4", " --set mat_stiffness=1e4"}) {
+    const auto r =
+        test::run_ccm(run + set + " --db '" +
+                          (dir.path / (std::to_string(out.size()) + ".sqlite")).string() + "'",
+                      dir);
+    INFO(set << ": " << r.err);
+    REQUIRE(r.status == 0);
+    out.push_back(nlohmann::json::parse(r.out));
+  }
+  const auto peak = [](const nlohmann::json& j) {
+    return j["comparison"]["channels"]["pressure"]["per_trial"][0]["peak_simulated"].get<double>();
+  };
+  CHECK(peak(out[1]) > 0.0);
+  CHECK(peak(out[2]) < peak(out[1]));
+  CHECK(out[1]["parameters"].get<std::string>().find("mat_stiffness=40000") != std::string::npos);
+  CHECK(out[0]["parameters"].get<std::string>().find("mat_stiffness=0") != std::string::npos);
 }
 
 }  // namespace ccm
