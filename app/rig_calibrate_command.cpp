@@ -174,6 +174,22 @@ int calibrate(const RigCalibrateArgs& args) {
     rec.parameters.push_back(
         {params[i].name, params[i].lower, params[i].upper, params[i].initial, result.best[i]});
   rec.history = history;
+  const std::vector<rig::ParameterSpread> spread =
+      args.profile ? profile_calibration(in, common, params, result.best, result.best_objective)
+                   : std::vector<rig::ParameterSpread>{};
+  for (size_t i = 0; i < spread.size(); ++i) {
+    rec.parameters[i].curvature = spread[i].curvature;
+    rec.parameters[i].half_width = spread[i].half_width;
+  }
+  const std::vector<Prediction> predictions = run_predictions(predicted, params, result.best);
+  for (const Prediction& p : predictions) {
+    const PredictionCase& c = *p.predicted;
+    rec.predictions.push_back(
+        {c.inputs.rig_case->code,
+         store.record_run(store_record(c.inputs, p.start, c.args, "calibration")),
+         store.record_run(store_record(c.inputs, p.calibrated, c.args, "calibration")),
+         p.start.objective, p.calibrated.objective});
+  }
   rec.started_at = started;
   rec.ended_at = utc_timestamp_now();
   const long long id = store.record_calibration(rec);
@@ -192,8 +208,8 @@ int calibrate(const RigCalibrateArgs& args) {
     fmt::print("\nAfter (rig_runs.id {}):\n{}{}", after_id, run_table(in, after),
                comparison_table(in, after));
     fmt::print("\nstored in {} (rig_calibrations.id {})\n", in.db.string(), id);
-    if (args.profile) report_spread(in, common, params, result.best, result.best_objective);
-    report_predictions(predicted, params, result.best);
+    print_spread(spread);
+    print_predictions(predictions);
   }
   return exit_code::completed;
 }

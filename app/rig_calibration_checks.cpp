@@ -86,9 +86,9 @@ std::vector<PredictionCase> read_prediction_cases(const RigCalibrateArgs& args,
   return out;
 }
 
-void report_spread(const RigInputs& in, const RigCommonArgs& args,
-                   const std::vector<rig::SearchParameter>& params, const std::vector<double>& best,
-                   double best_objective) {
+std::vector<rig::ParameterSpread> profile_calibration(
+    const RigInputs& in, const RigCommonArgs& args, const std::vector<rig::SearchParameter>& params,
+    const std::vector<double>& best, double best_objective) {
   int evaluation = 0;
   const rig::SearchObjective objective =
       [&](const std::vector<double>& x) -> std::optional<double> {
@@ -98,12 +98,22 @@ void report_spread(const RigInputs& in, const RigCommonArgs& args,
     if (o.result.summary.verdict != Verdict::completed) return std::nullopt;
     return o.objective;
   };
-  const rig::ProfileSettings settings;
-  const std::vector<rig::ParameterSpread> spread =
-      rig::profile_parameters(params, best, best_objective, objective, settings);
+  std::vector<rig::ParameterSpread> spread =
+      rig::profile_parameters(params, best, best_objective, objective, rig::ProfileSettings{});
+  for (const rig::ParameterSpread& s : spread)
+    if (s.on_lower_bound || s.on_upper_bound)
+      fmt::print(stderr,
+                 "ccm: warning: {} ended on its {} bound ({:g}): its best may lie beyond; widen "
+                 "--bounds {}=lo:hi\n",
+                 s.name, s.on_lower_bound ? "lower" : "upper", s.best, s.name);
+  return spread;
+}
+
+void print_spread(const std::vector<rig::ParameterSpread>& spread) {
+  if (spread.empty()) return;
   fmt::print(
       "\nSpread ({:.0f} % rise of the objective; a sensitivity, not a confidence interval)\n",
-      100.0 * settings.rise);
+      100.0 * rig::ProfileSettings{}.rise);
   fmt::print("  {:<22} {:>12} {:>12} {:>12}\n", "parameter", "best", "+-", "curvature");
   for (const rig::ParameterSpread& s : spread) {
     const std::string width = s.half_width  ? fmt::format("{:.4g}", *s.half_width)
@@ -111,32 +121,36 @@ void report_spread(const RigInputs& in, const RigCommonArgs& args,
                                             : std::string("- (a run failed)");
     fmt::print("  {:<22} {:>12.6g} {:>12} {:>12}\n", s.name, s.best, width,
                s.curvature ? fmt::format("{:.4g}", *s.curvature) : std::string("-"));
-    if (s.on_lower_bound || s.on_upper_bound)
-      fmt::print(stderr,
-                 "ccm: warning: {} ended on its {} bound ({:g}): its best may lie beyond; widen "
-                 "--bounds {}=lo:hi\n",
-                 s.name, s.on_lower_bound ? "lower" : "upper", s.best, s.name);
   }
 }
 
-void report_predictions(std::vector<PredictionCase>& cases,
-                        const std::vector<rig::SearchParameter>& params,
-                        const std::vector<double>& best) {
-  if (cases.empty()) return;
+std::vector<Prediction> run_predictions(const std::vector<PredictionCase>& cases,
+                                        const std::vector<rig::SearchParameter>& params,
+                                        const std::vector<double>& best) {
+  std::vector<double> start;
+  for (const rig::SearchParameter& p : params) start.push_back(p.initial);
+  std::vector<Prediction> out;
+  for (const PredictionCase& c : cases) {
+    const RigInputs& in = c.inputs;
+    out.push_back({&c,
+                   run_rig_once(in, c.args, with_values(in.parameters, params, start),
+                                in.rig_case->code + " start"),
+                   run_rig_once(in, c.args, with_values(in.parameters, params, best),
+                                in.rig_case->code + " calibrated")});
+  }
+  return out;
+}
+
+void print_predictions(const std::vector<Prediction>& predictions) {
+  if (predictions.empty()) return;
   fmt::print("\nLeft out of the fit ({})\n", rig::kObjectiveName);
   fmt::print("  {:<8} {:>12} {:>12}  scored on\n", "case", "start", "calibrated");
-  for (PredictionCase& c : cases) {
-    const RigInputs& in = c.inputs;
-    std::vector<double> start;
-    for (const rig::SearchParameter& p : params) start.push_back(p.initial);
-    const RigRunOutcome before = run_rig_once(in, c.args, with_values(in.parameters, params, start),
-                                              in.rig_case->code + " start");
-    const RigRunOutcome after = run_rig_once(in, c.args, with_values(in.parameters, params, best),
-                                             in.rig_case->code + " calibrated");
-    const rig::RunWindow& w = after.result.window;
+  for (const Prediction& p : predictions) {
+    const RigInputs& in = p.predicted->inputs;
+    const rig::RunWindow& w = p.calibrated.result.window;
     fmt::print("  {:<8} {:>12} {:>12}  {}; window {:.9g} to {:.9g} s\n", in.rig_case->code,
-               objective_text(before), objective_text(after), scored_trials_text(in), w.start,
-               w.end);
+               objective_text(p.start), objective_text(p.calibrated), scored_trials_text(in),
+               w.start, w.end);
   }
 }
 

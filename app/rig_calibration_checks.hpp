@@ -13,7 +13,9 @@
 
 #include "app/rig_commands.hpp"
 #include "app/rig_inputs.hpp"
+#include "app/rig_output.hpp"
 #include "rig_models/calibrate/bounded_search.hpp"
+#include "rig_models/calibrate/parameter_profile.hpp"
 
 namespace ccm {
 
@@ -35,15 +37,21 @@ std::vector<PredictionCase> read_prediction_cases(const RigCalibrateArgs& args,
                                                   const RigInputs& fitted,
                                                   const std::vector<rig::SearchParameter>& params);
 
-// The spread of each parameter at `best` (2-3 runs of the fitted case each), printed, and a
-// warning on stderr for each that ended on a bound.
-void report_spread(const RigInputs& in, const RigCommonArgs& args,
-                   const std::vector<rig::SearchParameter>& params, const std::vector<double>& best,
-                   double best_objective);
+// The spread of each parameter at `best` (2-3 runs of the fitted case each), and a warning on
+// stderr for each that ended on a bound.
+std::vector<rig::ParameterSpread> profile_calibration(
+    const RigInputs& in, const RigCommonArgs& args, const std::vector<rig::SearchParameter>& params,
+    const std::vector<double>& best, double best_objective);
+void print_spread(const std::vector<rig::ParameterSpread>& spread);
 
-// Each predicted case run with the starting and with the calibrated parameters; printed.
-void report_predictions(std::vector<PredictionCase>& cases,
-                        const std::vector<rig::SearchParameter>& params,
-                        const std::vector<double>& best);
+// Each predicted case run with the starting and with the calibrated parameters.
+struct Prediction {
+  const PredictionCase* predicted = nullptr;
+  RigRunOutcome start, calibrated;
+};
+std::vector<Prediction> run_predictions(const std::vector<PredictionCase>& cases,
+                                        const std::vector<rig::SearchParameter>& params,
+                                        const std::vector<double>& best);
+void print_predictions(const std::vector<Prediction>& predictions);
 
 }  // namespace ccm

@@ -369,8 +369,26 @@ ALTER TABLE metrics ADD COLUMN error_contact_duration REAL;
 ALTER TABLE metrics ADD COLUMN error_rebound_speed REAL;
 )sql";
 
-constexpr std::array<const char*, 7> kSteps = {kStep1, kStep2, kStep3, kStep4,
-                                               kStep5, kStep6, kStep7};
+// Step 8: how far to trust a rig calibration (app/rig_calibration_checks.hpp): each parameter's
+// spread (the objective's curvature along it and the half-width of a 5 % rise; NULL when not
+// profiled or a run failed), and the calibrated parameters' score on cases left out of the fit,
+// each run with the starting and the calibrated parameters.
+constexpr const char* kStep8 = R"sql(
+ALTER TABLE rig_calibration_parameters ADD COLUMN curvature REAL;
+ALTER TABLE rig_calibration_parameters ADD COLUMN half_width REAL;
+CREATE TABLE rig_calibration_predictions (
+  calibration_id INTEGER NOT NULL REFERENCES rig_calibrations(id) ON DELETE CASCADE,
+  case_code TEXT NOT NULL,
+  start_run_id INTEGER NOT NULL REFERENCES rig_runs(id),
+  calibrated_run_id INTEGER NOT NULL REFERENCES rig_runs(id),
+  objective_start REAL,
+  objective_calibrated REAL,
+  PRIMARY KEY (calibration_id, case_code)
+);
+)sql";
+
+constexpr std::array<const char*, 8> kSteps = {kStep1, kStep2, kStep3, kStep4,
+                                               kStep5, kStep6, kStep7, kStep8};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

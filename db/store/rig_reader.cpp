@@ -246,12 +246,21 @@ std::vector<RigCalibrationRecord> load_rig_calibrations(Connection& c) {
     k.started_at = s.column_text(12);
     k.ended_at = s.column_text(13);
     Statement p(c,
-                "SELECT name, lower, upper, initial, final FROM rig_calibration_parameters "
-                "WHERE calibration_id = ?1 ORDER BY name");
+                "SELECT name, lower, upper, initial, final, curvature, half_width FROM "
+                "rig_calibration_parameters WHERE calibration_id = ?1 ORDER BY name");
     p.bind(1, id);
     while (p.step())
       k.parameters.push_back({p.column_text(0), p.column_double(1), p.column_double(2),
-                              p.column_double(3), p.column_double(4)});
+                              p.column_double(3), p.column_double(4), p.column_optional_double(5),
+                              p.column_optional_double(6)});
+    Statement w(c,
+                "SELECT case_code, start_run_id, calibrated_run_id, objective_start, "
+                "objective_calibrated FROM rig_calibration_predictions WHERE calibration_id = ?1 "
+                "ORDER BY case_code");
+    w.bind(1, id);
+    while (w.step())
+      k.predictions.push_back({w.column_text(0), w.column_int(1), w.column_int(2),
+                               w.column_optional_double(3), w.column_optional_double(4)});
     Statement e(c,
                 "SELECT parameters, objective, status, wall_seconds FROM "
                 "rig_calibration_evaluations WHERE calibration_id = ?1 ORDER BY evaluation");

@@ -260,12 +260,22 @@ long long RigStore::record_calibration(const RigCalibrationRecord& r) {
   const long long id = connection_->last_insert_rowid();
   Statement q(*connection_,
               "INSERT INTO rig_calibration_parameters (calibration_id, name, lower, upper, "
-              "initial, final) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+              "initial, final, curvature, half_width) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
   for (const RigCalibrationParameter& x : r.parameters) {
     q.reset();
     q.bind(1, id).bind(2, x.name).bind(3, x.lower).bind(4, x.upper).bind(5, x.initial);
-    q.bind(6, x.final);
+    q.bind(6, x.final).bind(7, x.curvature).bind(8, x.half_width);
     q.run();
+  }
+  Statement w(*connection_,
+              "INSERT INTO rig_calibration_predictions (calibration_id, case_code, start_run_id, "
+              "calibrated_run_id, objective_start, objective_calibrated) VALUES "
+              "(?1, ?2, ?3, ?4, ?5, ?6)");
+  for (const RigCalibrationPrediction& x : r.predictions) {
+    w.reset();
+    w.bind(1, id).bind(2, x.case_code).bind(3, x.start_run_id).bind(4, x.calibrated_run_id);
+    w.bind(5, x.objective_start).bind(6, x.objective_calibrated);
+    w.run();
   }
   Statement e(*connection_,
               "INSERT INTO rig_calibration_evaluations (calibration_id, evaluation, parameters, "

@@ -58,6 +58,14 @@ struct RigRunRecord {
 struct RigCalibrationParameter {
   std::string name;
   double lower = 0.0, upper = 0.0, initial = 0.0, final = 0.0;
+  std::optional<double> curvature, half_width;  // the spread; none when not profiled
+};
+
+// A case left out of the fit, run with the starting and the calibrated parameters.
+struct RigCalibrationPrediction {
+  std::string case_code;
+  long long start_run_id = 0, calibrated_run_id = 0;
+  std::optional<double> objective_start, objective_calibrated;  // none: not compared
 };
 
 struct RigCalibrationEvaluation {
@@ -74,6 +82,7 @@ struct RigCalibrationRecord {
   double objective_before = 0.0, objective_after = 0.0;
   std::vector<RigCalibrationParameter> parameters;
   std::vector<RigCalibrationEvaluation> history;
+  std::vector<RigCalibrationPrediction> predictions;
   std::string started_at, ended_at;
 };
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "reports/figures/rig_channel_figures.hpp"
 #include "reports/figures/rig_tables.hpp"
 
@@ -23,6 +25,10 @@ Section rig_section(const RigReportData& rig) {
     s.tables.push_back(rig_runs_table(rig));
   }
   if (!rig.calibrations.empty()) s.tables.push_back(rig_calibration_table(rig));
+  const bool any_left_out =
+      std::any_of(rig.calibrations.begin(), rig.calibrations.end(),
+                  [](const db::RigCalibrationRecord& k) { return !k.predictions.empty(); });
+  if (any_left_out) s.tables.push_back(rig_prediction_table(rig));
   return s;
 }
 

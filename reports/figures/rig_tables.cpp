@@ -32,6 +32,11 @@ double mean_nrmse(const rig::ChannelAgainstTrials& a) {
 
 std::string optional_cell(const std::optional<double>& v) { return v ? cell(*v) : "-"; }
 
+std::string spread_cell(const db::RigCalibrationParameter& p) {
+  if (p.half_width) return cell(*p.half_width);
+  return p.curvature ? "unidentified" : "-";
+}
+
 std::string mean_cell(const std::optional<rig::Spread>& s) {
   return s ? cell(s->mean) : std::string("-");
 }
@@ -84,16 +89,39 @@ Table rig_runs_table(const RigReportData& rig) {
 Table rig_calibration_table(const RigReportData& rig) {
   Table t{.id = "rig-calibrations",
           .caption =
-              "Every calibration: each parameter before and after, within its bounds, "
-              "and the objective before and after.",
-          .header = {"case", "algorithm", "parameter", "lower", "upper", "before", "after",
+              "Every calibration: each parameter before and after, within its bounds, its "
+              "spread (the half-width over which the objective rises 5 %: a sensitivity, not a "
+              "confidence interval; '-' when not profiled, 'unidentified' where the objective "
+              "does not rise), and the objective before and after.",
+          .header = {"case", "algorithm", "parameter", "lower", "upper", "before", "after", "+-",
                      "objective", "objective before", "objective after", "evaluations", "result"}};
   for (const db::RigCalibrationRecord& k : rig.calibrations)
     for (const db::RigCalibrationParameter& p : k.parameters)
       t.rows.push_back({fmt::format("{} ({} drive)", k.case_code, k.drive), k.algorithm, p.name,
                         cell(p.lower), cell(p.upper), cell(p.initial), cell(p.final),
-                        k.objective_name, cell(k.objective_before), cell(k.objective_after),
+                        spread_cell(p), k.objective_name, cell(k.objective_before),
+                        cell(k.objective_after),
                         fmt::format("{} of {}", k.evaluations, k.max_evaluations), k.result});
+  return t;
+}
+
+Table rig_prediction_table(const RigReportData& rig) {
+  Table t{.id = "rig-left-out",
+          .caption =
+              "Cases left out of each calibration (ccm rig calibrate --predict): the objective "
+              "with the starting and with the calibrated parameters, each scored on the case's "
+              "own trials. A calibration that generalises lowers both the fitted and these.",
+          .header = {"fitted case", "parameters", "left-out case", "objective with the start",
+                     "objective calibrated", "runs (rig_runs.id)"}};
+  for (const db::RigCalibrationRecord& k : rig.calibrations) {
+    std::string names;
+    for (const db::RigCalibrationParameter& p : k.parameters)
+      names += (names.empty() ? "" : ", ") + p.name;
+    for (const db::RigCalibrationPrediction& p : k.predictions)
+      t.rows.push_back({fmt::format("{} ({} drive)", k.case_code, k.drive), names, p.case_code,
+                        optional_cell(p.objective_start), optional_cell(p.objective_calibrated),
+                        fmt::format("{}, {}", p.start_run_id, p.calibrated_run_id)});
+  }
   return t;
 }
 

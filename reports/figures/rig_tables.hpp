@@ -11,5 +11,6 @@ namespace ccm::reports {
 Table rig_metrics_table(const RigReportData& rig);      // id rig-metrics
 Table rig_runs_table(const RigReportData& rig);         // id rig-runs
 Table rig_calibration_table(const RigReportData& rig);  // id rig-calibrations
+Table rig_prediction_table(const RigReportData& rig);   // id rig-left-out
 
 }  // namespace ccm::reports

@@ -80,8 +80,11 @@ TEST_CASE(
   SECTION("a store of an older schema is read (migrated in memory) and not changed") {
     const fs::path db = synthetic_store(dir, "old.sqlite");
     {
-      db::Connection c(db);  // back to schema 4: without the tables and columns of steps 5-7
-      c.exec("DROP TABLE comparisons; DROP TABLE study_grids; PRAGMA user_version = 4");
+      db::Connection c(db);  // back to schema 4: without the tables and columns of steps 5-8
+      c.exec(
+          "DROP TABLE comparisons; DROP TABLE study_grids; DROP TABLE rig_calibration_predictions; "
+          "ALTER TABLE rig_calibration_parameters DROP COLUMN curvature; ALTER TABLE "
+          "rig_calibration_parameters DROP COLUMN half_width; PRAGMA user_version = 4");
       for (const char* column :
            {"peak_force_ccm", "peak_force_rigid", "indentation_ccm", "indentation_rigid",
             "contact_duration_ccm", "contact_duration_rigid", "rebound_speed_ccm",

@@ -77,7 +77,13 @@ long long write_synthetic_rig(const std::filesystem::path& file) {
   k.after_run_id = after;
   k.objective_before = 0.4;
   k.objective_after = 0.25;
-  k.parameters = {{"pin_damping", 0.0, 2.0, 0.5, 1.25}};
+  k.parameters = {{"pin_damping", 0.0, 2.0, 0.5, 1.25, 0.08, 0.25}};
+  r.row.case_code = "RX050";
+  r.row.objective = 0.5;
+  const long long left_out_start = store.record_run(r);
+  r.row.objective = 0.3;
+  const long long left_out_calibrated = store.record_run(r);
+  k.predictions = {{"RX050", left_out_start, left_out_calibrated, 0.5, 0.3}};
   k.history = {{"pin_damping=0.5", 0.4, "completed", 1.0},
                {"pin_damping=1.25", 0.25, "completed", 1.0}};
   k.started_at = k.ended_at = "2026-01-01T00:00:00.000Z";

@@ -163,8 +163,16 @@ TEST_CASE("report: ccm report writes the rig figures and tables with the stored 
   CHECK(calibrations[1][2] == "pin_damping");
   CHECK(calibrations[1][5] == cell(0.5));
   CHECK(calibrations[1][6] == cell(1.25));
-  CHECK(calibrations[1][8] == cell(0.4));
-  CHECK(calibrations[1][9] == cell(0.25));
+  CHECK(calibrations[1][7] == cell(0.25));  // the spread's half-width
+  CHECK(calibrations[1][9] == cell(0.4));
+  CHECK(calibrations[1][10] == cell(0.25));
+  const test::CsvRows left_out = test::read_csv(out / "rig-left-out.csv");
+  REQUIRE(left_out.size() == 2);
+  CHECK(left_out[1][0] == "RX025 (open-loop drive)");
+  CHECK(left_out[1][1] == "pin_damping");
+  CHECK(left_out[1][2] == "RX050");
+  CHECK(left_out[1][3] == cell(0.5));
+  CHECK(left_out[1][4] == cell(0.3));
 }
 
 }  // namespace

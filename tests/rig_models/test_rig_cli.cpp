@@ -139,15 +139,17 @@ void check_short_run(const std::string& code, bool score_drive_trial) {
   CHECK(largest_force > 1.0);  // N; the measured trials peak at about 80 kPa x A_p = 130 N
 }
 
-// `ccm rig calibrate CASE` short with 2 evaluations, then what it stored.
-void check_short_calibration(const std::string& code, const std::string& params) {
+// `ccm rig calibrate CASE` short with 2 evaluations, then what it stored; with the parameters'
+// spread (profiled, 2-3 more runs each) or without it (--no-profile).
+void check_short_calibration(const std::string& code, const std::string& params, bool profile) {
   test::TempDir dir;
   const fs::path db = dir.path / "cal.sqlite";
-  const Shell s = shell(rig(fmt::format("calibrate {} --params {} --max-evals 2 --data '{}' "
-                                        "--geometry '{}' {} --db '{}' --quiet",
-                                        code, params, kDevData.string(), kShortGeometry.string(),
-                                        kCalibrationWindow, db.string())),
-                        dir);
+  const Shell s =
+      shell(rig(fmt::format("calibrate {} --params {} --max-evals 2 --data '{}' "
+                            "--geometry '{}' {} --db '{}' --quiet{}",
+                            code, params, kDevData.string(), kShortGeometry.string(),
+                            kCalibrationWindow, db.string(), profile ? "" : " --no-profile")),
+            dir);
   INFO(s.err);
   REQUIRE(s.status == 0);
   db::Connection c(db);
@@ -182,6 +184,12 @@ void check_short_calibration(const std::string& code, const std::string& params)
                                          "rig_calibrations k ON r.id = k.before_run_id");
   CHECK(before_params.find("mu_s=") != std::string::npos);
   if (after != before) CHECK(after_params != before_params);
+  // The spread is stored when profiled (a curvature from three completed runs), NULL when not.
+  const long long n_params = std::count(params.begin(), params.end(), ',') + 1;
+  CHECK(test::count_rows(c, fmt::format("SELECT count(*) FROM rig_calibration_parameters WHERE "
+                                        "curvature IS {}NULL",
+                                        profile ? "NOT " : "")) == n_params);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibration_predictions") == 0);
   // The second evaluation moved every parameter inside its bounds.
   CHECK(test::count_rows(c,
                          "SELECT count(*) FROM rig_calibration_parameters WHERE final >= "
@@ -205,11 +213,11 @@ TEST_CASE(
 
 TEST_CASE("ccm rig calibrate RX025 (short): the fixed pin made frictional (thesis 3.4.1)",
           "[rig][rig-cli][heavy]") {
-  if (have_dev_data()) check_short_calibration("RX025", "mu_s,mu_k");
+  if (have_dev_data()) check_short_calibration("RX025", "mu_s,mu_k", false);
 }
 
 TEST_CASE("ccm rig calibrate FF025 (short): pin friction", "[rig][rig-cli][heavy]") {
-  if (have_dev_data()) check_short_calibration("FF025", "mu_s,mu_k");
+  if (have_dev_data()) check_short_calibration("FF025", "mu_s,mu_k", true);
 }
 
 TEST_CASE(
@@ -263,6 +271,17 @@ TEST_CASE(
   const size_t obj = plain.out.find("\"objective\":");
   REQUIRE(obj != std::string::npos);
   CHECK(std::stod(plain.out.substr(obj + 12)) == Approx(calibrated_score).margin(5e-6));
+  // The store keeps the left-out case with both its runs, and the parameter's spread.
+  db::Connection c(dir.path / "cal.sqlite");
+  CHECK(text(c, "SELECT case_code FROM rig_calibration_predictions") == "RX050");
+  CHECK(scalar(c, "SELECT objective_calibrated FROM rig_calibration_predictions") ==
+        Approx(calibrated_score).margin(5e-6));
+  CHECK(test::count_rows(c,
+                         "SELECT count(*) FROM rig_runs r JOIN rig_calibration_predictions p ON "
+                         "r.id IN (p.start_run_id, p.calibrated_run_id) WHERE r.case_code = "
+                         "'RX050'") == 2);
+  CHECK(scalar(c, "SELECT half_width FROM rig_calibration_parameters") ==
+        Approx(std::stod(width)).epsilon(1e-3));
   // Another configuration, or the fitted case itself, is refused before any run.
   for (const auto& [predict, why] :
        {std::pair<std::string, std::string>{"RF025", "not RX025's configuration"},
