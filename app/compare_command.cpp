@@ -138,9 +138,9 @@ std::string hash_with(const std::string& hash, const std::string& what) {
 }
 
 double last_sample_time(const ComparedRun& r) {
-  const auto t = std::find(r.columns.begin(), r.columns.end(), "time");
-  if (t == r.columns.end() || r.rows.empty()) return 0.0;
-  return r.rows.back()[static_cast<std::size_t>(t - r.columns.begin())];
+  const std::optional<std::size_t> t = r.column("time");
+  if (!t || r.rows.empty()) return 0.0;
+  return r.rows.back()[*t];
 }
 
 // The two runs, on common sample times. With [time] end_after_separation (a whole impact) the
@@ -219,9 +219,9 @@ nlohmann::json comparison_json(const CompareArgs& args, const std::vector<std::s
 // t_c: the first sample at which the artifact has moved (u_max above 1e-6 of its largest).
 std::optional<double> contact_time(const ComparedRun& d, const GroupsOrReason& g) {
   if (!g.groups || d.rows.empty()) return std::nullopt;
-  const auto col = std::find(d.columns.begin(), d.columns.end(), g.groups->artifact + ".u_max");
-  if (col == d.columns.end()) return std::nullopt;
-  const auto c = static_cast<size_t>(col - d.columns.begin());
+  const std::optional<std::size_t> col = d.column(g.groups->artifact + ".u_max");
+  if (!col) return std::nullopt;
+  const size_t c = *col;
   double largest = 0.0;
   for (const auto& row : d.rows) largest = std::max(largest, row[c]);
   for (const auto& row : d.rows)

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <stdexcept>
 
 namespace ccm::rig {
@@ -47,45 +48,48 @@ std::string parameter_problem(std::string_view name, const RigCase& c) {
   return {};
 }
 
+namespace {
+
+// The parameters held as plain numbers, by name (mu_s and mu_k are optional: a Fixed case's pin
+// has no friction until one is given).
+struct NumberParameter {
+  std::string_view name;
+  double RunParameters::*member;
+};
+constexpr std::array<NumberParameter, 8> kNumberParameters = {{
+    {"track_static_friction", &RunParameters::track_static_friction},
+    {"track_friction", &RunParameters::track_friction},
+    {"track_damping", &RunParameters::track_damping},
+    {"spring_stiffness", &RunParameters::spring_stiffness},
+    {"clamp_stiffness", &RunParameters::clamp_stiffness},
+    {"clamp_damping", &RunParameters::clamp_damping},
+    {"mat_stiffness", &RunParameters::mat_stiffness},
+    {"mat_damping", &RunParameters::mat_damping},
+}};
+
+double RunParameters::*number_member(std::string_view name) {
+  for (const NumberParameter& n : kNumberParameters)
+    if (n.name == name) return n.member;
+  throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
+}
+
+}  // namespace
+
 double get_parameter(const RunParameters& p, std::string_view name) {
   if (name == "mu_s") return p.mu_s.value_or(kFrictionalFixedMuS);
   if (name == "mu_k") return p.mu_k.value_or(kFrictionalFixedMuK);
-  if (name == "track_static_friction") return p.track_static_friction;
-  if (name == "track_friction") return p.track_friction;
-  if (name == "track_damping") return p.track_damping;
-  if (name == "spring_stiffness") return p.spring_stiffness;
-  if (name == "clamp_stiffness") return p.clamp_stiffness;
-  if (name == "clamp_damping") return p.clamp_damping;
-  if (name == "mat_stiffness") return p.mat_stiffness;
-  if (name == "mat_damping") return p.mat_damping;
-  throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
+  return p.*number_member(name);
 }
 
 void set_parameter(RunParameters& p, std::string_view name, double value) {
   if (name == "mu_s" || name == "mu_k") {
-    // Setting one coefficient of an exact ("fixed") pin makes it frictional: both then exist.
+    // Setting one coefficient of a Fixed case's frictionless clamp makes it frictional: both exist.
     if (!p.mu_s) p.mu_s = kFrictionalFixedMuS;
     if (!p.mu_k) p.mu_k = kFrictionalFixedMuK;
     (name == "mu_s" ? *p.mu_s : *p.mu_k) = value;
-  } else if (name == "track_static_friction") {
-    p.track_static_friction = value;
-  } else if (name == "track_friction") {
-    p.track_friction = value;
-  } else if (name == "track_damping") {
-    p.track_damping = value;
-  } else if (name == "spring_stiffness") {
-    p.spring_stiffness = value;
-  } else if (name == "clamp_stiffness") {
-    p.clamp_stiffness = value;
-  } else if (name == "clamp_damping") {
-    p.clamp_damping = value;
-  } else if (name == "mat_stiffness") {
-    p.mat_stiffness = value;
-  } else if (name == "mat_damping") {
-    p.mat_damping = value;
-  } else {
-    throw std::invalid_argument(fmt::format("unknown rig parameter '{}'", name));
+    return;
   }
+  p.*number_member(name) = value;
 }
 
 std::string describe(const RunParameters& p, const RigCase& c, DriveKind drive) {

@@ -1,6 +1,5 @@
 #include "run/compare/compare_impact.hpp"
 
-#include <algorithm>
 #include <vector>
 
 #include "study/metrics/impact_metrics.hpp"
@@ -8,18 +7,12 @@
 namespace ccm {
 namespace {
 
-std::optional<std::size_t> optional_column(const ComparedRun& run, const std::string& name) {
-  const auto it = std::find(run.columns.begin(), run.columns.end(), name);
-  if (it == run.columns.end()) return std::nullopt;
-  return static_cast<std::size_t>(it - run.columns.begin());
-}
-
 // The run's histories as a study run record keeps them; none when a column is missing.
 std::optional<study::RunRecord> as_record(const ComparedRun& run, const std::string& impactor,
                                           const std::string& artifact, double mass) {
-  const auto t = optional_column(run, "time"), u = optional_column(run, artifact + ".u_max");
-  const auto vx = optional_column(run, impactor + ".vx"), vy = optional_column(run, impactor + ".vy"),
-             vz = optional_column(run, impactor + ".vz");
+  const auto t = run.column("time"), u = run.column(artifact + ".u_max");
+  const auto vx = run.column(impactor + ".vx"), vy = run.column(impactor + ".vy"),
+             vz = run.column(impactor + ".vz");
   if (!t || !u || !vx || !vy || !vz) return std::nullopt;
   study::RunRecord r;
   r.impactor.mass = mass;

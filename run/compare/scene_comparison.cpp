@@ -15,10 +15,9 @@ namespace ccm {
 namespace {
 
 size_t column_of(const ComparedRun& run, const std::string& name) {
-  const auto it = std::find(run.columns.begin(), run.columns.end(), name);
-  if (it == run.columns.end())
-    throw std::logic_error(fmt::format("compare: no column '{}' in a run", name));
-  return static_cast<size_t>(it - run.columns.begin());
+  const std::optional<std::size_t> c = run.column(name);
+  if (!c) throw std::logic_error(fmt::format("compare: no column '{}' in a run", name));
+  return *c;
 }
 
 std::vector<double> series(const ComparedRun& run, const std::string& name) {
@@ -43,6 +42,12 @@ std::string unusable_reason(const ComparedRun& d, const ComparedRun& r) {
 }
 
 }  // namespace
+
+std::optional<std::size_t> ComparedRun::column(const std::string& name) const {
+  const auto it = std::find(columns.begin(), columns.end(), name);
+  if (it == columns.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - columns.begin());
+}
 
 std::vector<std::string> default_observables(const Scene& variant) {
   std::vector<std::string> out;

@@ -4,6 +4,7 @@
 // the two step loops, and the answer of the one decision rule (study/recommend/decision_rule.hpp).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct ComparedRun {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
   bool reused = false;  // read back from an earlier comparison, not run again
+
+  // The index of the history column `name`; none when the run has no such column.
+  std::optional<std::size_t> column(const std::string& name) const;
 };
 
 struct ObservableErrors {

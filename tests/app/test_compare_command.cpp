@@ -172,20 +172,8 @@ TEST_CASE("ccm compare on a whole impact: both runs end together, after both hav
 // compares whole impacts. The comparison is recorded in the main job's store, not the reference.
 TEST_CASE("ccm compare without --db: the prediction from the reference store", "[compare][cli]") {
   ccm::test::TempDir dir;
-  std::string bodies(ccm::test::kTinyGridBodies);
-  bodies.replace(bodies.find("E = 1000.0"), 10, "E = 1.0e5");
-  const fs::path grid = dir.write("reference.toml", R"(title = "reference"
-[axes]
-ER = [1.0, 100.0]
-RLS = [0.5]
-KE = [1.0]
-density_ratio = [1.0, 7.8]
-[time]
-contact_time = 0.02
-end = 0.4
-output_interval = 1e-3
-end_after_separation = 0.005
-)" + bodies);
+  const fs::path grid = dir.write(
+      "reference.toml", ccm::test::whole_impact_grid("reference", "density_ratio = [1.0, 7.8]\n"));
   const fs::path data = dir.path / "data";
   fs::create_directories(data / "rig");
   fs::create_directories(data / "reference");

@@ -314,26 +314,8 @@ TEST_CASE("ccm study scene: the printed scene, run alone, repeats the stored run
 
 namespace {
 
-// kTinyGrid's bodies on a stiffer plate (E_A 1e5 Pa), hit harder, as whole impacts: each run ends
-// 5 ms after its bodies separate, the guard `end` far beyond the impact. The rigid run separates
-// near 0.05 s; at ER 1 the CCM run near 0.24 s, so the rigid run is run again to that end.
-std::string whole_impact_grid() {
-  std::string bodies(test::kTinyGridBodies);
-  bodies.replace(bodies.find("E = 1000.0"), 10, "E = 1.0e5");
-  return R"(title = "whole"
-[axes]
-ER = [1.0, 100.0]
-RLS = [0.5]
-KE = [1.0]
-[time]
-contact_time = 0.02
-end = 0.4
-output_interval = 1e-3
-end_after_separation = 0.005
-)" + bodies;
-}
-
-constexpr double kWholeImpactGuard = 0.4;
+std::string whole_impact_grid() { return test::whole_impact_grid("whole"); }
+using test::kWholeImpactGuard;
 
 double last_time(const study::RunRecord& r) { return r.artifact.time.back(); }
 
