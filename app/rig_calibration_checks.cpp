@@ -7,7 +7,7 @@
 
 #include "app/rig_runner.hpp"
 #include "rig_models/calibrate/parameter_profile.hpp"
-#include "rig_models/compare/channel_metrics.hpp"
+#include "rig_models/sim/run_window.hpp"
 
 namespace ccm {
 namespace {
@@ -43,12 +43,7 @@ std::string check_prediction(const std::string& code, const RigInputs& fitted,
 
 // The measured contact onset of the run's driving trial [s, trial time].
 double drive_onset(const RigInputs& in) {
-  const auto contact =
-      rig::first_contact(in.drive_trial->pressure_kpa, in.cases.rig.sensor_deadband.value);
-  if (!contact)
-    throw std::invalid_argument(
-        fmt::format("{}: no measured contact above the deadband", in.drive_trial->source.string()));
-  return contact->onset;
+  return rig::measured_onset(*in.drive_trial, in.cases.rig.sensor_deadband.value);
 }
 
 // The fitted case's --start and --end moved to the predicted case's own contact onset.

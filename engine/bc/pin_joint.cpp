@@ -5,21 +5,19 @@
 #include <stdexcept>
 
 #include "engine/core/parameter_ranges.hpp"
+#include "engine/core/unit_direction.hpp"
 
 namespace ccm {
 
 PinJoint::PinJoint(PinJointSpec spec, const std::vector<Vec3>& X) : spec_(std::move(spec)) {
-  const double norm = spec_.axis_direction.norm();
   if (spec_.nodes.empty()) throw std::invalid_argument("pin joint: no node");
-  if (!(norm > 0.0) || !std::isfinite(norm))
-    throw std::invalid_argument("pin joint: the axis direction must be non-zero and finite");
+  e_ = unit_direction(spec_.axis_direction, "pin joint: the axis direction");
   if (!(spec_.mu_s >= 0.0) || !(spec_.mu_k >= 0.0))
     throw std::invalid_argument("pin joint: friction coefficients must be >= 0");
   for (const double v : {spec_.stiffness, spec_.damping})
     if (!kClampRange.contains(v))
       throw std::invalid_argument("pin joint: the clamp's stiffness and damping " +
                                   kClampRange.problem(v));
-  e_ = spec_.axis_direction / norm;
   double largest = 0.0;
   for (int n : spec_.nodes) {
     const Vec3 d = X.at(static_cast<size_t>(n)) - spec_.axis_point;

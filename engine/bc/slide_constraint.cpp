@@ -3,15 +3,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/core/unit_direction.hpp"
+
 namespace ccm {
 
 SlideConstraint::SlideConstraint(std::vector<int> nodes, const Vec3& direction)
     : nodes_(std::move(nodes)) {
-  const double norm = direction.norm();
   if (nodes_.empty()) throw std::invalid_argument("slide constraint: no node");
-  if (!(norm > 0.0) || !std::isfinite(norm))
-    throw std::invalid_argument("slide constraint: the direction must be non-zero and finite");
-  d_ = direction / norm;
+  d_ = unit_direction(direction, "slide constraint: the direction");
 }
 
 void SlideConstraint::project(State& s) const {

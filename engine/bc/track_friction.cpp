@@ -4,14 +4,13 @@
 #include <stdexcept>
 
 #include "engine/core/parameter_ranges.hpp"
+#include "engine/core/unit_direction.hpp"
 
 namespace ccm {
 
 TrackFriction::TrackFriction(TrackFrictionSpec spec) : spec_(std::move(spec)) {
   if (spec_.nodes.empty()) throw std::invalid_argument("track friction: no node");
-  const double norm = spec_.direction.norm();
-  if (!(norm > 0.0) || !std::isfinite(norm))
-    throw std::invalid_argument("track friction: the direction must be non-zero and finite");
+  d_ = unit_direction(spec_.direction, "track friction: the direction");
   for (const double v : {spec_.mu_s, spec_.mu_k})
     if (!kFrictionRange.contains(v))
       throw std::invalid_argument("track friction: a coefficient " + kFrictionRange.problem(v));
@@ -21,7 +20,6 @@ TrackFriction::TrackFriction(TrackFrictionSpec spec) : spec_(std::move(spec)) {
     if (!kDampingRange.contains(v))
       throw std::invalid_argument("track friction: the normal force and the damping " +
                                   kDampingRange.problem(v));
-  d_ = spec_.direction / norm;
 }
 
 // The group's mass-weighted mean displacement along the track.

@@ -24,7 +24,9 @@ double round_end(double start, double end, double interval) {
   return start + n * interval;
 }
 
-double onset_of(const MeasuredTrial& m, double threshold) {
+}  // namespace
+
+double measured_onset(const MeasuredTrial& m, double threshold) {
   const auto contact = first_contact(m.pressure_kpa, threshold);
   if (!contact)
     throw std::invalid_argument(fmt::format(
@@ -33,8 +35,6 @@ double onset_of(const MeasuredTrial& m, double threshold) {
         m.source.string(), threshold));
   return contact->onset;
 }
-
-}  // namespace
 
 RunWindow run_window(const RigCaseTable& table, const RigCase& c, const WindowRequest& req,
                      const HangingWeightSettings& weight, const TrackFrictionSpec& track) {
@@ -56,7 +56,7 @@ RunWindow run_window(const RigCaseTable& table, const RigCase& c, const WindowRe
     return w;
   }
   const MeasuredTrial& m = *req.trial;
-  w.measured_onset = onset_of(m, table.rig.sensor_deadband.value);
+  w.measured_onset = measured_onset(m, table.rig.sensor_deadband.value);
   const LocalFit fit =
       local_quadratic_fit(m.impactor_velocity_mps, table.drive.velocity_smoothing.value);
   const double t_first = fit.value.t.front();

@@ -35,6 +35,10 @@ struct WindowRequest {
   std::optional<double> start, end;  // s, trial time
 };
 
+// The trial's measured contact onset: the first pressure reading at or above `threshold` [kPa],
+// trial time [s]. Throws std::invalid_argument naming the file when there is none.
+double measured_onset(const MeasuredTrial& trial, double threshold);
+
 // Throws std::invalid_argument (a user's mistake, with what to do) when the open-loop drive has
 // no trial, a physical run is given a start, the trial has no contact above the deadband, or
 // the window is empty or outside the trial.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/core/unit_direction.hpp"
+
 namespace ccm::rig {
 
 SensorMat::SensorMat(const ModelMesh& mesh, const std::vector<Triangle>& tip,
@@ -10,14 +12,11 @@ SensorMat::SensorMat(const ModelMesh& mesh, const std::vector<Triangle>& tip,
     : tip_(area_shares(tip, mesh.X)), mat_(area_shares(footprint, mesh.X)), law_(law) {
   if (!(tip_.area > 0.0) || !(mat_.area > 0.0))
     throw std::invalid_argument("sensor mat: the tip's face or the mat's footprint has no area");
-  const double norm = track.norm();
-  if (!(norm > 0.0) || !std::isfinite(norm))
-    throw std::invalid_argument("sensor mat: the track direction must be non-zero and finite");
+  d_ = unit_direction(track, "sensor mat: the track direction");
   if (!(law_.stiffness > 0.0) || !std::isfinite(law_.stiffness) || !(law_.exponent >= 0.0) ||
       !std::isfinite(law_.exponent) || !(law_.damping >= 0.0) || !std::isfinite(law_.damping))
     throw std::invalid_argument(
         "sensor mat: the stiffness must be > 0, the exponent and damping >= 0, all finite");
-  d_ = track / norm;
   gap0_ = along(mat_, mesh.X) - along(tip_, mesh.X);
 }
 
