@@ -1,0 +1,69 @@
+// The mapping file of a bench test (docs/bench-test.md): which measured column is which output of
+// the scene, in which unit, filtered how, scored over which window, and how each trial's clock is
+// aligned with the simulation's. Read as strictly as a scene file: an unknown key, a unit ccm
+// does not know, a filter it cannot build, or a window that is not a window is a ConfigError
+// naming the file, the line and the key.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ccm::bench {
+
+// The file name `ccm validate --data FOLDER` looks for in the folder.
+inline constexpr const char* kMappingFileName = "bench.toml";
+
+enum class FilterKind { none, cfc, low_pass };
+
+struct ChannelFilter {
+  FilterKind kind = FilterKind::none;
+  double frequency = 0.0;  // the CFC class, or the low-pass cutoff [Hz]
+};
+
+struct ChannelSpec {
+  std::string name;
+  std::string column;      // in the trial files' header
+  std::string unit;        // of the column; converted to SI on reading
+  double si_factor = 1.0;  // from units.hpp
+  std::string observable;  // a history column of the scene, or a vector's prefix (docs)
+  std::optional<std::array<double, 3>> axis;  // unit vector; for a vector observable
+  bool derivative = false;                    // the observable's rate (a velocity's acceleration)
+  double scale = 1.0;     // multiplies the simulated observable (sign conventions)
+  ChannelFilter filter;   // applied alike to the measured and the simulated curve
+  double deadband = 0.0;  // SI; |value| below it reads 0, on both curves
+  std::optional<std::array<double, 2>> window;  // s, on the simulation's clock
+  int line = 0;  // of the channel's table in the mapping file, for messages
+};
+
+struct ClockAlignment {
+  // Trigger: the time the channel's |value| (filtered) first reaches `threshold` is made the
+  // same on the trial's clock and the simulation's.
+  std::optional<std::string> channel;
+  double threshold = 0.0;
+  // Or given offsets [s], added to each trial's clock, one per trial in file-name order.
+  std::vector<double> offsets;
+  int line = 0;  // of the threshold or the offsets, for messages
+};
+
+struct BenchMapping {
+  std::filesystem::path file;  // the mapping file
+  std::string files_pattern;   // glob of the trial files, in the mapping file's folder
+  std::string time_column;
+  std::string time_unit;
+  double time_factor = 1.0;
+  ClockAlignment align;
+  std::vector<ChannelSpec> channels;
+
+  const ChannelSpec* channel(const std::string& name) const;
+};
+
+// Reads and checks `file`; throws ConfigError.
+BenchMapping read_bench_mapping(const std::filesystem::path& file);
+
+// The same from text (`file` names it in messages).
+BenchMapping parse_bench_mapping(const std::string& text, const std::filesystem::path& file);
+
+}  // namespace ccm::bench

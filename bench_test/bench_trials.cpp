@@ -1,0 +1,149 @@
+#include "bench_test/bench_trials.hpp"
+
+#include <fmt/format.h>
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "config/config_error.hpp"
+#include "config/did_you_mean.hpp"
+#include "config/text_file.hpp"
+#include "rig_models/measurement/clock_jump.hpp"
+#include "rig_models/measurement/csv_cells.hpp"
+
+namespace ccm::bench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kMinRows = 10;
+
+struct Lines {
+  std::vector<std::string_view> text;
+  std::vector<int> number;  // 1-based line numbers of the non-blank lines
+};
+
+// The non-blank lines, a UTF-8 byte-order mark and CR line ends dropped.
+Lines lines_of(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  Lines out;
+  int number = 0;
+  while (!text.empty()) {
+    const std::size_t end = text.find('\n');
+    std::string_view line = text.substr(0, end);
+    text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
+    out.text.push_back(line);
+    out.number.push_back(number);
+  }
+  return out;
+}
+
+// The index of `name` in the header, refused when missing (with the nearest header name).
+std::size_t column_index(const std::vector<std::string_view>& header, const std::string& name,
+                         const fs::path& source, int line) {
+  const auto it = std::find(header.begin(), header.end(), name);
+  if (it == header.end()) {
+    const std::string_view near = closest_name(name, header);
+    throw config_error(source, line, name,
+                       near.empty() ? std::string("the mapping names this column; the header "
+                                                  "lacks it")
+                                    : fmt::format("the mapping names this column; the header "
+                                                  "lacks it (did you mean '{}'?)",
+                                                  near));
+  }
+  return static_cast<std::size_t>(it - header.begin());
+}
+
+std::vector<std::string_view> read_header(const Lines& lines, const fs::path& source) {
+  if (lines.text.empty()) throw config_error(source, 0, "", "the file is empty");
+  std::vector<std::string_view> header = rig::split_cells(lines.text[0]);
+  if (header.size() == 1)
+    if (const std::optional<char> d = rig::foreign_delimiter(header[0]))
+      throw config_error(source, lines.number[0], "",
+                         fmt::format("cells are separated by '{}'; the format uses ','",
+                                     *d == '\t' ? std::string("\\t") : std::string(1, *d)));
+  for (std::size_t i = 0; i < header.size(); ++i)
+    for (std::size_t j = i + 1; j < header.size(); ++j)
+      if (header[i] == header[j] && !header[i].empty())
+        throw config_error(source, lines.number[0], header[i],
+                           "the header names this column twice");
+  return header;
+}
+
+}  // namespace
+
+BenchTrial parse_bench_trial(std::string_view text, const fs::path& source, const BenchMapping& m) {
+  const Lines lines = lines_of(text);
+  const std::vector<std::string_view> header = read_header(lines, source);
+  const int header_line = lines.number[0];
+  const std::size_t time_index = column_index(header, m.time_column, source, header_line);
+  std::vector<std::size_t> index;
+  for (const ChannelSpec& c : m.channels)
+    index.push_back(column_index(header, c.column, source, header_line));
+  BenchTrial trial;
+  trial.file = source;
+  std::vector<std::vector<double>> values(m.channels.size());
+  auto cell = [&](const std::vector<std::string_view>& cells, std::size_t i, int line) {
+    const rig::CellNumber n = rig::parse_number_cell(cells[i]);
+    if (!n.problem.empty()) throw config_error(source, line, header[i], n.problem);
+    return n.value;
+  };
+  for (std::size_t r = 1; r < lines.text.size(); ++r) {
+    const int line = lines.number[r];
+    const std::vector<std::string_view> cells = rig::split_cells(lines.text[r]);
+    if (cells.size() != header.size())
+      throw config_error(source, line, "",
+                         fmt::format("{} cells; the header has {}", cells.size(), header.size()));
+    const double t = cell(cells, time_index, line) * m.time_factor;
+    if (!trial.t.empty() && !(t > trial.t.back()))
+      throw config_error(
+          source, line, m.time_column,
+          fmt::format("time {:.9g} s {} the previous row's {:.9g} s", t,
+                      t == trial.t.back() ? "repeats" : "goes back from", trial.t.back()));
+    trial.t.push_back(t);
+    for (std::size_t c = 0; c < m.channels.size(); ++c)
+      values[c].push_back(cell(cells, index[c], line) * m.channels[c].si_factor);
+  }
+  if (trial.t.size() < kMinRows)
+    throw config_error(
+        source, 0, "",
+        fmt::format("{} data rows; a trial needs at least {}", trial.t.size(), kMinRows));
+  if (const std::optional<rig::ClockJump> jump = rig::find_clock_jump(trial.t))
+    throw config_error(source, lines.number[jump->row + 1], m.time_column,
+                       fmt::format("the clock jumps {:.6g} s forward, {:.0f} times the median "
+                                   "step {:.6g} s",
+                                   jump->step, jump->step / jump->median_step, jump->median_step));
+  for (std::size_t c = 0; c < m.channels.size(); ++c)
+    trial.channels[m.channels[c].name] = std::move(values[c]);
+  return trial;
+}
+
+std::vector<BenchTrial> read_bench_trials(const BenchMapping& m) {
+  const fs::path folder = m.file.parent_path().empty() ? fs::path(".") : m.file.parent_path();
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder, ec))
+    if (e.is_regular_file() &&
+        fnmatch(m.files_pattern.c_str(), e.path().filename().c_str(), 0) == 0)
+      files.push_back(e.path());
+  if (ec)
+    throw config_error(folder, 0, "", fmt::format("cannot list the folder: {}", ec.message()));
+  std::sort(files.begin(), files.end());
+  if (files.empty())
+    throw config_error(m.file, 0, "trials.files",
+                       fmt::format("no file in {} matches '{}'", folder.string(), m.files_pattern));
+  if (!m.align.offsets.empty() && m.align.offsets.size() != files.size())
+    throw config_error(m.file, m.align.line, "align.offsets",
+                       fmt::format("{} offsets for {} trials (one per trial, in file-name order)",
+                                   m.align.offsets.size(), files.size()));
+  std::vector<BenchTrial> trials;
+  for (const fs::path& f : files) trials.push_back(parse_bench_trial(read_config_text(f), f, m));
+  return trials;
+}
+
+}  // namespace ccm::bench

@@ -1,0 +1,100 @@
+// Reading a bench test's trial files (bench_test/bench_trials.hpp): SI values, and every defect
+// of a messy file refused naming the file, the line and the column.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "bench_test/bench_mapping.hpp"
+#include "bench_test/bench_trials.hpp"
+#include "config/config_error.hpp"
+
+using ccm::bench::BenchMapping;
+using ccm::bench::parse_bench_trial;
+
+namespace {
+
+BenchMapping mapping() {
+  return ccm::bench::parse_bench_mapping(R"(
+[trials]
+files = "t*.csv"
+time_column = "time_ms"
+time_unit = "ms"
+[[channels]]
+name = "load"
+column = "load_kN"
+unit = "kN"
+observable = "x"
+)",
+                                         "bench.toml");
+}
+
+// A clean file: 12 rows at 0.1 ms, load k kN.
+std::string clean() {
+  std::string s = "time_ms,load_kN,extra\n";
+  for (int k = 0; k < 12; ++k) s += std::to_string(0.1 * k) + "," + std::to_string(k) + ",7\n";
+  return s;
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("bench trials: a clean file in SI, with CRLF and a BOM", "[bench_test]") {
+  std::string crlf;
+  for (char c : clean()) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const auto trial = parse_bench_trial("\xEF\xBB\xBF" + crlf + "\r\n", "t1.csv", mapping());
+  REQUIRE(trial.t.size() == 12);
+  CHECK(trial.t[3] == Approx(3e-4));
+  CHECK(trial.channels.at("load")[3] == Approx(3000.0));
+}
+
+TEST_CASE("bench trials: every defect is refused naming the file, the line and the column",
+          "[bench_test]") {
+  struct Case {
+    std::string from, to, message;
+  };
+  const Case cases[] = {
+      {"load_kN,", "load_kn,",
+       "t1.csv:1: load_kN: the mapping names this column; the header lacks it (did you mean "
+       "'load_kn'?)"},
+      {"time_ms,", "time,", "t1.csv:1: time_ms: the mapping names this column"},
+      {"extra", "load_kN", "t1.csv:1: load_kN: the header names this column twice"},
+      {"0.300000,3,7", "0.300000,3", "t1.csv:5: 2 cells; the header has 3"},
+      {"0.300000,3,7", "0.300000,abc,7", "t1.csv:5: load_kN: non-numeric cell 'abc'"},
+      {"0.300000,3,7", "0.300000,nan,7", "t1.csv:5: load_kN: non-finite number"},
+      {"0.300000,3,7", "0.100000,3,7", "t1.csv:5: time_ms: time 0.0001 s goes back"},
+      {"0.300000,3,7", "0.200000,3,7", "t1.csv:5: time_ms: time 0.0002 s repeats"},
+      {"1.100000,11,7", "1000.1,11,7", "t1.csv:13: time_ms: the clock jumps"},
+      {"time_ms,load_kN,extra", "time_ms;load_kN;extra", "cells are separated by ';'"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.to);
+    CHECK_THROWS_WITH(parse_bench_trial(replaced(clean(), c.from, c.to), "t1.csv", mapping()),
+                      Catch::Contains(c.message));
+  }
+  CHECK_THROWS_WITH(parse_bench_trial("time_ms,load_kN\n0,1\n", "t1.csv", mapping()),
+                    Catch::Contains("1 data rows; a trial needs at least 10"));
+  CHECK_THROWS_WITH(parse_bench_trial("", "t1.csv", mapping()), Catch::Contains("empty"));
+}
+
+TEST_CASE("bench trials: the folder's files in name order, and none refused", "[bench_test]") {
+  const auto dir = std::filesystem::temp_directory_path() / "ccm-bench-trials-test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  BenchMapping m = mapping();
+  m.file = dir / "bench.toml";
+  CHECK_THROWS_WITH(ccm::bench::read_bench_trials(m), Catch::Contains("trials.files: no file in"));
+  for (const char* name : {"t2.csv", "t1.csv", "other.csv"}) std::ofstream(dir / name) << clean();
+  const auto trials = ccm::bench::read_bench_trials(m);
+  REQUIRE(trials.size() == 2);
+  CHECK(trials[0].file.filename() == "t1.csv");
+  m.align.offsets = {0.0};
+  CHECK_THROWS_WITH(ccm::bench::read_bench_trials(m),
+                    Catch::Contains("align.offsets: 1 offsets for 2 trials"));
+  std::filesystem::remove_all(dir);
+}
