@@ -21,6 +21,7 @@
 #include "app/rig_commands.hpp"
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
+#include "app/validate_command.hpp"
 #include "engine/mesh/mesh_cache.hpp"
 #include "records/provenance/version.hpp"
 #include "rig_models/sim/run_parameters.hpp"
@@ -134,6 +135,28 @@ int main(int argc, char** argv) {
   compare->footer(
       "Exit codes: 0 compared, 1 internal error, 2 bad input (nothing run, nothing written), 3 a "
       "run went unstable (no answer; what it left is written).");
+
+  ccm::ValidateArgs validate_args;
+  CLI::App* validate = app.add_subcommand(
+      "validate",
+      "Run a scene once and rate it against your bench test's trials: nRMSE, peaks and the "
+      "ISO/TS 18571 rating per channel and trial (docs/bench-test.md)");
+  validate->add_option("SCENE", validate_args.scene, "Scene file (TOML; docs/scene-file.md)")
+      ->required();
+  validate
+      ->add_option("--data", validate_args.data,
+                   "Folder of the trials and of bench.toml, the mapping from measured channels "
+                   "to the scene's outputs")
+      ->required();
+  validate->add_option("--out,-o", validate_args.out,
+                       "Folder for history.csv, validation.json and one CSV per channel; default "
+                       "validate-<scene name>");
+  validate->add_flag("--json", validate_args.json, "Print the scores as JSON");
+  validate->add_flag("--quiet,-q", validate_args.quiet, "No progress line");
+  validate->add_option("--threads", validate_args.threads, "As `ccm run --threads`");
+  validate->footer(
+      "Exit codes: 0 rated, 1 internal error, 2 bad input (nothing run, nothing written), 3 the "
+      "run went unstable (its history is written).");
 
   ccm::StudyRunArgs study_run_args;
   ccm::StudyStatusArgs study_status_args;
@@ -305,7 +328,7 @@ int main(int argc, char** argv) {
 
   // Every command that meshes reads its meshes back from the mesh cache (docs/mesh-cache.md).
   bool no_mesh_cache = false;
-  for (CLI::App* meshes : {run, compare, study_run, study_refine, rig_run, rig_calibrate})
+  for (CLI::App* meshes : {run, compare, validate, study_run, study_refine, rig_run, rig_calibrate})
     meshes->add_flag("--no-mesh-cache", no_mesh_cache,
                      "Mesh every body afresh and file nothing (also CCM_MESH_CACHE=off)");
 
@@ -336,5 +359,6 @@ int main(int argc, char** argv) {
   if (*report) return ccm::report_command(report_args);
   if (*mesh_info) return ccm::mesh_info_command(mesh_info_args);
   if (*compare) return ccm::compare_command(compare_args);
+  if (*validate) return ccm::validate_command(validate_args);
   return ccm::run_command(args);
 }

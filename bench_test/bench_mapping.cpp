@@ -94,6 +94,7 @@ ChannelSpec channel_of(const StrictTable& t) {
   c.column = t.need_string("column");
   c.unit = unit_of(t, "unit", c.si_factor);
   c.observable = t.need_string("observable");
+  c.observable_line = t.line_of_key("observable");
   if (t.has("axis")) c.axis = axis_of(t);
   c.derivative = t.get_or<bool>("derivative", false);
   c.scale = t.number_or("scale", 1.0);

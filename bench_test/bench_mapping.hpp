@@ -35,6 +35,7 @@ struct ChannelSpec {
   ChannelFilter filter;   // applied alike to the measured and the simulated curve
   double deadband = 0.0;  // SI; |value| below it reads 0, on both curves
   std::optional<std::array<double, 2>> window;  // s, on the simulation's clock
+  int observable_line = 0;                      // of its observable key
   int line = 0;  // of the channel's table in the mapping file, for messages
 };
 

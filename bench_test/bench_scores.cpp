@@ -29,7 +29,8 @@ double median_step(const std::vector<double>& t) {
 std::vector<double> uniform_times(double t0, double t1, double step) {
   std::vector<double> t;
   const auto n = static_cast<std::size_t>(std::floor((t1 - t0) / step * (1.0 + 1e-12))) + 1;
-  for (std::size_t k = 0; k < n; ++k) t.push_back(t0 + static_cast<double>(k) * step);
+  // (the last one clamped: t0 + n step may round past t1 by an ulp)
+  for (std::size_t k = 0; k < n; ++k) t.push_back(std::min(t1, t0 + static_cast<double>(k) * step));
   return t;
 }
 
@@ -48,6 +49,19 @@ rig::TimeSeries conditioned(rig::TimeSeries s, double step, const ChannelSpec& c
 // A curve on a uniform clock of `step` over its own span, then conditioned.
 rig::TimeSeries uniform_conditioned(const rig::TimeSeries& s, double step, const ChannelSpec& c) {
   return conditioned(rig::sample_at(s, uniform_times(s.t.front(), s.t.back(), step)), step, c);
+}
+
+// The simulated curve conditioned for comparison with samples every `measured_step`: where the
+// simulation writes more often than the logger samples, it is filtered at its own rate first
+// (sampling the unfiltered curve at the logger's instants would alias what lies above the
+// logger's Nyquist frequency, as a logger's anti-aliasing filter does not let it); otherwise it
+// is interpolated onto the logger's rate and filtered there.
+rig::TimeSeries simulated_conditioned(const rig::TimeSeries& s, double measured_step,
+                                      const ChannelSpec& c) {
+  const double own_step = median_step(s.t);
+  if (own_step < measured_step && c.filter.kind != FilterKind::none)
+    return uniform_conditioned(s, own_step, c);
+  return uniform_conditioned(s, measured_step, c);
 }
 
 // The time |value| first reaches `threshold`, interpolated between the samples around it.
@@ -97,6 +111,7 @@ struct Window {
   double t0, t1;
 };
 
+// The channel's window inside the span of the conditioned simulated curve.
 Window window_of(const ChannelSpec& c, const rig::TimeSeries& sim) {
   Window w{sim.t.front(), sim.t.back()};
   if (c.window) w = {std::max(w.t0, (*c.window)[0]), std::min(w.t1, (*c.window)[1])};
@@ -146,7 +161,7 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
   std::optional<double> sim_trigger;
   if (m.align.channel) {
     const ChannelSpec& c = *m.channel(*m.align.channel);
-    sim_trigger = trigger_time(uniform_conditioned(simulated.at(c.name), trials[0].step, c),
+    sim_trigger = trigger_time(simulated_conditioned(simulated.at(c.name), trials[0].step, c),
                                m.align.threshold);
     if (!sim_trigger)
       throw std::runtime_error(fmt::format(
@@ -159,21 +174,25 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
                                : m.align.offsets.empty() ? 0.0
                                                          : m.align.offsets[i]);
   for (const ChannelSpec& c : m.channels) {
-    const rig::TimeSeries& sim = simulated.at(c.name);
+    // Conditioned for the first trial's rate; a trial at another rate gets its own below.
+    const rig::TimeSeries sim = simulated_conditioned(simulated.at(c.name), trials[0].step, c);
     const Window w = window_of(c, sim);
     ChannelResult result;
     result.channel = c.name;
     std::vector<rig::TimeSeries> aligned;
     for (std::size_t i = 0; i < trials.size(); ++i) {
       const PreparedTrial& trial = trials[i];
+      const rig::TimeSeries sim_u =
+          trial.step == trials[0].step ? sim
+                                       : simulated_conditioned(simulated.at(c.name), trial.step, c);
       const rig::TimeSeries measured =
-          within(shifted(trial.channels.at(c.name), out.clock_shifts[i]), w.t0, w.t1);
+          within(shifted(trial.channels.at(c.name), out.clock_shifts[i]),
+                 std::max(w.t0, sim_u.t.front()), std::min(w.t1, sim_u.t.back()));
       if (measured.t.size() < kMinScoredSamples)
         throw std::runtime_error(fmt::format(
             "channel '{}': {} holds {} samples inside the simulated span and the window [{:.6g}, "
             "{:.6g}] s; a score needs {}",
             c.name, trial.name, measured.t.size(), w.t0, w.t1, kMinScoredSamples));
-      const rig::TimeSeries sim_u = uniform_conditioned(sim, trial.step, c);
       result.trials.push_back(
           score(trial.name, measured, rig::sample_at(sim_u, measured.t), trial.step));
       aligned.push_back(shifted(trial.channels.at(c.name), out.clock_shifts[i]));
@@ -195,8 +214,7 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
         curves.high[k] = std::max(curves.high[k], at.value[k]);
       }
     }
-    const rig::TimeSeries sim_u = uniform_conditioned(sim, trials[0].step, c);
-    const rig::TimeSeries sim_at = rig::sample_at(sim_u, curves.t);
+    const rig::TimeSeries sim_at = rig::sample_at(sim, curves.t);
     curves.simulated = sim_at.value;
     if (curves.t.size() < kMinScoredSamples)
       throw std::runtime_error(fmt::format(

@@ -34,7 +34,8 @@ std::optional<std::vector<std::size_t>> vector_columns(const std::vector<std::st
 
 [[noreturn]] void fail(const std::filesystem::path& file, const ChannelSpec& c,
                        std::string_view problem) {
-  throw config_error(file, c.line, fmt::format("channels.{}.observable", c.name), problem);
+  throw config_error(file, c.observable_line, fmt::format("channels.{}.observable", c.name),
+                     problem);
 }
 
 }  // namespace

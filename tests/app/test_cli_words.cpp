@@ -53,7 +53,9 @@ TEST_CASE("ccm with a word that is no command names it and suggests the nearest"
   CHECK(r.status == 2);
   CHECK_THAT(r.err, Catch::Contains("unknown command 'frobnicate'"));
   CHECK_THAT(r.err, !Catch::Contains("did you mean"));
-  CHECK_THAT(r.err, Catch::Contains("the commands of 'ccm' are: run, compare, study, recommend, report"));
+  CHECK_THAT(r.err,
+             Catch::Contains(
+                 "the commands of 'ccm' are: run, compare, validate, study, recommend, report"));
   // Nothing is created by a refused command line.
   CHECK_FALSE(std::filesystem::exists("x.sqlite"));
 }

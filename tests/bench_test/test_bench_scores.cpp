@@ -128,7 +128,7 @@ TEST_CASE("bench observables: columns, vectors on an axis, rates, and names that
                                             "plate.kinetic_energy"};
   ChannelSpec c;
   c.name = "x";
-  c.line = 12;
+  c.observable_line = 12;
   c.observable = "plate.kinetic_energy";
   CHECK(resolve_observable(c, columns, "b.toml").columns == std::vector<std::size_t>{10});
   c.observable = "ball.contact_force";

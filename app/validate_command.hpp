@@ -1,0 +1,25 @@
+// `ccm validate SCENE --data FOLDER` (docs/bench-test.md): the scene run once and compared with
+// the bench test whose mapping file (bench.toml) and trial CSVs are in FOLDER: every channel
+// against every trial and against the trials' mean, by nRMSE, peak and time-of-peak errors and
+// the ISO/TS 18571 rating. The mapping, the trials and the scene's observables are all checked
+// before the run starts; nothing is written on bad input.
+#pragma once
+
+#include <filesystem>
+
+namespace ccm {
+
+struct ValidateArgs {
+  std::filesystem::path scene;
+  std::filesystem::path data;  // the folder of bench.toml and the trials
+  // history.csv, validation.json and one <channel>.csv of the curves compared;
+  // default: validate-<scene file's stem>.
+  std::filesystem::path out;
+  bool json = false;   // the scores as JSON on stdout instead of the tables
+  bool quiet = false;  // no progress line
+  int threads = 0;     // as `ccm run --threads`
+};
+
+int validate_command(const ValidateArgs& args);
+
+}  // namespace ccm

@@ -1,0 +1,219 @@
+// `ccm validate` end to end on generated bench tests (bench_trial_generator.hpp): a scene's own
+// run, recorded as three trials on offset clocks, in mm/s and g, with noise and drift. The clocks
+// are recovered within one sample, the scene that made the data rates "excellent" and a striker
+// 20 % slower or faster rates lower; bad data is refused before any run.
+#include <fmt/format.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "correlate/cfc_filter.hpp"
+#include "tests/app/cli_shell.hpp"
+#include "tests/bench_test/bench_trial_generator.hpp"
+
+namespace fs = std::filesystem;
+using Catch::Contains;
+
+namespace {
+
+// A stiff striker dropped at `speed` on a soft block fixed at its bottom; the striker's velocity
+// every 20 us.
+std::string strike_scene(double speed) {
+  return fmt::format(R"([time]
+end = 8e-3
+output_interval = 2e-5
+
+[[bodies]]
+name = "base"
+[bodies.material]
+E = 1e5
+nu = 0.3
+rho = 1000.0
+[bodies.geometry]
+shape = "box"
+size = [0.01, 0.01, 0.01]
+mesh_size = 0.0025
+
+[[bodies]]
+name = "striker"
+initial_velocity = [0.0, 0.0, {}]
+[bodies.material]
+E = 1e7
+nu = 0.3
+rho = 1000.0
+[bodies.geometry]
+shape = "box"
+size = [0.006, 0.006, 0.004]
+mesh_size = 0.003
+[bodies.placement]
+translate = [0.002, 0.002, 0.011]
+
+[[fixed]]
+body = "base"
+plane = {{ point = [0, 0, 0], normal = [0, 0, 1] }}
+
+[contact]
+model = "dcr"
+surfaces = ["base", "striker"]
+)",
+                     -speed);
+}
+
+// One column of a history.csv, against its time column.
+ccm::test::Curve history_column(const fs::path& csv, const std::string& name) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream header(line);
+  std::size_t at = 0, k = 0;
+  for (std::string c; std::getline(header, c, ','); ++k)
+    if (c == name) at = k;
+  REQUIRE(at > 0);
+  ccm::test::Curve out;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::vector<double> row;
+    for (std::string c; std::getline(cells, c, ',');) row.push_back(std::stod(c));
+    out.t.push_back(row[0]);
+    out.value.push_back(row[at]);
+  }
+  return out;
+}
+
+constexpr double kOffsets[] = {0.00123, -0.00201, 0.00337};  // s, the loggers' clocks ahead
+
+// The bench test of the scene run at 1 m/s: three trials and the mapping, in `folder`.
+double write_bench_test(const fs::path& folder, const fs::path& history, double threshold_share) {
+  fs::create_directories(folder);
+  const ccm::test::Curve v = history_column(history, "striker.vz");
+  const ccm::test::Curve a = ccm::test::rate_of(v);
+  // The trigger at a share of the acceleration's peak as the trials show it: at 10 kHz, CFC 600.
+  std::vector<double> logged;
+  for (double t = 0.0; t <= 8e-3; t += 1e-4) logged.push_back(ccm::test::curve_at(a, t));
+  double filtered_peak = 0.0;
+  for (double x : ccm::correlate::cfc_filter(logged, 600, 1e-4))
+    filtered_peak = std::max(filtered_peak, std::abs(x));
+  const double threshold = threshold_share * filtered_peak;
+  const std::vector<ccm::test::LoggedChannel> channels = {
+      {"speed_mm_s", v, 1e-3, 0.005, 0.002},                // 0.5 % noise, 0.2 % drift of 1 m/s
+      {"accel_g", a, 9.80665, 0.01 * filtered_peak, 0.0}};  // 1 % of the peak
+  for (unsigned i = 0; i < 3; ++i)
+    ccm::test::write_trial(folder / fmt::format("drop_t{}.csv", i + 1), {}, channels, kOffsets[i],
+                           8e-3, 100 + i);
+  std::ofstream(folder / "bench.toml") << fmt::format(R"([trials]
+files = "drop_t*.csv"
+time_column = "time_ms"
+time_unit = "ms"
+
+[align]
+channel = "accel"
+threshold = {}
+
+[[channels]]
+name = "speed"
+column = "speed_mm_s"
+unit = "mm/s"
+observable = "striker.v"
+axis = [0, 0, 1]
+filter = "CFC600"
+
+[[channels]]
+name = "accel"
+column = "accel_g"
+unit = "g"
+observable = "striker.a"
+axis = [0, 0, 1]
+filter = "CFC600"
+)",
+                                                      threshold);
+  return threshold;
+}
+
+nlohmann::json validate_json(const fs::path& scene, const fs::path& data, ccm::test::TempDir& dir) {
+  const auto r = ccm::test::run_ccm(
+      fmt::format("validate '{}' --data '{}' --out '{}' --json --quiet", scene.string(),
+                  data.string(), (dir.path / ("out-" + scene.stem().string())).string()),
+      dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return nlohmann::json::parse(r.out);
+}
+
+double mean_rating(const nlohmann::json& j, const std::string& channel) {
+  for (const nlohmann::json& c : j["channels"])
+    if (c["channel"] == channel) return c["mean"]["iso18571"]["overall"].get<double>();
+  FAIL("no channel " << channel);
+  return 0.0;
+}
+
+}  // namespace
+
+TEST_CASE("ccm validate: generated trials are aligned, rated excellent, and lower when off",
+          "[bench_test][cli]") {
+  ccm::test::TempDir dir;
+  const fs::path truth = dir.write("strike.toml", strike_scene(1.0));
+  const auto run = ccm::test::run_ccm(
+      fmt::format("run '{}' --out '{}' --quiet", truth.string(), (dir.path / "truth").string()),
+      dir);
+  REQUIRE(run.status == 0);
+  const fs::path data = dir.path / "bench";
+  write_bench_test(data, dir.path / "truth" / "history.csv", 0.3);
+
+  const nlohmann::json j = validate_json(truth, data, dir);
+  REQUIRE(j["clock_shifts"].size() == 3);
+  for (int i = 0; i < 3; ++i)  // within one 10 kHz sample
+    CHECK(j["clock_shifts"][i].get<double>() == Approx(-kOffsets[i]).margin(1e-4));
+  for (const nlohmann::json& c : j["channels"]) {
+    INFO(c["channel"]);
+    CHECK(c["mean"]["iso18571"]["grade"] == "excellent");
+    for (const nlohmann::json& t : c["trials"]) CHECK(t["iso18571"]["overall"].get<double>() > 0.9);
+  }
+  for (double speed : {0.8, 1.2}) {
+    INFO("striker at " << speed << " m/s");
+    const fs::path off = dir.write(fmt::format("strike_{}.toml", speed), strike_scene(speed));
+    const nlohmann::json o = validate_json(off, data, dir);
+    CHECK(mean_rating(o, "speed") < mean_rating(j, "speed") - 0.05);
+    CHECK(mean_rating(o, "accel") < mean_rating(j, "accel") - 0.05);
+  }
+}
+
+TEST_CASE("ccm validate: bad data and names that name nothing are refused before any run",
+          "[bench_test][cli]") {
+  ccm::test::TempDir dir;
+  const fs::path scene = dir.write("strike.toml", strike_scene(1.0));
+  const auto run = ccm::test::run_ccm(
+      fmt::format("run '{}' --out '{}' --quiet", scene.string(), (dir.path / "truth").string()),
+      dir);
+  REQUIRE(run.status == 0);
+  const fs::path data = dir.path / "bench";
+  write_bench_test(data, dir.path / "truth" / "history.csv", 0.3);
+  auto refused = [&](const std::string& expected) {
+    const fs::path out = dir.path / "never";
+    const auto r = ccm::test::run_ccm(fmt::format("validate '{}' --data '{}' --out '{}' --quiet",
+                                                  scene.string(), data.string(), out.string()),
+                                      dir);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains(expected));
+    CHECK_FALSE(fs::exists(out));
+  };
+  const std::string mapping = ccm::test::file_text(data / "bench.toml");
+  auto edit = [&](const std::string& from, const std::string& to) {
+    std::string m = mapping;
+    m.replace(m.find(from), from.size(), to);
+    std::ofstream(data / "bench.toml") << m;
+  };
+  edit("observable = \"striker.a\"", "observable = \"striker.acc\"");
+  refused("bench.toml:22: channels.accel.observable: 'striker.acc' names no output");
+  edit("unit = \"g\"", "unit = \"gee\"");
+  refused("channels[1].unit: must be one of");
+  edit("threshold = ", "threshold = 1e9 #");
+  refused("align.threshold: drop_t1.csv: channel 'accel' never reaches 1e+09");
+  std::ofstream(data / "bench.toml") << mapping;
+  std::string trial = ccm::test::file_text(data / "drop_t2.csv");
+  const std::size_t third_row = trial.find('\n', trial.find('\n', trial.find('\n') + 1) + 1);
+  trial.insert(third_row + 1, "0.1,NaN,3\n");
+  std::ofstream(data / "drop_t2.csv") << trial;
+  refused("drop_t2.csv:4: ");
+}
