@@ -151,6 +151,19 @@ int main(int argc, char** argv) {
   validate->add_option("--out,-o", validate_args.out,
                        "Folder for history.csv, validation.json and one CSV per channel; default "
                        "validate-<scene name>");
+  validate->add_option("--fit", validate_args.fit,
+                       "PATH=LO:HI: fit the scene's number at PATH (the path syntax of grids over "
+                       "a scene) within [LO, HI] to the trials; repeat for more parameters");
+  validate
+      ->add_option("--fit-trials", validate_args.fit_trials,
+                   "Trials to fit to, comma-separated, 1-based in file-name order (default: all "
+                   "but the last); the others are left out and scored with the fitted values")
+      ->delimiter(',');
+  validate
+      ->add_option("--evaluations", validate_args.evaluations,
+                   "Runs the fit's search may use (the sensitivity profile adds 2-3 per "
+                   "parameter)")
+      ->capture_default_str();
   validate->add_flag("--json", validate_args.json, "Print the scores as JSON");
   validate->add_flag("--quiet,-q", validate_args.quiet, "No progress line");
   validate->add_option("--threads", validate_args.threads, "As `ccm run --threads`");

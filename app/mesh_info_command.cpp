@@ -7,8 +7,8 @@
 
 #include "app/mesh_commands.hpp"
 #include "app/run_command.hpp"  // exit codes
-#include "engine/mesh/gmsh_mesher.hpp"
 #include "engine/element/mesh_quality.hpp"
+#include "engine/mesh/gmsh_mesher.hpp"
 #include "engine/mesh/model_mesh.hpp"
 #include "engine/mesh/readers/mesh_file.hpp"
 

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace ccm {
 
@@ -18,6 +20,12 @@ struct ValidateArgs {
   bool json = false;   // the scores as JSON on stdout instead of the tables
   bool quiet = false;  // no progress line
   int threads = 0;     // as `ccm run --threads`
+  // --fit PATH=LO:HI: scene paths (docs/grid-file.md's path syntax) fitted to the trials
+  // (app/validate_fit.hpp); --fit-trials: the trials fitted to (1-based, in file-name order;
+  // default all but the last), the others left out and scored with the fitted values.
+  std::vector<std::string> fit;
+  std::vector<int> fit_trials;
+  int evaluations = 16;  // the search's budget of runs (the profile adds 2-3 per parameter)
 };
 
 int validate_command(const ValidateArgs& args);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <sstream>
 #include <stdexcept>
 
 #include "config/did_you_mean.hpp"
@@ -195,6 +196,13 @@ std::string path_problem(const toml::table& doc, std::string_view path) {
     return fmt::format("no number at this path of the scene; its paths begin {}, ...",
                        fmt::join(views.begin(), views.begin() + 8, ", "));
   return fmt::format("no number at this path of the scene; its paths: {}", fmt::join(views, ", "));
+}
+
+std::string document_text(const toml::table& doc) {
+  std::ostringstream out;
+  out << toml::toml_formatter(doc, toml::format_flags::none);
+  out << '\n';
+  return out.str();
 }
 
 }  // namespace ccm

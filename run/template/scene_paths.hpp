@@ -27,6 +27,9 @@ std::vector<std::string> number_paths(const toml::table& doc);
 // kept (refused for a zero vector: it has none).
 void set_number_at_path(toml::table& doc, std::string_view path, double value);
 
+// The document as TOML text (as toml++ writes it), for the scene reader.
+std::string document_text(const toml::table& doc);
+
 // Why `path` leads to no number of the document: the nearest path that does, or those that
 // share its longest valid beginning.
 std::string path_problem(const toml::table& doc, std::string_view path);

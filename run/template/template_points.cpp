@@ -26,13 +26,6 @@ const SceneTemplate& scene_template(const GridSpec& spec) {
 
 std::string template_text(const SceneTemplate& t) { return read_config_text(t.scene); }
 
-std::string document_text(const toml::table& doc) {
-  std::ostringstream out;
-  out << toml::toml_formatter(doc, toml::format_flags::none);
-  out << '\n';
-  return out.str();
-}
-
 // The point's values at their paths: other_axes "axes.<path>" and "levels.<path>".
 void set_point_values(toml::table& doc, const GridPoint& point) {
   for (const auto& [name, value] : point.other_axes) {

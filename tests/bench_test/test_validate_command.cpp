@@ -211,9 +211,68 @@ TEST_CASE("ccm validate: bad data and names that name nothing are refused before
   edit("threshold = ", "threshold = 1e9 #");
   refused("align.threshold: drop_t1.csv: channel 'accel' never reaches 1e+09");
   std::ofstream(data / "bench.toml") << mapping;
+  // A fit that names no number of the scene, or no range, is refused before any run.
+  for (const auto& [fit, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"bodies.striker.initial_velocty=0.6:1.4", "--fit bodies.striker.initial_velocty:"},
+           {"bodies.striker.initial_velocity=1.4:0.6", "the upper bound 0.6 must exceed the lower"},
+           {"bodies.striker.initial_velocity=fast", "the form is PATH=LO:HI"}}) {
+    INFO(fit);
+    const fs::path out = dir.path / "never";
+    const auto r = ccm::test::run_ccm(fmt::format("validate '{}' --data '{}' --out '{}' --quiet "
+                                                  "--fit '{}'",
+                                                  scene.string(), data.string(), out.string(), fit),
+                                      dir);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains(expected));
+    CHECK_FALSE(fs::exists(out));
+  }
   std::string trial = ccm::test::file_text(data / "drop_t2.csv");
   const std::size_t third_row = trial.find('\n', trial.find('\n', trial.find('\n') + 1) + 1);
   trial.insert(third_row + 1, "0.1,NaN,3\n");
   std::ofstream(data / "drop_t2.csv") << trial;
   refused("drop_t2.csv:4: ");
+}
+
+TEST_CASE("ccm validate --fit: the striker's speed recovered from its own trials",
+          "[bench_test][cli][heavy]") {
+  ccm::test::TempDir dir;
+  const fs::path truth = dir.write("strike.toml", strike_scene(1.0));
+  const auto run = ccm::test::run_ccm(
+      fmt::format("run '{}' --out '{}' --quiet", truth.string(), (dir.path / "truth").string()),
+      dir);
+  REQUIRE(run.status == 0);
+  const fs::path data = dir.path / "bench";
+  write_bench_test(data, dir.path / "truth" / "history.csv", 0.3);
+  // Started from 0.87 m/s, fitted on trials 1 and 2, trial 3 left out.
+  const fs::path start = dir.write("strike_start.toml", strike_scene(0.87));
+  const auto r =
+      ccm::test::run_ccm(fmt::format("validate '{}' --data '{}' --out '{}' --json --quiet --fit "
+                                     "bodies.striker.initial_velocity=0.6:1.4",
+                                     start.string(), data.string(), (dir.path / "fit").string()),
+                         dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& p = j["fit"]["parameters"][0];
+  const double best = p["best"].get<double>();
+  REQUIRE(p["half_width"].is_number());
+  const double half_width = p["half_width"].get<double>();
+  // Within the fit's own sensitivity (where the objective rises 5 %) and within 3 % of the truth.
+  CHECK(std::abs(best - 1.0) <= half_width);
+  CHECK(std::abs(best - 1.0) <= 0.03);
+  CHECK_FALSE(p["on_lower_bound"].get<bool>());
+  CHECK_FALSE(p["on_upper_bound"].get<bool>());
+  CHECK(j["fit"]["left_out"] == nlohmann::json::array({"drop_t3.csv"}));
+  // The left-out trial, scored with the fitted speed, rates within 0.05 of its rating with the
+  // true speed, on both channels.
+  const nlohmann::json at_truth = validate_json(truth, data, dir);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const nlohmann::json& c = j["channels"][k];
+    INFO(c["channel"]);
+    CHECK(c["trials"][2]["left_out"] == true);
+    const double fitted = c["trials"][2]["iso18571"]["overall"].get<double>();
+    const double ideal = at_truth["channels"][k]["trials"][2]["iso18571"]["overall"].get<double>();
+    CHECK(fitted == Approx(ideal).margin(0.05));
+  }
+  CHECK(fs::exists(dir.path / "fit" / "fitted.toml"));
 }
