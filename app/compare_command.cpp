@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "app/compare_prediction.hpp"
+#include "app/data_paths.hpp"
 #include "app/json_output.hpp"
 #include "app/output_file.hpp"
 #include "app/progress_line.hpp"

@@ -29,9 +29,6 @@ struct CompareArgs {
   int threads = 0;     // as `ccm run --threads`
 };
 
-// The main job's store: where a comparison is recorded without --db.
-inline constexpr const char* kMainJobStore = "results/default-study.sqlite";
-
 int compare_command(const CompareArgs& args);
 
 }  // namespace ccm

@@ -26,6 +26,10 @@ DataFolder find_data_folder();
 // The reference store ccm ships, relative to the data folder (scripts/build-reference-store.sh).
 inline constexpr std::string_view kReferenceStore = "reference/whole-impacts.sqlite";
 
+// The main job's store (scripts/run.sh): where `ccm compare` and `ccm validate` record without
+// --db, when it exists.
+inline constexpr const char* kMainJobStore = "results/default-study.sqlite";
+
 // <data folder>/<relative>, or an empty path when there is no data folder.
 std::filesystem::path default_data_file(std::string_view relative);
 

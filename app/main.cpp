@@ -164,6 +164,9 @@ int main(int argc, char** argv) {
                    "Runs the fit's search may use (the sensitivity profile adds 2-3 per "
                    "parameter)")
       ->capture_default_str();
+  validate->add_option("--db", validate_args.db,
+                       "Store to record the validation in, for `ccm report` (default: "
+                       "results/default-study.sqlite when it exists)");
   validate->add_flag("--json", validate_args.json, "Print the scores as JSON");
   validate->add_flag("--quiet,-q", validate_args.quiet, "No progress line");
   validate->add_option("--threads", validate_args.threads, "As `ccm run --threads`");

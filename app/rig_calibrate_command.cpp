@@ -171,8 +171,8 @@ int calibrate(const RigCalibrateArgs& args) {
   rec.objective_before = *before.objective;
   rec.objective_after = *after.objective;
   for (size_t i = 0; i < params.size(); ++i)
-    rec.parameters.push_back(
-        {params[i].name, params[i].lower, params[i].upper, params[i].initial, result.best[i]});
+    rec.parameters.push_back({params[i].name, params[i].lower, params[i].upper, params[i].initial,
+                              result.best[i], std::nullopt, std::nullopt});
   rec.history = history;
   const std::vector<rig::ParameterSpread> spread =
       args.profile ? profile_calibration(in, common, params, result.best, result.best_objective)

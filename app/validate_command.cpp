@@ -12,7 +12,9 @@
 #include "app/run_command.hpp"
 #include "app/validate_fit.hpp"
 #include "app/validate_output.hpp"
+#include "app/validate_record.hpp"
 #include "config/config_error.hpp"
+#include "db/sqlite/connection.hpp"
 #include "engine/threads/thread_count.hpp"
 #include "run/scene/scene_file.hpp"
 
@@ -33,7 +35,8 @@ fs::path out_folder(const ValidateArgs& args) {
 int validate(const ValidateArgs& args) {
   set_default_threads(resolve_threads(args.threads, available_cores()));
   const BenchData data = load_bench_data(args.data);
-  if (!args.fit.empty()) return validate_fit(args, data, out_folder(args));
+  const fs::path store = validation_store(args);
+  if (!args.fit.empty()) return validate_fit(args, data, out_folder(args), store);
   BenchRun bench(parse_scene_file(args.scene), data.mapping);
   const fs::path out = out_folder(args);
 
@@ -55,14 +58,15 @@ int validate(const ValidateArgs& args) {
   j["run"] = {{"verdict", to_string(run.verdict)},
               {"steps", run.steps},
               {"wall_seconds", run.wall_seconds}};
+  j["store"] = record_validation_result(store, args, data, scores, {}, j);
   write_atomic(out / "validation.json", j.dump(2) + "\n");
   write_channel_curves(out, scores);
   if (args.json)
     print_json(j);
   else {
     print_scores(scores);
-    fmt::print("\n  written: {}/validation.json, history.csv and one CSV per channel\n",
-               out.string());
+    fmt::print("\n  written: {}/validation.json, history.csv and one CSV per channel\n  {}\n",
+               out.string(), j["store"].get<std::string>());
   }
   return exit_code::completed;
 }
@@ -77,6 +81,9 @@ int validate_command(const ValidateArgs& args) {
     return exit_code::bad_input;
   } catch (const std::invalid_argument& e) {
     fmt::print(stderr, "ccm: error: {}\n", e.what());
+    return exit_code::bad_input;
+  } catch (const db::StoreError& e) {
+    fmt::print(stderr, "ccm: error: --db {}\n", e.what());
     return exit_code::bad_input;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ccm: error: {}\n", e.what());

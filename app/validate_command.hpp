@@ -17,6 +17,9 @@ struct ValidateArgs {
   // history.csv, validation.json and one <channel>.csv of the curves compared;
   // default: validate-<scene file's stem>.
   std::filesystem::path out;
+  // --db: the store the validation is recorded in (docs/store.md, `ccm report` shows it); empty:
+  // the main job's store when it exists.
+  std::filesystem::path db;
   bool json = false;   // the scores as JSON on stdout instead of the tables
   bool quiet = false;  // no progress line
   int threads = 0;     // as `ccm run --threads`

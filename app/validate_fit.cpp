@@ -13,6 +13,7 @@
 #include "app/progress_line.hpp"
 #include "app/run_command.hpp"
 #include "app/validate_output.hpp"
+#include "app/validate_record.hpp"
 #include "config/strict_table.hpp"
 #include "config/text_file.hpp"
 #include "rig_models/calibrate/bounded_search.hpp"
@@ -172,7 +173,8 @@ FitArgument parse_fit_argument(std::string_view text) {
   return a;
 }
 
-int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path& out) {
+int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path& out,
+                 const fs::path& store) {
   Fitting f{args, data, parse_toml(read_config_text(args.scene), args.scene), {}, {}, 0};
   for (const std::string& a : args.fit) f.fits.push_back(parse_fit_argument(a));
   if (args.evaluations < 2)
@@ -229,6 +231,7 @@ int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path
               {"runs", f.evaluations},
               {"fitted_to", fitted_to},
               {"left_out", std::vector<std::string>(left_out.begin(), left_out.end())}};
+  j["store"] = record_validation_result(store, args, data, scores, left_out, j);
   write_atomic(out / "validation.json", j.dump(2) + "\n");
   write_channel_curves(out, scores);
   if (args.json)
@@ -237,8 +240,8 @@ int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path
     print_fit(spreads, result, f.evaluations);
     print_scores(scores, left_out);
     fmt::print(
-        "\n  written: {}/fitted.toml, validation.json, history.csv and one CSV per channel\n",
-        out.string());
+        "\n  written: {}/fitted.toml, validation.json, history.csv and one CSV per channel\n  {}\n",
+        out.string(), j["store"].get<std::string>());
   }
   return exit_code::completed;
 }

@@ -25,7 +25,8 @@ struct FitArgument {
 FitArgument parse_fit_argument(std::string_view text);
 
 // Checks everything before the first run (the paths, the ranges, the trials chosen), fits,
-// prints and writes into `out`. Returns the exit code.
-int validate_fit(const ValidateArgs& args, const BenchData& data, const std::filesystem::path& out);
+// prints, writes into `out` and records in `store` (when it exists). Returns the exit code.
+int validate_fit(const ValidateArgs& args, const BenchData& data, const std::filesystem::path& out,
+                 const std::filesystem::path& store);
 
 }  // namespace ccm

@@ -75,15 +75,17 @@ void print_scores(const bench::BenchScores& scores, const std::set<std::string>&
   }
 }
 
+std::string channel_curves_csv(const bench::ChannelCurves& c) {
+  std::string csv = "time,simulated,mean,low,high\n";
+  for (std::size_t k = 0; k < c.t.size(); ++k)
+    csv += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", c.t[k], c.simulated[k],
+                       c.mean[k], c.low[k], c.high[k]);
+  return csv;
+}
+
 void write_channel_curves(const std::filesystem::path& out, const bench::BenchScores& scores) {
-  for (const bench::ChannelResult& r : scores.channels) {
-    const bench::ChannelCurves& c = r.curves;
-    std::string csv = "time,simulated,mean,low,high\n";
-    for (std::size_t k = 0; k < c.t.size(); ++k)
-      csv += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", c.t[k], c.simulated[k],
-                         c.mean[k], c.low[k], c.high[k]);
-    write_atomic(out / (r.channel + ".csv"), csv);
-  }
+  for (const bench::ChannelResult& r : scores.channels)
+    write_atomic(out / (r.channel + ".csv"), channel_curves_csv(r.curves));
 }
 
 }  // namespace ccm

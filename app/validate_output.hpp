@@ -18,7 +18,10 @@ nlohmann::json scores_json(const bench::BenchScores& scores,
 
 void print_scores(const bench::BenchScores& scores, const std::set<std::string>& left_out = {});
 
-// <out>/<channel>.csv for every channel: time, simulated, mean, low, high.
+// One channel's compared curves as CSV: time, simulated, mean, low, high.
+std::string channel_curves_csv(const bench::ChannelCurves& curves);
+
+// <out>/<channel>.csv for every channel.
 void write_channel_curves(const std::filesystem::path& out, const bench::BenchScores& scores);
 
 }  // namespace ccm

@@ -387,8 +387,51 @@ CREATE TABLE rig_calibration_predictions (
 );
 )sql";
 
-constexpr std::array<const char*, 8> kSteps = {kStep1, kStep2, kStep3, kStep4,
-                                               kStep5, kStep6, kStep7, kStep8};
+// Step 9: `ccm validate` (docs/bench-test.md) records each validation of a scene against a bench
+// test: what was compared and fitted, each channel's scores against each trial and the trials'
+// mean (nRMSE, peaks, the ISO/TS 18571 sub-scores and grade), each channel's compared curves
+// (CSV: time, simulated, mean, low, high) and the whole validation.json.
+constexpr const char* kStep9 = R"sql(
+CREATE TABLE validations (
+  id INTEGER PRIMARY KEY,
+  scene TEXT NOT NULL,
+  data TEXT NOT NULL,
+  fitted TEXT NOT NULL DEFAULT '',
+  document TEXT NOT NULL,
+  ccm_version TEXT NOT NULL,
+  git_hash TEXT NOT NULL,
+  host TEXT NOT NULL,
+  recorded_at TEXT NOT NULL
+);
+CREATE TABLE validation_scores (
+  validation_id INTEGER NOT NULL REFERENCES validations(id) ON DELETE CASCADE,
+  channel TEXT NOT NULL,
+  against TEXT NOT NULL,
+  left_out INTEGER NOT NULL,
+  samples INTEGER NOT NULL,
+  nrmse REAL,
+  peak_measured REAL NOT NULL,
+  peak_simulated REAL NOT NULL,
+  peak_time_error REAL NOT NULL,
+  corridor REAL NOT NULL,
+  phase REAL NOT NULL,
+  magnitude REAL NOT NULL,
+  slope REAL NOT NULL,
+  rating REAL NOT NULL,
+  grade TEXT NOT NULL,
+  PRIMARY KEY (validation_id, channel, against)
+);
+CREATE TABLE validation_curves (
+  validation_id INTEGER NOT NULL REFERENCES validations(id) ON DELETE CASCADE,
+  channel TEXT NOT NULL,
+  unit TEXT NOT NULL,
+  curves_csv TEXT NOT NULL,
+  PRIMARY KEY (validation_id, channel)
+);
+)sql";
+
+constexpr std::array<const char*, 9> kSteps = {kStep1, kStep2, kStep3, kStep4, kStep5,
+                                               kStep6, kStep7, kStep8, kStep9};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "db/store/comparison_store.hpp"
+#include "db/store/validation_store.hpp"
 #include "db/store/rig_reader.hpp"
 #include "db/store/study_store.hpp"
 #include "records/point_metrics.hpp"
@@ -48,6 +49,7 @@ struct ReportData {
   std::optional<study::GridSpec> grid_spec{};
   RigReportData rig{};
   std::vector<db::ComparisonRow> comparisons{};  // `ccm compare` records (schema step 6)
+  std::vector<db::ValidationRow> validations{};  // `ccm validate` records (schema step 9)
 };
 
 // True for the points of the convergence mode (they carry other_axes["mesh_scale"]).

@@ -56,6 +56,7 @@ ReportData load_report_data(const db::StudyStore& store) {
     data.grid_spec = study::parse_grid(grid->text, grid->source);
   data.rig = load_rig_report_data(store.connection());
   data.comparisons = db::load_comparisons(store.connection());
+  data.validations = db::load_validations(store.connection());
   return data;
 }
 

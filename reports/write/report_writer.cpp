@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "reports/figures/comparison_section.hpp"
+#include "reports/figures/validation_section.hpp"
 #include "reports/figures/error_runtime_section.hpp"
 #include "reports/figures/fit_section.hpp"
 #include "reports/figures/rig_section.hpp"
@@ -37,6 +38,7 @@ ReportContent plan_report(const ReportData& data, const ReportOptions& options,
   content.sections.push_back(error_runtime_section(data));
   content.sections.push_back(rig_section(data.rig));
   content.sections.push_back(comparison_section(data.comparisons));
+  content.sections.push_back(validation_section(data.validations));
   content.sections.push_back(provenance_section(data, stamp));
   return content;
 }

@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "correlate/cfc_filter.hpp"
+#include "db/store/study_store.hpp"
+#include "db/store/validation_store.hpp"
 #include "tests/app/cli_shell.hpp"
 #include "tests/bench_test/bench_trial_generator.hpp"
 
@@ -169,6 +171,22 @@ TEST_CASE("ccm validate: generated trials are aligned, rated excellent, and lowe
     INFO(c["channel"]);
     CHECK(c["mean"]["iso18571"]["grade"] == "excellent");
     for (const nlohmann::json& t : c["trials"]) CHECK(t["iso18571"]["overall"].get<double>() > 0.9);
+  }
+  // Recorded in a store (the report's section draws it: tests/db/test_validation_store.cpp).
+  const fs::path store = dir.path / "s.sqlite";
+  { ccm::db::StudyStore create(store); }
+  const auto recorded = ccm::test::run_ccm(
+      fmt::format("validate '{}' --data '{}' --out '{}' --db '{}' --quiet", truth.string(),
+                  data.string(), (dir.path / "rec").string(), store.string()),
+      dir);
+  REQUIRE(recorded.status == 0);
+  CHECK_THAT(recorded.out, Contains("(validation 1; `ccm report` shows it)"));
+  {
+    ccm::db::StudyStore read(store, ccm::db::Access::read_only);
+    const auto rows = ccm::db::load_validations(read.connection());
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0].scores.size() == 8);  // 2 channels x (3 trials + their mean)
+    CHECK(rows[0].curves.size() == 2);
   }
   for (double speed : {0.8, 1.2}) {
     INFO("striker at " << speed << " m/s");

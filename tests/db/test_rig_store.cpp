@@ -197,7 +197,8 @@ TEST_CASE("rig store: a calibration refers to its runs, a dangling one writes no
   cal.after_run_id = after;
   cal.objective_before = 0.5;
   cal.objective_after = 0.4;
-  cal.parameters = {{"mu_s", 0.0, 1.0, 0.4, 0.35}, {"mu_k", 0.0, 1.0, 0.7, 0.6}};
+  cal.parameters = {{"mu_s", 0.0, 1.0, 0.4, 0.35, std::nullopt, std::nullopt},
+                    {"mu_k", 0.0, 1.0, 0.7, 0.6, std::nullopt, std::nullopt}};
   cal.history = {{"mu_s=0.4;mu_k=0.7", 0.5, "completed", 1.0},
                  {"mu_s=0.35;mu_k=0.6", 0.4, "completed", 1.1}};
   cal.started_at = cal.ended_at = kStamp;

@@ -1,0 +1,56 @@
+#include "app/validate_record.hpp"
+
+#include <fmt/format.h>
+
+#include "app/data_paths.hpp"
+#include "app/validate_output.hpp"
+#include "db/store/study_store.hpp"
+#include "db/store/validation_store.hpp"
+
+namespace ccm {
+namespace {
+
+db::ValidationScoreRow score_row(const std::string& channel, const bench::ChannelScore& s,
+                                 bool left_out) {
+  const correlate::CurveRating& r = s.rating;
+  return {channel,          s.against,
+          left_out,         static_cast<long long>(s.samples),
+          s.nrmse,          s.peak_measured,
+          s.peak_simulated, s.peak_time_error,
+          r.corridor,       r.phase,
+          r.magnitude,      r.slope,
+          r.overall,        std::string(correlate::grade_name(r.grade))};
+}
+
+}  // namespace
+
+std::filesystem::path validation_store(const ValidateArgs& args) {
+  const std::filesystem::path store =
+      args.db.empty() ? std::filesystem::path(kMainJobStore) : args.db;
+  if (std::filesystem::exists(store)) db::StudyStore check(store, db::Access::read_only);
+  return store;
+}
+
+std::string record_validation_result(const std::filesystem::path& store, const ValidateArgs& args,
+                                     const BenchData& data, const bench::BenchScores& scores,
+                                     const std::set<std::string>& left_out,
+                                     const nlohmann::json& document) {
+  if (!std::filesystem::is_regular_file(store))
+    return fmt::format("not recorded: no store at {}", store.string());
+  db::ValidationRow row;
+  row.scene = args.scene.string();
+  row.data = args.data.string();
+  if (document.contains("fit")) row.fitted = document["fit"]["parameters"].dump();
+  row.document = document.dump();
+  for (const bench::ChannelResult& c : scores.channels) {
+    for (const bench::ChannelScore& s : c.trials)
+      row.scores.push_back(score_row(c.channel, s, left_out.count(s.against) > 0));
+    row.scores.push_back(score_row(c.channel, c.mean, false));
+    row.curves.push_back(
+        {c.channel, data.mapping.channel(c.channel)->unit, channel_curves_csv(c.curves)});
+  }
+  const long long id = db::record_validation(store, row);
+  return fmt::format("recorded in {} (validation {}; `ccm report` shows it)", store.string(), id);
+}
+
+}  // namespace ccm
