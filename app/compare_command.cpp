@@ -11,6 +11,7 @@
 #include <tuple>
 #include <utility>
 
+#include "app/command_errors.hpp"
 #include "app/compare_prediction.hpp"
 #include "app/data_paths.hpp"
 #include "app/json_output.hpp"
@@ -375,24 +376,7 @@ int compare(const CompareArgs& args) {
 }  // namespace
 
 int compare_command(const CompareArgs& args) {
-  try {
-    return compare(args);
-  } catch (const ConfigError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const std::invalid_argument& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const db::StoreError& e) {
-    fmt::print(stderr, "ccm: error: --db {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ccm: internal error: {}\n", e.what());
-    return exit_code::internal_error;
-  } catch (const std::string& e) {  // Gmsh throws its messages as strings
-    fmt::print(stderr, "ccm: internal error: {}\n", e);
-    return exit_code::internal_error;
-  }
+  return run_scene_command([&] { return compare(args); });
 }
 
 }  // namespace ccm

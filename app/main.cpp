@@ -171,8 +171,9 @@ int main(int argc, char** argv) {
   validate->add_flag("--quiet,-q", validate_args.quiet, "No progress line");
   validate->add_option("--threads", validate_args.threads, "As `ccm run --threads`");
   validate->footer(
-      "Exit codes: 0 rated, 1 internal error, 2 bad input (nothing run, nothing written), 3 the "
-      "run went unstable (its history is written).");
+      "Exit codes: 0 rated, 1 internal error, 2 bad input (nothing run, nothing written), 3 no "
+      "rating: the run went unstable or cannot be scored against the trials (its history is "
+      "written).");
 
   ccm::StudyRunArgs study_run_args;
   ccm::StudyStatusArgs study_status_args;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/bench_run.hpp"
+#include "app/command_errors.hpp"
 #include "app/json_output.hpp"
 #include "app/output_file.hpp"
 #include "app/progress_line.hpp"
@@ -50,21 +51,22 @@ int validate(const ValidateArgs& args) {
                run.instability.reason);
     return exit_code::unstable;
   }
-  const bench::BenchScores scores =
-      bench::score_bench_test(data.mapping, data.trials, bench.simulated());
-  nlohmann::json j = scores_json(scores);
+  const std::optional<bench::BenchScores> scores =
+      scored(data.mapping, data.trials, bench.simulated());
+  if (!scores) return exit_code::unstable;
+  nlohmann::json j = scores_json(*scores);
   j["scene"] = args.scene.string();
   j["data"] = args.data.string();
   j["run"] = {{"verdict", to_string(run.verdict)},
               {"steps", run.steps},
               {"wall_seconds", run.wall_seconds}};
-  j["store"] = record_validation_result(store, args, data, scores, {}, j);
+  j["store"] = record_validation_result(store, args, data, *scores, {}, j);
   write_atomic(out / "validation.json", j.dump(2) + "\n");
-  write_channel_curves(out, scores);
+  write_channel_curves(out, *scores);
   if (args.json)
     print_json(j);
   else {
-    print_scores(scores);
+    print_scores(*scores);
     fmt::print("\n  written: {}/validation.json, history.csv and one CSV per channel\n  {}\n",
                out.string(), j["store"].get<std::string>());
   }
@@ -74,24 +76,7 @@ int validate(const ValidateArgs& args) {
 }  // namespace
 
 int validate_command(const ValidateArgs& args) {
-  try {
-    return validate(args);
-  } catch (const ConfigError& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const std::invalid_argument& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const db::StoreError& e) {
-    fmt::print(stderr, "ccm: error: --db {}\n", e.what());
-    return exit_code::bad_input;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ccm: error: {}\n", e.what());
-    return exit_code::internal_error;
-  } catch (const std::string& e) {  // Gmsh throws its messages as strings
-    fmt::print(stderr, "ccm: internal error: {}\n", e);
-    return exit_code::internal_error;
-  }
+  return run_scene_command([&] { return validate(args); });
 }
 
 }  // namespace ccm

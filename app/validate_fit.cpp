@@ -99,7 +99,7 @@ struct Fitting {
     if (s.verdict == Verdict::unstable) return std::nullopt;
     try {
       return mean_nrmse(bench::score_bench_test(data.mapping, fit_trials, run.simulated()));
-    } catch (const std::runtime_error&) {
+    } catch (const bench::ScoringError&) {
       return std::nullopt;  // no trigger, no overlap: a failed evaluation the search steers from
     }
   }
@@ -211,8 +211,10 @@ int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path
                run.instability.time, run.instability.reason);
     return exit_code::unstable;
   }
-  const bench::BenchScores scores =
-      bench::score_bench_test(data.mapping, data.trials, best.simulated());
+  const std::optional<bench::BenchScores> maybe =
+      scored(data.mapping, data.trials, best.simulated());
+  if (!maybe) return exit_code::unstable;
+  const bench::BenchScores& scores = *maybe;
   std::set<std::string> left_out;
   for (std::size_t i : left_idx) left_out.insert(data.trials[i].name);
   nlohmann::json j = scores_json(scores, left_out);

@@ -46,6 +46,17 @@ void print_score(const std::string& channel, const bench::ChannelScore& s, bool 
 
 }  // namespace
 
+std::optional<bench::BenchScores> scored(const bench::BenchMapping& mapping,
+                                         const std::vector<bench::PreparedTrial>& trials,
+                                         const std::map<std::string, rig::TimeSeries>& simulated) {
+  try {
+    return bench::score_bench_test(mapping, trials, simulated);
+  } catch (const bench::ScoringError& e) {
+    fmt::print(stderr, "ccm: the run cannot be scored against the trials: {}\n", e.what());
+    return std::nullopt;
+  }
+}
+
 nlohmann::json scores_json(const bench::BenchScores& scores,
                            const std::set<std::string>& left_out) {
   nlohmann::json channels = nlohmann::json::array();

@@ -164,7 +164,7 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
     sim_trigger = trigger_time(simulated_conditioned(simulated.at(c.name), trials[0].step, c),
                                m.align.threshold);
     if (!sim_trigger)
-      throw std::runtime_error(fmt::format(
+      throw ScoringError(fmt::format(
           "the simulated '{}' never reaches the trigger threshold {:g}: the trials' clocks cannot "
           "be aligned with it (align.threshold in {})",
           c.name, m.align.threshold, m.file.string()));
@@ -189,7 +189,7 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
           within(shifted(trial.channels.at(c.name), out.clock_shifts[i]),
                  std::max(w.t0, sim_u.t.front()), std::min(w.t1, sim_u.t.back()));
       if (measured.t.size() < kMinScoredSamples)
-        throw std::runtime_error(fmt::format(
+        throw ScoringError(fmt::format(
             "channel '{}': {} holds {} samples inside the simulated span and the window [{:.6g}, "
             "{:.6g}] s; a score needs {}",
             c.name, trial.name, measured.t.size(), w.t0, w.t1, kMinScoredSamples));
@@ -217,7 +217,7 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
     const rig::TimeSeries sim_at = rig::sample_at(sim, curves.t);
     curves.simulated = sim_at.value;
     if (curves.t.size() < kMinScoredSamples)
-      throw std::runtime_error(fmt::format(
+      throw ScoringError(fmt::format(
           "channel '{}': the trials overlap in {} samples inside the window; a score needs {}",
           c.name, curves.t.size(), kMinScoredSamples));
     result.mean = score("mean", {curves.t, curves.mean}, sim_at, trials[0].step);

@@ -9,6 +9,7 @@
 
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,8 +60,13 @@ struct BenchScores {
   std::vector<ChannelResult> channels;
 };
 
+// A simulation that cannot be scored against the trials (not bad input: the run decides it).
+struct ScoringError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // The scores of `simulated` (one curve per channel, by name, on the simulation's clock). Throws
-// std::runtime_error when the simulated trigger channel never reaches the threshold, or when a
+// ScoringError when the simulated trigger channel never reaches the threshold, or when a
 // channel's window holds fewer than 10 measured samples inside the simulated span.
 BenchScores score_bench_test(const BenchMapping& mapping, const std::vector<PreparedTrial>& trials,
                              const std::map<std::string, rig::TimeSeries>& simulated);

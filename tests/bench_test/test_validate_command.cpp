@@ -150,11 +150,8 @@ double mean_rating(const nlohmann::json& j, const std::string& channel) {
   return 0.0;
 }
 
-}  // namespace
-
-TEST_CASE("ccm validate: generated trials are aligned, rated excellent, and lower when off",
-          "[bench_test][cli]") {
-  ccm::test::TempDir dir;
+// The strike run at 1 m/s as `truth.toml` and its bench test in <dir>/bench; returns both paths.
+std::pair<fs::path, fs::path> truth_and_bench(ccm::test::TempDir& dir) {
   const fs::path truth = dir.write("strike.toml", strike_scene(1.0));
   const auto run = ccm::test::run_ccm(
       fmt::format("run '{}' --out '{}' --quiet", truth.string(), (dir.path / "truth").string()),
@@ -162,6 +159,15 @@ TEST_CASE("ccm validate: generated trials are aligned, rated excellent, and lowe
   REQUIRE(run.status == 0);
   const fs::path data = dir.path / "bench";
   write_bench_test(data, dir.path / "truth" / "history.csv", 0.3);
+  return {truth, data};
+}
+
+}  // namespace
+
+TEST_CASE("ccm validate: generated trials are aligned, rated excellent, and lower when off",
+          "[bench_test][cli]") {
+  ccm::test::TempDir dir;
+  const auto [truth, data] = truth_and_bench(dir);
 
   const nlohmann::json j = validate_json(truth, data, dir);
   REQUIRE(j["clock_shifts"].size() == 3);
@@ -197,16 +203,27 @@ TEST_CASE("ccm validate: generated trials are aligned, rated excellent, and lowe
   }
 }
 
+TEST_CASE("ccm validate: a run whose curves cannot be scored says why and exits 3",
+          "[bench_test][cli]") {
+  ccm::test::TempDir dir;
+  const auto [truth, data] = truth_and_bench(dir);
+  // At 0.05 m/s the striker never reaches the block in 8 ms: no acceleration, no trigger.
+  const fs::path slow = dir.write("slow.toml", strike_scene(0.05));
+  const fs::path out = dir.path / "slow-out";
+  const auto r = ccm::test::run_ccm(fmt::format("validate '{}' --data '{}' --out '{}' --quiet",
+                                                slow.string(), data.string(), out.string()),
+                                    dir);
+  CHECK(r.status == 3);
+  CHECK_THAT(r.err, Contains("cannot be scored against the trials: the simulated 'accel' never "
+                             "reaches the trigger threshold"));
+  CHECK(fs::exists(out / "history.csv"));
+  CHECK_FALSE(fs::exists(out / "validation.json"));
+}
+
 TEST_CASE("ccm validate: bad data and names that name nothing are refused before any run",
           "[bench_test][cli]") {
   ccm::test::TempDir dir;
-  const fs::path scene = dir.write("strike.toml", strike_scene(1.0));
-  const auto run = ccm::test::run_ccm(
-      fmt::format("run '{}' --out '{}' --quiet", scene.string(), (dir.path / "truth").string()),
-      dir);
-  REQUIRE(run.status == 0);
-  const fs::path data = dir.path / "bench";
-  write_bench_test(data, dir.path / "truth" / "history.csv", 0.3);
+  const auto [scene, data] = truth_and_bench(dir);
   auto refused = [&](const std::string& expected) {
     const fs::path out = dir.path / "never";
     const auto r = ccm::test::run_ccm(fmt::format("validate '{}' --data '{}' --out '{}' --quiet",
@@ -254,13 +271,7 @@ TEST_CASE("ccm validate: bad data and names that name nothing are refused before
 TEST_CASE("ccm validate --fit: the striker's speed recovered from its own trials",
           "[bench_test][cli][heavy]") {
   ccm::test::TempDir dir;
-  const fs::path truth = dir.write("strike.toml", strike_scene(1.0));
-  const auto run = ccm::test::run_ccm(
-      fmt::format("run '{}' --out '{}' --quiet", truth.string(), (dir.path / "truth").string()),
-      dir);
-  REQUIRE(run.status == 0);
-  const fs::path data = dir.path / "bench";
-  write_bench_test(data, dir.path / "truth" / "history.csv", 0.3);
+  const auto [truth, data] = truth_and_bench(dir);
   // Started from 0.87 m/s, fitted on trials 1 and 2, trial 3 left out.
   const fs::path start = dir.write("strike_start.toml", strike_scene(0.87));
   const auto r =
