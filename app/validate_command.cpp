@@ -60,9 +60,11 @@ int validate(const ValidateArgs& args) {
   j["run"] = {{"verdict", to_string(run.verdict)},
               {"steps", run.steps},
               {"wall_seconds", run.wall_seconds}};
-  j["store"] = record_validation_result(store, args, data, *scores, {}, j);
+  const db::ValidationRow row = validation_row(args, data, *scores, {}, j);
+  j["store"] = record_validation_row(store, row);
   write_atomic(out / "validation.json", j.dump(2) + "\n");
   write_channel_curves(out, *scores);
+  write_validation_figures(out, row);
   if (args.json)
     print_json(j);
   else {

@@ -233,9 +233,11 @@ int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path
               {"runs", f.evaluations},
               {"fitted_to", fitted_to},
               {"left_out", std::vector<std::string>(left_out.begin(), left_out.end())}};
-  j["store"] = record_validation_result(store, args, data, scores, left_out, j);
+  const db::ValidationRow row = validation_row(args, data, scores, left_out, j);
+  j["store"] = record_validation_row(store, row);
   write_atomic(out / "validation.json", j.dump(2) + "\n");
   write_channel_curves(out, scores);
+  write_validation_figures(out, row);
   if (args.json)
     print_json(j);
   else {

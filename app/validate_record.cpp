@@ -3,9 +3,14 @@
 #include <fmt/format.h>
 
 #include "app/data_paths.hpp"
+#include "app/output_file.hpp"
 #include "app/validate_output.hpp"
+#include "bench_test/units.hpp"
 #include "db/store/study_store.hpp"
 #include "db/store/validation_store.hpp"
+#include "reports/figures/report_content.hpp"
+#include "reports/figures/validation_section.hpp"
+#include "reports/tables/table.hpp"
 
 namespace ccm {
 namespace {
@@ -31,12 +36,10 @@ std::filesystem::path validation_store(const ValidateArgs& args) {
   return store;
 }
 
-std::string record_validation_result(const std::filesystem::path& store, const ValidateArgs& args,
-                                     const BenchData& data, const bench::BenchScores& scores,
-                                     const std::set<std::string>& left_out,
-                                     const nlohmann::json& document) {
-  if (!std::filesystem::is_regular_file(store))
-    return fmt::format("not recorded: no store at {}", store.string());
+db::ValidationRow validation_row(const ValidateArgs& args, const BenchData& data,
+                                 const bench::BenchScores& scores,
+                                 const std::set<std::string>& left_out,
+                                 const nlohmann::json& document) {
   db::ValidationRow row;
   row.scene = args.scene.string();
   row.data = args.data.string();
@@ -46,11 +49,32 @@ std::string record_validation_result(const std::filesystem::path& store, const V
     for (const bench::ChannelScore& s : c.trials)
       row.scores.push_back(score_row(c.channel, s, left_out.count(s.against) > 0));
     row.scores.push_back(score_row(c.channel, c.mean, false));
-    row.curves.push_back(
-        {c.channel, data.mapping.channel(c.channel)->unit, channel_curves_csv(c.curves)});
+    row.curves.push_back({c.channel,
+                          std::string(bench::si_unit(data.mapping.channel(c.channel)->unit)),
+                          channel_curves_csv(c.curves)});
   }
+  return row;
+}
+
+std::string record_validation_row(const std::filesystem::path& store,
+                                  const db::ValidationRow& row) {
+  if (!std::filesystem::is_regular_file(store))
+    return fmt::format("not recorded: no store at {}", store.string());
   const long long id = db::record_validation(store, row);
   return fmt::format("recorded in {} (validation {}; `ccm report` shows it)", store.string(), id);
+}
+
+void write_validation_figures(const std::filesystem::path& out, const db::ValidationRow& row) {
+  reports::ReportContent content;
+  content.sections.push_back(reports::validation_section({row}));
+  reports::render_figures(content);
+  const reports::Section& s = content.sections.front();
+  for (const reports::Table& t : s.tables) write_atomic(out / "ratings.csv", reports::to_csv(t));
+  for (const reports::Figure& f : s.figures) {
+    // fig-validation-1-<channel> in the report; <channel>.svg here, beside <channel>.csv.
+    const std::string prefix = "fig-validation-1-";
+    write_atomic(out / (f.id.substr(prefix.size()) + ".svg"), f.svg);
+  }
 }
 
 }  // namespace ccm

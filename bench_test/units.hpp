@@ -11,6 +11,9 @@ namespace ccm::bench {
 // The factor to SI of `unit`, or none when ccm does not know it.
 std::optional<double> si_factor(std::string_view unit);
 
+// The SI unit `unit` converts to ("g": "m/s^2"); empty when ccm does not know it.
+std::string_view si_unit(std::string_view unit);
+
 // Every unit known, for the did-you-mean of a mistyped one.
 std::vector<std::string_view> known_units();
 

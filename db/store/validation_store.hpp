@@ -25,7 +25,7 @@ struct ValidationScoreRow {
 
 struct ValidationCurvesRow {
   std::string channel;
-  std::string unit;        // the measured column's unit (the curves are in SI)
+  std::string unit;        // the SI unit of the curves
   std::string curves_csv;  // time,simulated,mean,low,high
 };
 

@@ -41,7 +41,7 @@ Figure channel_figure(const db::ValidationRow& v, std::size_t index,
   const Curves c = parse_curves(row.curves_csv);
   PlotSpec plot{.title = fmt::format("{}: {}", v.scene, row.channel),
                 .x_label = "simulation time [s]",
-                .y_label = fmt::format("{} [SI; measured in {}]", row.channel, row.unit)};
+                .y_label = fmt::format("{} [{}]", row.channel, row.unit)};
   plot.series.push_back(Series{.title = "trials: lowest to highest",
                                .style = SeriesStyle::band,
                                .x = c.t,

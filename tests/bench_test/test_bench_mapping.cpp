@@ -113,4 +113,7 @@ TEST_CASE("bench mapping: the units convert to SI", "[bench_test]") {
   CHECK(*si_factor("deg") == Approx(3.14159265358979 / 180).epsilon(1e-12));
   CHECK(*si_factor("km/h") == Approx(1 / 3.6).epsilon(1e-12));
   CHECK_FALSE(si_factor("furlong"));
+  CHECK(ccm::bench::si_unit("g") == "m/s^2");
+  CHECK(ccm::bench::si_unit("psi") == "Pa");
+  CHECK(ccm::bench::si_unit("furlong").empty());
 }

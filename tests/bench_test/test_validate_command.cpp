@@ -178,6 +178,13 @@ TEST_CASE("ccm validate: generated trials are aligned, rated excellent, and lowe
     CHECK(c["mean"]["iso18571"]["grade"] == "excellent");
     for (const nlohmann::json& t : c["trials"]) CHECK(t["iso18571"]["overall"].get<double>() > 0.9);
   }
+  // The output folder: the rating table and each channel's figure and curves.
+  const fs::path out = dir.path / ("out-" + truth.stem().string());
+  for (const char* file : {"validation.json", "history.csv", "ratings.csv", "speed.csv",
+                           "speed.svg", "accel.csv", "accel.svg"})
+    CHECK(fs::exists(out / file));
+  CHECK_THAT(ccm::test::file_text(out / "ratings.csv"), Contains("drop_t2.csv"));
+  CHECK_THAT(ccm::test::file_text(out / "accel.svg"), Contains("<svg"));
   // Recorded in a store (the report's section draws it: tests/db/test_validation_store.cpp).
   const fs::path store = dir.path / "s.sqlite";
   { ccm::db::StudyStore create(store); }

@@ -26,7 +26,7 @@ db::ValidationRow validation() {
       {"load", "t1.csv", false, 80, 0.05, 2000.0, 2100.0, 1e-4, 0.9, 1.0, 0.8, 0.9, 0.9, "good"},
       {"load", "mean", false, 80, std::nullopt, 2000.0, 2100.0, 0.0, 1.0, 1.0, 0.95, 0.95, 0.98,
        "excellent"}};
-  r.curves = {{"load", "kN", "time,simulated,mean,low,high\n0,1,1,0.9,1.1\n1e-4,2,2.1,2,2.2\n"}};
+  r.curves = {{"load", "N", "time,simulated,mean,low,high\n0,1,1,0.9,1.1\n1e-4,2,2.1,2,2.2\n"}};
   return r;
 }
 
@@ -49,7 +49,7 @@ TEST_CASE("validation store: a record reads back, and the report draws it", "[be
   CHECK(rows[0].scores[1].grade == "excellent");
   CHECK(rows[0].scores[0].peak_simulated == 2100.0);
   REQUIRE(rows[0].curves.size() == 1);
-  CHECK(rows[0].curves[0].unit == "kN");
+  CHECK(rows[0].curves[0].unit == "N");
 
   const reports::Section s = reports::validation_section(rows);
   REQUIRE(s.tables.size() == 1);
