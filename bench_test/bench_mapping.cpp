@@ -4,8 +4,10 @@
 
 #include <cctype>
 #include <cmath>
+#include <initializer_list>
 #include <set>
 #include <string_view>
+#include <utility>
 
 #include "bench_test/units.hpp"
 #include "config/config_error.hpp"
@@ -133,6 +135,48 @@ ClockAlignment alignment_of(const StrictTable& t, const std::vector<ChannelSpec>
   return a;
 }
 
+// The clock: time_column with time_unit, or sample_rate alone.
+void read_clock(const StrictTable& t, BenchMapping& m) {
+  if (t.has("time_column") == t.has("sample_rate"))
+    t.fail("", "names either time_column (with time_unit) or sample_rate [Hz], one of the two");
+  if (t.has("sample_rate")) {
+    if (t.has("time_unit")) t.fail("time_unit", "only with time_column");
+    m.sample_rate = t.need_number("sample_rate");
+    if (!(m.sample_rate > 0.0))
+      t.fail("sample_rate", fmt::format("{} Hz must be > 0", m.sample_rate));
+    return;
+  }
+  m.time_column = t.need_string("time_column");
+  m.time_unit = unit_of(t, "time_unit", m.time_factor);
+  if (m.time_unit != "s" && m.time_unit != "ms" && m.time_unit != "us")
+    t.fail("time_unit", fmt::format("'{}' is not a unit of time (s, ms, us)", m.time_unit));
+}
+
+char one_of(const StrictTable& t, std::string_view key, char fallback,
+            std::initializer_list<std::pair<std::string_view, char>> allowed) {
+  const std::optional<std::string> v = t.string(key);
+  if (!v) return fallback;
+  std::vector<std::string_view> names;
+  for (const auto& [name, c] : allowed) {
+    if (*v == name) return c;
+    names.push_back(name);
+  }
+  t.fail(key, unknown_value_problem(*v, names));
+}
+
+void read_layout(const StrictTable& t, BenchMapping& m) {
+  m.delimiter = one_of(t, "delimiter", ',', {{",", ','}, {";", ';'}, {"tab", '\t'}, {"\t", '\t'}});
+  m.decimal = one_of(t, "decimal", '.', {{".", '.'}, {",", ','}});
+  if (m.decimal == ',' && m.delimiter == ',')
+    t.fail("decimal", "a decimal comma needs another delimiter (delimiter = \";\" or \"tab\")");
+  m.header_line = static_cast<int>(t.get_or<long>("header_line", 0));
+  if (t.has("header_line") && m.header_line < 1)
+    t.fail("header_line", fmt::format("{} must be a line number, >= 1", m.header_line));
+  m.skip_after_header = static_cast<int>(t.get_or<long>("skip_after_header", 0));
+  if (m.skip_after_header < 0)
+    t.fail("skip_after_header", fmt::format("{} must be >= 0", m.skip_after_header));
+}
+
 }  // namespace
 
 const ChannelSpec* BenchMapping::channel(const std::string& name) const {
@@ -148,20 +192,19 @@ BenchMapping parse_bench_mapping(const std::string& text, const std::filesystem:
   BenchMapping m;
   m.file = file;
   const StrictTable trials = top.need_table("trials");
-  trials.allow_only({"files", "time_column", "time_unit"});
+  trials.allow_only({"files", "time_column", "time_unit", "sample_rate", "delimiter", "decimal",
+                     "header_line", "skip_after_header"});
   m.files_pattern = trials.need_string("files");
   if (m.files_pattern.find('/') != std::string::npos)
     trials.fail("files", "a file-name pattern in the mapping file's folder, without '/'");
-  m.time_column = trials.need_string("time_column");
-  m.time_unit = unit_of(trials, "time_unit", m.time_factor);
-  if (m.time_unit != "s" && m.time_unit != "ms" && m.time_unit != "us")
-    trials.fail("time_unit", fmt::format("'{}' is not a unit of time (s, ms, us)", m.time_unit));
+  read_clock(trials, m);
+  read_layout(trials, m);
   std::set<std::string> names;
   for (const StrictTable& t : top.need_tables("channels")) {
     ChannelSpec c = channel_of(t);
     if (!names.insert(c.name).second)
       t.fail("name", fmt::format("'{}' names an earlier channel too", c.name));
-    if (c.column == m.time_column)
+    if (!m.time_column.empty() && c.column == m.time_column)
       t.fail("column", fmt::format("'{}' is the time column", c.column));
     m.channels.push_back(std::move(c));
   }

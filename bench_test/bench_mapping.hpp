@@ -52,9 +52,16 @@ struct ClockAlignment {
 struct BenchMapping {
   std::filesystem::path file;  // the mapping file
   std::string files_pattern;   // glob of the trial files, in the mapping file's folder
+  // The clock: a time column in a unit, or (no time column) a sample rate, the rows its samples.
   std::string time_column;
   std::string time_unit;
   double time_factor = 1.0;
+  double sample_rate = 0.0;  // Hz; > 0 only without a time column
+  // The file's layout (docs/bench-test.md, "Trial files from other tools").
+  char delimiter = ',';
+  char decimal = '.';
+  int header_line = 0;        // 1-based line of the column names; 0: the first non-blank line
+  int skip_after_header = 0;  // lines between the header and the data (a units row)
   ClockAlignment align;
   std::vector<ChannelSpec> channels;
 

@@ -59,19 +59,48 @@ std::size_t column_index(const std::vector<std::string_view>& header, const std:
   return static_cast<std::size_t>(it - header.begin());
 }
 
-std::vector<std::string_view> read_header(const Lines& lines, const fs::path& source) {
+// A cell without one pair of surrounding double quotes ("Force [kN]" as many loggers write it).
+std::string_view unquoted(std::string_view cell) {
+  if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"')
+    return cell.substr(1, cell.size() - 2);
+  return cell;
+}
+
+std::vector<std::string_view> cells_of(std::string_view line, char delimiter) {
+  std::vector<std::string_view> cells = rig::split_cells(line, delimiter);
+  for (std::string_view& c : cells) c = unquoted(c);
+  return cells;
+}
+
+std::string delimiter_name(char d) { return d == '\t' ? std::string("tab") : std::string(1, d); }
+
+// The index (into lines) of the header: the mapping's header_line, or the first line.
+std::size_t header_index(const Lines& lines, const fs::path& source, const BenchMapping& m) {
   if (lines.text.empty()) throw config_error(source, 0, "", "the file is empty");
-  std::vector<std::string_view> header = rig::split_cells(lines.text[0]);
+  if (m.header_line == 0) return 0;
+  for (std::size_t i = 0; i < lines.number.size(); ++i)
+    if (lines.number[i] == m.header_line) return i;
+  throw config_error(source, m.header_line, "",
+                     fmt::format("the mapping's header_line {} is blank or past the end of the "
+                                 "file",
+                                 m.header_line));
+}
+
+std::vector<std::string_view> read_header(std::string_view line, int number, const fs::path& source,
+                                          const BenchMapping& m) {
+  std::vector<std::string_view> header = cells_of(line, m.delimiter);
   if (header.size() == 1)
-    if (const std::optional<char> d = rig::foreign_delimiter(header[0]))
-      throw config_error(source, lines.number[0], "",
-                         fmt::format("cells are separated by '{}'; the format uses ','",
-                                     *d == '\t' ? std::string("\\t") : std::string(1, *d)));
+    for (char d : {',', ';', '\t', '|'})
+      if (d != m.delimiter && header[0].find(d) != std::string_view::npos)
+        throw config_error(
+            source, number, "",
+            fmt::format("cells are separated by '{}'; the mapping reads '{}' (set "
+                        "delimiter = \"{}\" in [trials])",
+                        delimiter_name(d), delimiter_name(m.delimiter), delimiter_name(d)));
   for (std::size_t i = 0; i < header.size(); ++i)
     for (std::size_t j = i + 1; j < header.size(); ++j)
       if (header[i] == header[j] && !header[i].empty())
-        throw config_error(source, lines.number[0], header[i],
-                           "the header names this column twice");
+        throw config_error(source, number, header[i], "the header names this column twice");
   return header;
 }
 
@@ -79,27 +108,39 @@ std::vector<std::string_view> read_header(const Lines& lines, const fs::path& so
 
 BenchTrial parse_bench_trial(std::string_view text, const fs::path& source, const BenchMapping& m) {
   const Lines lines = lines_of(text);
-  const std::vector<std::string_view> header = read_header(lines, source);
-  const int header_line = lines.number[0];
-  const std::size_t time_index = column_index(header, m.time_column, source, header_line);
+  const std::size_t h = header_index(lines, source, m);
+  const int header_line = lines.number[h];
+  const std::vector<std::string_view> header = read_header(lines.text[h], header_line, source, m);
+  const bool timed = !m.time_column.empty();
+  const std::size_t time_index =
+      timed ? column_index(header, m.time_column, source, header_line) : 0;
   std::vector<std::size_t> index;
   for (const ChannelSpec& c : m.channels)
     index.push_back(column_index(header, c.column, source, header_line));
   BenchTrial trial;
   trial.file = source;
   std::vector<std::vector<double>> values(m.channels.size());
+  std::string decimal_point;  // a cell with its decimal comma made a point
   auto cell = [&](const std::vector<std::string_view>& cells, std::size_t i, int line) {
-    const rig::CellNumber n = rig::parse_number_cell(cells[i]);
+    std::string_view text_cell = cells[i];
+    if (m.decimal == ',') {
+      decimal_point.assign(text_cell);
+      std::replace(decimal_point.begin(), decimal_point.end(), ',', '.');
+      text_cell = decimal_point;
+    }
+    const rig::CellNumber n = rig::parse_number_cell(text_cell);
     if (!n.problem.empty()) throw config_error(source, line, header[i], n.problem);
     return n.value;
   };
-  for (std::size_t r = 1; r < lines.text.size(); ++r) {
+  const std::size_t first = h + 1 + static_cast<std::size_t>(m.skip_after_header);
+  for (std::size_t r = first; r < lines.text.size(); ++r) {
     const int line = lines.number[r];
-    const std::vector<std::string_view> cells = rig::split_cells(lines.text[r]);
+    const std::vector<std::string_view> cells = cells_of(lines.text[r], m.delimiter);
     if (cells.size() != header.size())
       throw config_error(source, line, "",
                          fmt::format("{} cells; the header has {}", cells.size(), header.size()));
-    const double t = cell(cells, time_index, line) * m.time_factor;
+    const double t = timed ? cell(cells, time_index, line) * m.time_factor
+                           : static_cast<double>(trial.t.size()) / m.sample_rate;
     if (!trial.t.empty() && !(t > trial.t.back()))
       throw config_error(
           source, line, m.time_column,
@@ -114,7 +155,7 @@ BenchTrial parse_bench_trial(std::string_view text, const fs::path& source, cons
         source, 0, "",
         fmt::format("{} data rows; a trial needs at least {}", trial.t.size(), kMinRows));
   if (const std::optional<rig::ClockJump> jump = rig::find_clock_jump(trial.t))
-    throw config_error(source, lines.number[jump->row + 1], m.time_column,
+    throw config_error(source, lines.number[first + jump->row], m.time_column,
                        fmt::format("the clock jumps {:.6g} s forward, {:.0f} times the median "
                                    "step {:.6g} s",
                                    jump->step, jump->step / jump->median_step, jump->median_step));

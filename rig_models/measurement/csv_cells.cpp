@@ -17,11 +17,13 @@ std::string_view trim_spaces(std::string_view s) {
 
 }  // namespace
 
-std::vector<std::string_view> split_cells(std::string_view line) {
+std::vector<std::string_view> split_cells(std::string_view line) { return split_cells(line, ','); }
+
+std::vector<std::string_view> split_cells(std::string_view line, char delimiter) {
   std::vector<std::string_view> cells;
   size_t start = 0;
   while (true) {
-    const size_t comma = line.find(',', start);
+    const size_t comma = line.find(delimiter, start);
     cells.push_back(trim_spaces(line.substr(start, comma - start)));
     if (comma == std::string_view::npos) break;
     start = comma + 1;

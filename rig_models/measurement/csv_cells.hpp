@@ -11,6 +11,8 @@ namespace ccm::rig {
 
 // The cells of one line, split on ',' (no quoting in this format), spaces trimmed.
 std::vector<std::string_view> split_cells(std::string_view line);
+// The same on another delimiter (';' or a tab, as loggers in some locales write).
+std::vector<std::string_view> split_cells(std::string_view line, char delimiter);
 
 // The delimiter a cell betrays when the file uses another one (';' or a tab), else nullopt.
 std::optional<char> foreign_delimiter(std::string_view cell);

@@ -1,5 +1,7 @@
 // Reading a bench test's trial files (bench_test/bench_trials.hpp): SI values, and every defect
 // of a messy file refused naming the file, the line and the column.
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -97,4 +99,80 @@ TEST_CASE("bench trials: the folder's files in name order, and none refused", "[
   CHECK_THROWS_WITH(ccm::bench::read_bench_trials(m),
                     Catch::Contains("align.offsets: 1 offsets for 2 trials"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("bench trials: a logger's export: preamble, quoted names, units row, ';' and ','",
+          "[bench_test]") {
+  // As a European-locale data logger writes it: two lines of preamble, quoted column names, a
+  // row of units under them, semicolons between cells and decimal commas.
+  const BenchMapping m = ccm::bench::parse_bench_mapping(R"(
+[trials]
+files = "*.csv"
+time_column = "Time"
+time_unit = "ms"
+delimiter = ";"
+decimal = ","
+header_line = 3
+skip_after_header = 1
+[[channels]]
+name = "load"
+column = "Force"
+unit = "kN"
+observable = "x"
+)",
+                                                         "bench.toml");
+  std::string text =
+      "Test: buckle drop 3\n# operator; bench 2\n\"Time\";\"Force\";\"Note\"\n"
+      "\"ms\";\"kN\";\"-\"\n";
+  for (int k = 0; k < 12; ++k) text += fmt::format("{},{};{},5;ok\n", k / 10, k % 10, k);
+  const auto trial = parse_bench_trial(text, "t1.csv", m);
+  REQUIRE(trial.t.size() == 12);
+  CHECK(trial.t[11] == Approx(1.1e-3));
+  CHECK(trial.channels.at("load")[3] == Approx(3500.0));
+  // The same file read with the default layout names what to change.
+  CHECK_THROWS_WITH(parse_bench_trial(text, "t1.csv", mapping()),
+                    Catch::Contains("the header lacks it"));
+  BenchMapping wrong_line = m;
+  wrong_line.header_line = 40;
+  CHECK_THROWS_WITH(parse_bench_trial(text, "t1.csv", wrong_line),
+                    Catch::Contains("t1.csv:40: the mapping's header_line 40 is blank or past"));
+  BenchMapping commas = m;
+  commas.delimiter = ',';
+  commas.decimal = '.';
+  commas.header_line = 0;
+  commas.skip_after_header = 0;
+  CHECK_THROWS_WITH(parse_bench_trial("a;b;c\n", "t1.csv", commas),
+                    Catch::Contains("cells are separated by ';'; the mapping reads ',' (set "
+                                    "delimiter = \";\" in [trials])"));
+}
+
+TEST_CASE("bench trials: no time column, the clock from the sample rate", "[bench_test]") {
+  const BenchMapping m = ccm::bench::parse_bench_mapping(R"(
+[trials]
+files = "*.csv"
+sample_rate = 20000
+[[channels]]
+name = "load"
+column = "load_kN"
+unit = "kN"
+observable = "x"
+)",
+                                                         "bench.toml");
+  std::string text = "load_kN\n";
+  for (int k = 0; k < 10; ++k) text += fmt::format("{}\n", k);
+  const auto trial = parse_bench_trial(text, "t1.csv", m);
+  REQUIRE(trial.t.size() == 10);
+  CHECK(trial.t[4] == Approx(4 / 20000.0));
+  CHECK_THROWS_WITH(ccm::bench::parse_bench_mapping(
+                        "[trials]\nfiles = \"*\"\nsample_rate = 1e4\ntime_column = \"t\"\n"
+                        "[[channels]]\nname = \"a\"\ncolumn = \"a\"\nunit = \"N\"\n"
+                        "observable = \"x\"\n",
+                        "bench.toml"),
+                    Catch::Contains("names either time_column (with time_unit) or sample_rate"));
+  CHECK_THROWS_WITH(ccm::bench::parse_bench_mapping(
+                        "[trials]\nfiles = \"*\"\ntime_column = \"t\"\ntime_unit = \"s\"\n"
+                        "decimal = \",\"\n[[channels]]\nname = \"a\"\ncolumn = \"a\"\nunit = "
+                        "\"N\"\nobservable = \"x\"\n",
+                        "bench.toml"),
+                    Catch::Contains("trials.decimal: a decimal comma needs another delimiter"));
 }
