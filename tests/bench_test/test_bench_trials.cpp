@@ -101,8 +101,10 @@ TEST_CASE("bench trials: the folder's files in name order, and none refused", "[
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("bench trials: a logger's export: preamble, quoted names, units row, ';' and ','",
-          "[bench_test]") {
+TEST_CASE(
+    "bench trials: a logger's export: preamble, quoted names, units row, semicolons, decimal "
+    "commas",
+    "[bench_test]") {
   // As a European-locale data logger writes it: two lines of preamble, quoted column names, a
   // row of units under them, semicolons between cells and decimal commas.
   const BenchMapping m = ccm::bench::parse_bench_mapping(R"(
