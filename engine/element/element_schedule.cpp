@@ -1,6 +1,7 @@
 #include "engine/element/element_schedule.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "engine/element/element_pack.hpp"
@@ -52,12 +53,34 @@ void interleave_lanes(std::span<int> elements) {
   }
 }
 
+// How many slabs of kMinSlabLayers element layers fit in `extent` (the span of the element
+// centres along the slab axis). An element layer is the edge of a cube of six mean tets,
+// (6 V_mean)^(1/3): one cell of a structured mesh.
+int slabs_by_thickness(double extent, std::span<const Vec3> X, const std::vector<Tet>& tets,
+                       int first, int count) {
+  double volume = 0.0;
+  for (int i = first; i < first + count; ++i) {
+    const Tet& t = tets[static_cast<size_t>(i)];
+    const Vec3& a = X[static_cast<size_t>(t[0])];
+    volume +=
+        std::abs(
+            (X[static_cast<size_t>(t[1])] - a)
+                .dot((X[static_cast<size_t>(t[2])] - a).cross(X[static_cast<size_t>(t[3])] - a))) /
+        6.0;
+  }
+  const double layer = std::cbrt(6.0 * volume / count);
+  if (!(layer > 0.0)) return kMaxSlabs;
+  // The centres span (cells - 1) layers: one layer is added back.
+  return static_cast<int>(std::floor((extent + layer) / (kMinSlabLayers * layer)));
+}
+
 }  // namespace
 
 BlockSlabs cut_into_slabs(std::span<const Vec3> X, const std::vector<Tet>& tets, int first,
                           int count) {
   std::vector<int> sorted(static_cast<size_t>(count));
   std::iota(sorted.begin(), sorted.end(), first);
+  int most_slabs = kMaxSlabs;
   if (count > 0) {
     const int axis = longest_axis(X, tets, first, count);
     std::vector<double> key(static_cast<size_t>(count));
@@ -70,8 +93,11 @@ BlockSlabs cut_into_slabs(std::span<const Vec3> X, const std::vector<Tet>& tets,
     std::stable_sort(sorted.begin(), sorted.end(), [&](int a, int b) {
       return key[static_cast<size_t>(a - first)] < key[static_cast<size_t>(b - first)];
     });
+    const auto [lo, hi] = std::minmax_element(key.begin(), key.end());
+    most_slabs = slabs_by_thickness((*hi - *lo) / 4.0, X, tets, first, count);
   }
-  for (int n_slabs = std::clamp(count / kMinSlabElements, 1, kMaxSlabs);; n_slabs /= 2) {
+  for (int n_slabs = std::clamp(std::min(count / kMinSlabElements, most_slabs), 1, kMaxSlabs);;
+       n_slabs /= 2) {
     BlockSlabs s;
     s.elements = sorted;
     for (int k = 0; k <= n_slabs; ++k)

@@ -2,7 +2,8 @@
 // bit of the result (docs/parallel.md, "Threads (OpenMP)").
 //
 // Each block's elements are sorted along the longest axis of the block and cut into S slabs of
-// equal size; S depends on the mesh only, never on the thread count. Adjacent slabs may share
+// equal size, each at least kMinSlabLayers element layers thick; S depends on the mesh only, never
+// on the thread count. Adjacent slabs may share
 // nodes, slabs two apart may not (checked; S is halved until it holds). Phase 0 runs the even
 // slabs of every block, phase 1 the odd ones: the slabs of one phase share no node, so they
 // scatter into the nodal forces concurrently, and every node receives its contributions in one
@@ -20,8 +21,14 @@
 namespace ccm {
 
 inline constexpr int kMinSlabElements = 512;  // a smaller slab is not worth a thread
-inline constexpr int kMaxSlabs = 32;          // per block: 16 per phase, balanced up to 16 threads
-inline constexpr int kLaneStride = 16;        // mesh-order distance of a pack's lanes
+// A slab is at least this many element layers thick along its axis: a slab one layer thick
+// shares every node it writes with its neighbours, whose thread writes them in the other phase,
+// and the cache lines of the nodal forces then cross between the cores at every phase: 32 slabs
+// of a 32-cell cube ran two threads at 65-67 % of two, 8 slabs (4 layers) at 81-86 %
+// (bench/results/two-threads-probe-2026-12-06.md).
+inline constexpr double kMinSlabLayers = 4.0;
+inline constexpr int kMaxSlabs = 32;    // per block: 16 per phase, balanced up to 16 threads
+inline constexpr int kLaneStride = 16;  // mesh-order distance of a pack's lanes
 
 struct Slab {
   int block = 0;

@@ -48,9 +48,9 @@ void require_identical(const RunResult& a, const RunResult& b) {
 Model two_blocks() {
   ModelMesh mesh;
   add_body(mesh, "soft", test::neo_hookean(1e6, 0.45, 1000.0),
-           structured_box(Vec3(0.16, 0.16, 0.08), 16, 16, 8));
+           structured_box(Vec3(0.32, 0.16, 0.08), 32, 16, 8));
   TetMesh stiff = structured_box(Vec3(0.08, 0.08, 0.08), 8, 8, 8);
-  for (Vec3& p : stiff.nodes) p.x() += 0.2;
+  for (Vec3& p : stiff.nodes) p.x() += 0.36;
   add_body(mesh, "stiff", {MaterialModel::linear_elastic, 5e6, 0.3, 2000.0}, stiff);
   Model model = make_model(std::move(mesh));
   std::vector<int> held;
