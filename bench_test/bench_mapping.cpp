@@ -175,6 +175,10 @@ void read_layout(const StrictTable& t, BenchMapping& m) {
   m.skip_after_header = static_cast<int>(t.get_or<long>("skip_after_header", 0));
   if (m.skip_after_header < 0)
     t.fail("skip_after_header", fmt::format("{} must be >= 0", m.skip_after_header));
+  m.comment = t.get_or<std::string>("comment", "");
+  m.sparse = t.get_or<bool>("sparse", false);
+  if (m.sparse && !t.has("time_column"))
+    t.fail("sparse", "a sparse file needs its time column (the rows are not evenly spaced)");
 }
 
 }  // namespace
@@ -193,7 +197,7 @@ BenchMapping parse_bench_mapping(const std::string& text, const std::filesystem:
   m.file = file;
   const StrictTable trials = top.need_table("trials");
   trials.allow_only({"files", "time_column", "time_unit", "sample_rate", "delimiter", "decimal",
-                     "header_line", "skip_after_header"});
+                     "header_line", "skip_after_header", "comment", "sparse"});
   m.files_pattern = trials.need_string("files");
   if (m.files_pattern.find('/') != std::string::npos)
     trials.fail("files", "a file-name pattern in the mapping file's folder, without '/'");

@@ -62,6 +62,8 @@ struct BenchMapping {
   char decimal = '.';
   int header_line = 0;        // 1-based line of the column names; 0: the first non-blank line
   int skip_after_header = 0;  // lines between the header and the data (a units row)
+  std::string comment;        // lines that begin with it are skipped ("#"); empty: none
+  bool sparse = false;        // a channel's cell may be empty (sensors at their own rates)
   ClockAlignment align;
   std::vector<ChannelSpec> channels;
 

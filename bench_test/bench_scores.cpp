@@ -126,14 +126,15 @@ std::vector<PreparedTrial> prepare_trials(const BenchMapping& m,
   for (const BenchTrial& trial : trials) {
     PreparedTrial p;
     p.name = trial.file.filename().string();
-    p.step = median_step(trial.t);
     for (const ChannelSpec& c : m.channels) {
+      const rig::TimeSeries& raw = trial.channels.at(c.name);
+      const double step = p.steps[c.name] = median_step(raw.t);
       try {
-        p.channels[c.name] = uniform_conditioned({trial.t, trial.channels.at(c.name)}, p.step, c);
+        p.channels[c.name] = uniform_conditioned(raw, step, c);
       } catch (const std::invalid_argument& e) {
         throw config_error(
             m.file, c.line, fmt::format("channels.{}.filter", c.name),
-            fmt::format("on {} (samples every {:.6g} s): {}", p.name, p.step, e.what()));
+            fmt::format("on {} (samples every {:.6g} s): {}", p.name, step, e.what()));
       }
     }
     if (m.align.channel) {
@@ -161,8 +162,9 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
   std::optional<double> sim_trigger;
   if (m.align.channel) {
     const ChannelSpec& c = *m.channel(*m.align.channel);
-    sim_trigger = trigger_time(simulated_conditioned(simulated.at(c.name), trials[0].step, c),
-                               m.align.threshold);
+    sim_trigger =
+        trigger_time(simulated_conditioned(simulated.at(c.name), trials[0].steps.at(c.name), c),
+                     m.align.threshold);
     if (!sim_trigger)
       throw ScoringError(fmt::format(
           "the simulated '{}' never reaches the trigger threshold {:g}: the trials' clocks cannot "
@@ -175,7 +177,8 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
                                                          : m.align.offsets[i]);
   for (const ChannelSpec& c : m.channels) {
     // Conditioned for the first trial's rate; a trial at another rate gets its own below.
-    const rig::TimeSeries sim = simulated_conditioned(simulated.at(c.name), trials[0].step, c);
+    const double step0 = trials[0].steps.at(c.name);
+    const rig::TimeSeries sim = simulated_conditioned(simulated.at(c.name), step0, c);
     const Window w = window_of(c, sim);
     ChannelResult result;
     result.channel = c.name;
@@ -183,8 +186,9 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
     for (std::size_t i = 0; i < trials.size(); ++i) {
       const PreparedTrial& trial = trials[i];
       const rig::TimeSeries sim_u =
-          trial.step == trials[0].step ? sim
-                                       : simulated_conditioned(simulated.at(c.name), trial.step, c);
+          trial.steps.at(c.name) == step0
+              ? sim
+              : simulated_conditioned(simulated.at(c.name), trial.steps.at(c.name), c);
       const rig::TimeSeries measured =
           within(shifted(trial.channels.at(c.name), out.clock_shifts[i]),
                  std::max(w.t0, sim_u.t.front()), std::min(w.t1, sim_u.t.back()));
@@ -194,7 +198,7 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
             "{:.6g}] s; a score needs {}",
             c.name, trial.name, measured.t.size(), w.t0, w.t1, kMinScoredSamples));
       result.trials.push_back(
-          score(trial.name, measured, rig::sample_at(sim_u, measured.t), trial.step));
+          score(trial.name, measured, rig::sample_at(sim_u, measured.t), trial.steps.at(c.name)));
       aligned.push_back(shifted(trial.channels.at(c.name), out.clock_shifts[i]));
     }
     // The mean of the trials on the first one's samples where every trial has samples.
@@ -220,7 +224,7 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
       throw ScoringError(fmt::format(
           "channel '{}': the trials overlap in {} samples inside the window; a score needs {}",
           c.name, curves.t.size(), kMinScoredSamples));
-    result.mean = score("mean", {curves.t, curves.mean}, sim_at, trials[0].step);
+    result.mean = score("mean", {curves.t, curves.mean}, sim_at, step0);
     out.channels.push_back(std::move(result));
   }
   return out;

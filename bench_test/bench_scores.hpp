@@ -22,8 +22,9 @@ namespace ccm::bench {
 
 // A trial's channels on a uniform clock, filtered, deadbanded; and where its trigger fired.
 struct PreparedTrial {
-  std::string name;                                 // the file's name
-  double step = 0.0;                                // s, the uniform sample interval
+  std::string name;  // the file's name
+  // s, each channel's uniform sample interval (its median step: sensors may differ in rate).
+  std::map<std::string, double> steps;
   std::map<std::string, rig::TimeSeries> channels;  // on the trial's own clock
   std::optional<double> trigger_time;               // s, own clock
 };

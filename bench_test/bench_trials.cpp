@@ -25,8 +25,8 @@ struct Lines {
   std::vector<int> number;  // 1-based line numbers of the non-blank lines
 };
 
-// The non-blank lines, a UTF-8 byte-order mark and CR line ends dropped.
-Lines lines_of(std::string_view text) {
+// The non-blank lines that are not comments, a UTF-8 byte-order mark and CR line ends dropped.
+Lines lines_of(std::string_view text, std::string_view comment) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   Lines out;
   int number = 0;
@@ -36,7 +36,9 @@ Lines lines_of(std::string_view text) {
     text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
     ++number;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string_view::npos) continue;
+    if (!comment.empty() && line.substr(start).starts_with(comment)) continue;
     out.text.push_back(line);
     out.number.push_back(number);
   }
@@ -107,7 +109,7 @@ std::vector<std::string_view> read_header(std::string_view line, int number, con
 }  // namespace
 
 BenchTrial parse_bench_trial(std::string_view text, const fs::path& source, const BenchMapping& m) {
-  const Lines lines = lines_of(text);
+  const Lines lines = lines_of(text, m.comment);
   const std::size_t h = header_index(lines, source, m);
   const int header_line = lines.number[h];
   const std::vector<std::string_view> header = read_header(lines.text[h], header_line, source, m);
@@ -119,7 +121,7 @@ BenchTrial parse_bench_trial(std::string_view text, const fs::path& source, cons
     index.push_back(column_index(header, c.column, source, header_line));
   BenchTrial trial;
   trial.file = source;
-  std::vector<std::vector<double>> values(m.channels.size());
+  std::vector<rig::TimeSeries> series(m.channels.size());
   std::string decimal_point;  // a cell with its decimal comma made a point
   auto cell = [&](const std::vector<std::string_view>& cells, std::size_t i, int line) {
     std::string_view text_cell = cells[i];
@@ -147,8 +149,11 @@ BenchTrial parse_bench_trial(std::string_view text, const fs::path& source, cons
           fmt::format("time {:.9g} s {} the previous row's {:.9g} s", t,
                       t == trial.t.back() ? "repeats" : "goes back from", trial.t.back()));
     trial.t.push_back(t);
-    for (std::size_t c = 0; c < m.channels.size(); ++c)
-      values[c].push_back(cell(cells, index[c], line) * m.channels[c].si_factor);
+    for (std::size_t c = 0; c < m.channels.size(); ++c) {
+      if (m.sparse && cells[index[c]].empty()) continue;  // that sensor did not sample here
+      series[c].t.push_back(t);
+      series[c].value.push_back(cell(cells, index[c], line) * m.channels[c].si_factor);
+    }
   }
   if (trial.t.size() < kMinRows)
     throw config_error(
@@ -159,8 +164,13 @@ BenchTrial parse_bench_trial(std::string_view text, const fs::path& source, cons
                        fmt::format("the clock jumps {:.6g} s forward, {:.0f} times the median "
                                    "step {:.6g} s",
                                    jump->step, jump->step / jump->median_step, jump->median_step));
-  for (std::size_t c = 0; c < m.channels.size(); ++c)
-    trial.channels[m.channels[c].name] = std::move(values[c]);
+  for (std::size_t c = 0; c < m.channels.size(); ++c) {
+    if (series[c].t.size() < kMinRows)
+      throw config_error(
+          source, 0, m.channels[c].column,
+          fmt::format("{} samples; a channel needs at least {}", series[c].t.size(), kMinRows));
+    trial.channels[m.channels[c].name] = std::move(series[c]);
+  }
   return trial;
 }
 

@@ -49,7 +49,8 @@ BenchTrial trial(double offset, double gain, unsigned seed) {
   for (int k = 0; k < 200; ++k) {
     const double t = -0.005 + k * 1e-4;  // the trial's clock
     b.t.push_back(t);
-    b.channels["load"].push_back((gain * pulse(t - offset) + noise(rng)) * 1e-3 * 1e3);
+    b.channels["load"].t.push_back(t);
+    b.channels["load"].value.push_back((gain * pulse(t - offset) + noise(rng)) * 1e-3 * 1e3);
   }
   return b;
 }

@@ -10,6 +10,8 @@
 #include "bench_test/bench_mapping.hpp"
 #include "bench_test/bench_trials.hpp"
 #include "config/config_error.hpp"
+#include "config/text_file.hpp"
+#include "rig_models/measurement/trial_csv.hpp"
 
 using ccm::bench::BenchMapping;
 using ccm::bench::parse_bench_trial;
@@ -52,7 +54,7 @@ TEST_CASE("bench trials: a clean file in SI, with CRLF and a BOM", "[bench_test]
   const auto trial = parse_bench_trial("\xEF\xBB\xBF" + crlf + "\r\n", "t1.csv", mapping());
   REQUIRE(trial.t.size() == 12);
   CHECK(trial.t[3] == Approx(3e-4));
-  CHECK(trial.channels.at("load")[3] == Approx(3000.0));
+  CHECK(trial.channels.at("load").value[3] == Approx(3000.0));
 }
 
 TEST_CASE("bench trials: every defect is refused naming the file, the line and the column",
@@ -130,7 +132,7 @@ observable = "x"
   const auto trial = parse_bench_trial(text, "t1.csv", m);
   REQUIRE(trial.t.size() == 12);
   CHECK(trial.t[11] == Approx(1.1e-3));
-  CHECK(trial.channels.at("load")[3] == Approx(3500.0));
+  CHECK(trial.channels.at("load").value[3] == Approx(3500.0));
   // The same file read with the default layout names what to change.
   CHECK_THROWS_WITH(parse_bench_trial(text, "t1.csv", mapping()),
                     Catch::Contains("the header lacks it"));
@@ -177,4 +179,55 @@ observable = "x"
                         "\"N\"\nobservable = \"x\"\n",
                         "bench.toml"),
                     Catch::Contains("trials.decimal: a decimal comma needs another delimiter"));
+}
+
+TEST_CASE("bench trials: the rig's own trial files, sparse rows of sensors at their own rates",
+          "[bench_test]") {
+  // The rig's measured CSV (docs/measurements.md): '#' metadata lines, sensors at 100 and 128 Hz
+  // in one file, a row leaving the cells of the sensors that did not sample empty. Read through a
+  // mapping, each channel is exactly what the rig's own reader reads.
+  const std::filesystem::path file =
+      std::filesystem::path(CCM_SOURCE_DIR) / "tests/data/rig-dev/RX025_t1.csv";
+  const BenchMapping m = ccm::bench::parse_bench_mapping(R"(
+[trials]
+files = "RX025_t*.csv"
+time_column = "time_s"
+time_unit = "s"
+comment = "#"
+sparse = true
+[[channels]]
+name = "velocity"
+column = "impactor_velocity_mps"
+unit = "m/s"
+observable = "x"
+[[channels]]
+name = "angle"
+column = "artifact_angle_deg"
+unit = "deg"
+observable = "x"
+[[channels]]
+name = "pressure"
+column = "pressure_kpa"
+unit = "kPa"
+observable = "x"
+)",
+                                                         file.parent_path() / "bench.toml");
+  const auto trial = parse_bench_trial(ccm::read_config_text(file), file, m);
+  const ccm::rig::MeasuredTrial rig = ccm::rig::read_trial_csv(file);
+  const auto same = [](const ccm::rig::TimeSeries& bench, const ccm::rig::TimeSeries& own,
+                       double factor) {
+    REQUIRE(bench.t.size() == own.t.size());
+    for (std::size_t k = 0; k < own.t.size(); ++k) {
+      CHECK(bench.t[k] == own.t[k]);
+      CHECK(bench.value[k] == Approx(own.value[k] * factor).epsilon(1e-15));
+    }
+  };
+  same(trial.channels.at("velocity"), rig.impactor_velocity_mps, 1.0);
+  same(trial.channels.at("angle"), rig.artifact_angle_deg, 3.14159265358979323846 / 180.0);
+  same(trial.channels.at("pressure"), rig.pressure_kpa, 1e3);
+  // Without `sparse` the empty cells are refused, naming the line and the column.
+  BenchMapping dense = m;
+  dense.sparse = false;
+  CHECK_THROWS_WITH(parse_bench_trial(ccm::read_config_text(file), file, dense),
+                    Catch::Contains("non-numeric cell ''"));
 }
