@@ -124,6 +124,7 @@ enum class JointKind {
 };
 
 struct JointSpec {
+  std::string name;  // "joint<k>" unless given; a pin's history columns: <name>.angle, ...
   JointKind kind = JointKind::pin;
   std::optional<std::string> body;  // restricts the selection to one body
   NodeSelection selection;

@@ -533,21 +533,24 @@ double clamp_value(const Table& t, const char* key) {
   return v;
 }
 
+void check_column_prefix(const Table& t, std::string_view key, const std::string& name,
+                         const Scene& scene);
+
 // [[joints]]: kind = "pin" (point, axis, mu_s, mu_k, the clamp's stiffness and damping) or
 // "slide" (direction) on selected nodes.
 JointSpec parse_joint(const Table& t) {
   const std::string kind = t.need<std::string>("kind");
   JointSpec j;
   if (kind == "pin") {
-    t.allow_only({"kind", "body", "node_set", "box", "plane", "point", "axis", "mu_s", "mu_k",
-                  "stiffness", "damping"});
+    t.allow_only({"name", "kind", "body", "node_set", "box", "plane", "point", "axis", "mu_s",
+                  "mu_k", "stiffness", "damping"});
     j.point = t.need<Vec3>("point");
     j.axis = non_zero(t, "axis", t.need<Vec3>("axis"));
     parse_pin_friction(t, j.mu_s, j.mu_k);
     j.stiffness = clamp_value(t, "stiffness");
     j.damping = clamp_value(t, "damping");
   } else if (kind == "slide") {
-    t.allow_only({"kind", "body", "node_set", "box", "plane", "direction"});
+    t.allow_only({"name", "kind", "body", "node_set", "box", "plane", "direction"});
     j.kind = JointKind::slide;
     j.axis = non_zero(t, "direction", t.need<Vec3>("direction"));
   } else {
@@ -560,7 +563,15 @@ JointSpec parse_joint(const Table& t) {
 }
 
 void parse_joints(const Table& root, Scene& scene) {
-  for (const Table& t : root.tables("joints")) scene.joints.push_back(parse_joint(t));
+  std::map<std::string, std::string> names;
+  for (const Table& t : root.tables("joints")) {
+    JointSpec j = parse_joint(t);
+    j.name =
+        t.has("name") ? checked_name(t, "name") : fmt::format("joint{}", scene.joints.size() + 1);
+    require_unique(t, "name", j.name, names);
+    check_column_prefix(t, "name", j.name, scene);
+    scene.joints.push_back(std::move(j));
+  }
 }
 
 std::vector<std::pair<double, double>> parse_force_table(const Table& t) {
@@ -683,6 +694,11 @@ void check_column_prefix(const Table& t, std::string_view key, const std::string
              fmt::format(
                  "'{}' is also the name of a tracked point (their history columns would clash)",
                  name));
+  for (const JointSpec& j : scene.joints)
+    if (j.name == name)
+      t.fail(key,
+             fmt::format("'{}' is also the name of a joint (their history columns would clash)",
+                         name));
 }
 
 RigidSphereSpec parse_sphere(const Table& t, const Scene& scene) {
@@ -865,9 +881,9 @@ const std::array<Section, 10> kSections = {{
     {"gravity", parse_gravity},
     {"bodies", parse_bodies},
     {"fixed", parse_fixed},
-    {"joints", parse_joints},
     {"surface_loads", parse_surface_loads},
     {"output", parse_output},
+    {"joints", parse_joints},  // after bodies and output: a pin's names must not clash with theirs
     {"contact", parse_contact},  // after bodies and output: its names must not clash with theirs
 }};
 

@@ -2,6 +2,9 @@
 
 #include <utility>
 
+#include "engine/bc/pin_joint.hpp"
+#include "engine/observe/joint_history.hpp"
+
 namespace ccm {
 
 SceneRun assemble_scene_run(Scene scene) {
@@ -11,6 +14,9 @@ SceneRun assemble_scene_run(Scene scene) {
   r.output = build_output_request(r.scene, r.model.mesh);
   r.contact = build_contact(r.scene, r.model);
   r.joints = build_joints(r.scene, r.model);
+  for (std::size_t i = 0; i < r.joints.size(); ++i)
+    if (const auto* pin = dynamic_cast<const PinJoint*>(r.joints[i].get()))
+      r.joint_histories.push_back(std::make_unique<PinJointHistory>(r.scene.joints[i].name, *pin));
   return r;
 }
 
@@ -23,6 +29,7 @@ RunOptions scene_run_options(const SceneRun& run, HistoryRecorder* history) {
   if (history) {
     o.history = history;
     for (const HistorySource* h : run.contact.histories) history->add_source(*h);
+    for (const auto& h : run.joint_histories) history->add_source(*h);
   }
   return o;
 }

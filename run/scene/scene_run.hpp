@@ -20,7 +20,8 @@ struct SceneRun {
   Model model;
   OutputRequest output;
   ContactSetup contact;
-  std::vector<std::unique_ptr<KinematicConstraint>> joints;  // [[joints]], in file order
+  std::vector<std::unique_ptr<KinematicConstraint>> joints;     // [[joints]], in file order
+  std::vector<std::unique_ptr<HistorySource>> joint_histories;  // each pin's angle and rate
 };
 
 // Builds everything in the order each part needs the one before. Throws ConfigError naming the

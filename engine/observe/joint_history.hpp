@@ -1,0 +1,33 @@
+// A pin joint's history columns (engine/bc/pin_joint.hpp): <name>.angle, its rotation about the
+// axis since t = 0 [rad], and <name>.angular_velocity [rad/s], the ring's, as the joint last set
+// them (a bench test's goniometer or IMU compares with these: docs/bench-test.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/bc/pin_joint.hpp"
+#include "engine/observe/history.hpp"
+
+namespace ccm {
+
+class PinJointHistory : public HistorySource {
+ public:
+  // Not owned: `joint` outlives the run.
+  PinJointHistory(std::string name, const PinJoint& joint)
+      : name_(std::move(name)), joint_(&joint) {}
+
+  std::vector<std::string> history_columns() const override {
+    return {name_ + ".angle", name_ + ".angular_velocity"};
+  }
+  void append_history(const State&, std::vector<double>& row) const override {
+    row.push_back(joint_->angle());
+    row.push_back(joint_->rate());
+  }
+
+ private:
+  std::string name_;
+  const PinJoint* joint_;
+};
+
+}  // namespace ccm
