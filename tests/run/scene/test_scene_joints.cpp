@@ -29,6 +29,17 @@ std::string tilted_bar(double end, double theta_deg) {
       end, theta_deg);
 }
 
+// The tilted bar hung at its top 10 mm on a pin along y through (pin_x, 0, pin_z), released at
+// 3 degrees; `name_line` ("name = \"hinge\"\n" or empty) names the joint.
+std::string pinned_bar(double end, const Vec3& pin, double theta0, const std::string& name_line) {
+  return tilted_bar(end, 3.0) +
+         fmt::format(
+             "[[joints]]\n{}kind = \"pin\"\nbody = \"bar\"\npoint = [{}, 0.0, {}]\n"
+             "axis = [0.0, 1.0, 0.0]\nplane = {{point = [{}, 0.0, {}], normal = [{}, 0.0, "
+             "{}], tolerance = 0.0051}}\n",
+             name_line, pin.x(), pin.z(), pin.x(), pin.z(), std::sin(theta0), std::cos(theta0));
+}
+
 }  // namespace
 
 TEST_CASE("joints: nodes on a slide follow the closed-form parabola along it", "[scene][joints]") {
@@ -72,13 +83,7 @@ TEST_CASE("joints: a stiff bar on a pin swings with the compound pendulum's peri
   // and the samples every 1 ms interpolate the crossings to 1e-6 of the period.
   const double theta0 = 3.0 * std::numbers::pi / 180.0;
   const Vec3 pin(0.045 * std::sin(theta0), 0.0, 0.045 * std::cos(theta0));
-  const std::string text =
-      tilted_bar(0.8, 3.0) +
-      fmt::format(
-          "[[joints]]\nkind = \"pin\"\nbody = \"bar\"\npoint = [{}, 0.0, {}]\n"
-          "axis = [0.0, 1.0, 0.0]\nplane = {{point = [{}, 0.0, {}], normal = [{}, 0.0, "
-          "{}], tolerance = 0.0051}}\n",
-          pin.x(), pin.z(), pin.x(), pin.z(), std::sin(theta0), std::cos(theta0));
+  const std::string text = pinned_bar(0.8, pin, theta0, "");
   const SceneRun run = assemble_scene_run(parse_scene(text, "s.toml"));
   REQUIRE(run.joints.size() == 1);
   RunOptions opt = scene_run_options(run, nullptr);
@@ -171,13 +176,7 @@ TEST_CASE("joints: a pin's angle and angular velocity are history columns, consi
   // elastic sag changes that by its strain, 5e-5): 1 % of the swing.
   const double theta0 = 3.0 * std::numbers::pi / 180.0;
   const Vec3 pin(0.045 * std::sin(theta0), 0.0, 0.045 * std::cos(theta0));
-  const std::string text =
-      tilted_bar(0.15, 3.0) +
-      fmt::format(
-          "[[joints]]\nname = \"hinge\"\nkind = \"pin\"\nbody = \"bar\"\npoint = [{}, 0.0, {}]\n"
-          "axis = [0.0, 1.0, 0.0]\nplane = {{point = [{}, 0.0, {}], normal = [{}, 0.0, "
-          "{}], tolerance = 0.0051}}\n",
-          pin.x(), pin.z(), pin.x(), pin.z(), std::sin(theta0), std::cos(theta0));
+  const std::string text = pinned_bar(0.15, pin, theta0, "name = \"hinge\"\n");
   const SceneRun run = assemble_scene_run(parse_scene(text, "s.toml"));
   HistoryRecorder history(run.model.mesh, run.output);
   RunOptions opt = scene_run_options(run, &history);
