@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <initializer_list>
@@ -88,7 +89,7 @@ std::array<double, 2> window_of(const StrictTable& t) {
 
 ChannelSpec channel_of(const StrictTable& t) {
   t.allow_only({"name", "column", "unit", "observable", "axis", "derivative", "scale", "filter",
-                "cutoff", "deadband", "window"});
+                "cutoff", "deadband", "apply_to", "window"});
   ChannelSpec c;
   c.line = t.line();
   c.name = t.need_string("name");
@@ -104,6 +105,11 @@ ChannelSpec channel_of(const StrictTable& t) {
   c.filter = filter_of(t);
   c.deadband = t.number_or("deadband", 0.0);
   if (c.deadband < 0.0) t.fail("deadband", fmt::format("{} must be >= 0", c.deadband));
+  const std::string apply_to = t.get_or<std::string>("apply_to", "both");
+  if (apply_to != "both" && apply_to != "simulated")
+    t.fail("apply_to",
+           unknown_value_problem(apply_to, std::array<std::string_view, 2>{"both", "simulated"}));
+  c.condition_measured = apply_to == "both";
   if (t.has("window")) c.window = window_of(t);
   return c;
 }

@@ -34,6 +34,9 @@ struct ChannelSpec {
   double scale = 1.0;     // multiplies the simulated observable (sign conventions)
   ChannelFilter filter;   // applied alike to the measured and the simulated curve
   double deadband = 0.0;  // SI; |value| below it reads 0, on both curves
+  // apply_to = "simulated": the filter and the deadband condition the simulated curve alone (the
+  // logger filtered in hardware, the sensor's deadband is in the data already).
+  bool condition_measured = true;
   std::optional<std::array<double, 2>> window;  // s, on the simulation's clock
   int observable_line = 0;                      // of its observable key
   int line = 0;  // of the channel's table in the mapping file, for messages

@@ -130,7 +130,10 @@ std::vector<PreparedTrial> prepare_trials(const BenchMapping& m,
       const rig::TimeSeries& raw = trial.channels.at(c.name);
       const double step = p.steps[c.name] = median_step(raw.t);
       try {
-        p.channels[c.name] = uniform_conditioned(raw, step, c);
+        p.channels[c.name] =
+            c.condition_measured
+                ? uniform_conditioned(raw, step, c)
+                : rig::sample_at(raw, uniform_times(raw.t.front(), raw.t.back(), step));
       } catch (const std::invalid_argument& e) {
         throw config_error(
             m.file, c.line, fmt::format("channels.{}.filter", c.name),

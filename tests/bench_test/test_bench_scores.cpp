@@ -10,6 +10,7 @@
 #include "bench_test/bench_scores.hpp"
 #include "bench_test/scene_observable.hpp"
 #include "config/config_error.hpp"
+#include "correlate/cfc_filter.hpp"
 
 using namespace ccm::bench;
 
@@ -158,4 +159,52 @@ TEST_CASE("bench observables: columns, vectors on an axis, rates, and names that
   CHECK_THROWS_WITH(resolve_observable(c, columns, "b.toml"),
                     Catch::Contains("'plate.kinetic_energie' names no output of the scene (did you "
                                     "mean 'plate.kinetic_energy'?)"));
+}
+
+TEST_CASE("bench scores: apply_to = simulated leaves a logger's filtered data alone",
+          "[bench_test]") {
+  // The logger filtered the load at CFC 60 in hardware; the simulation is the raw pulse. Filtered
+  // again (apply_to = both) the measured curve is filtered twice and the match suffers; with
+  // apply_to = simulated only the simulation is filtered, as the logger filtered the test.
+  const auto mapping_with = [](const std::string& apply_to) {
+    return parse_bench_mapping(R"(
+[trials]
+files = "t*.csv"
+time_column = "t"
+time_unit = "s"
+[[channels]]
+name = "load"
+column = "load"
+unit = "N"
+observable = "plate.force"
+filter = "CFC60"
+apply_to = ")" + apply_to + "\"\n",
+                               "bench.toml");
+  };
+  BenchTrial logged;
+  logged.file = "t1.csv";
+  std::vector<double> raw;
+  for (int k = 0; k < 400; ++k) {
+    logged.t.push_back(-0.005 + k * 1e-4);
+    raw.push_back(pulse(logged.t.back() - 0.001));
+  }
+  logged.channels["load"] = {logged.t, ccm::correlate::cfc_filter(raw, 60, 1e-4)};
+  // The simulation spans 30 ms, long against CFC 60's memory (a few ms): a record that ends
+  // while the filtered pulse still rings is filtered differently at its end.
+  ccm::rig::TimeSeries sim;
+  for (int k = 0; k <= 1500; ++k) {
+    sim.t.push_back(k * 2e-5);
+    sim.value.push_back(pulse(k * 2e-5 - 0.001));
+  }
+  const auto rating = [&](const std::string& apply_to) {
+    const BenchMapping m = mapping_with(apply_to);
+    return score_bench_test(m, prepare_trials(m, {logged}), {{"load", sim}})
+        .channels[0]
+        .mean.rating.overall;
+  };
+  CHECK(rating("simulated") > 0.94);
+  CHECK(rating("simulated") > rating("both") + 0.02);
+  CHECK_THROWS_WITH(
+      mapping_with("measured"),
+      Catch::Contains("channels[0].apply_to: must be one of \"both\", \"simulated\""));
 }
