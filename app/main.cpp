@@ -159,6 +159,9 @@ int main(int argc, char** argv) {
                    "Trials to fit to, comma-separated, 1-based in file-name order (default: all "
                    "but the last); the others are left out and scored with the fitted values")
       ->delimiter(',');
+  validate->add_flag("--cross-validate", validate_args.cross_validate,
+                     "With --fit: leave each trial out in turn (fit on the others, score on it), "
+                     "then fit on every trial");
   validate
       ->add_option("--evaluations", validate_args.evaluations,
                    "Runs the fit's search may use (the sensitivity profile adds 2-3 per "

@@ -28,6 +28,9 @@ struct ValidateArgs {
   // default all but the last), the others left out and scored with the fitted values.
   std::vector<std::string> fit;
   std::vector<int> fit_trials;
+  // --cross-validate: each trial left out in turn (a fit on the others, scored on it), then the
+  // fit on every trial.
+  bool cross_validate = false;
   int evaluations = 16;  // the search's budget of runs (the profile adds 2-3 per parameter)
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
@@ -42,6 +43,14 @@ double number_of(std::string_view text, std::string_view arg) {
 std::pair<std::vector<std::size_t>, std::vector<std::size_t>> split_trials(const ValidateArgs& args,
                                                                            std::size_t count) {
   std::vector<std::size_t> fit, left_out;
+  if (args.cross_validate) {
+    if (!args.fit_trials.empty())
+      throw std::invalid_argument(
+          "--cross-validate leaves each trial out in turn: it takes no --fit-trials");
+    if (count < 2) throw std::invalid_argument("--cross-validate needs at least two trials");
+    for (std::size_t i = 0; i < count; ++i) fit.push_back(i);
+    return {fit, left_out};
+  }
   if (args.fit_trials.empty()) {
     for (std::size_t i = 0; i < count; ++i)
       (i + 1 < count || count == 1 ? fit : left_out).push_back(i);
@@ -140,6 +149,89 @@ nlohmann::json spread_json(const rig::ParameterSpread& s, const FitArgument& a) 
           {"on_upper_bound", s.on_upper_bound}};
 }
 
+// One fold of the cross-validation: fitted without one trial, scored on it.
+struct Fold {
+  std::string left_out;
+  std::vector<double> best;
+  double objective = 0.0;
+  int runs = 0;
+  std::vector<std::string> channels;
+  std::vector<double> ratings;  // the left-out trial's ISO rating per channel; NaN: unscored
+};
+
+std::vector<Fold> cross_validate(Fitting& f, const std::vector<rig::SearchParameter>& parameters) {
+  std::vector<Fold> folds;
+  const std::vector<bench::PreparedTrial>& all = f.data.trials;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    Fold fold;
+    fold.left_out = all[i].name;
+    f.fit_trials.clear();
+    for (std::size_t j = 0; j < all.size(); ++j)
+      if (j != i) f.fit_trials.push_back(all[j]);
+    const int before = f.evaluations;
+    auto objective = [&](const std::vector<double>& x) { return f.objective(x); };
+    const rig::SearchResult r =
+        rig::bounded_search(parameters, objective, {f.args.evaluations, 1e-3});
+    fold.best = r.best;
+    fold.objective = r.best_objective;
+    BenchRun run(parse_scene(f.text_at(r.best), f.args.scene), f.data.mapping);
+    const bool stable = run.run({}).verdict != Verdict::unstable;
+    fold.runs = f.evaluations - before + 1;
+    std::optional<bench::BenchScores> s;
+    if (stable) {
+      try {
+        s = bench::score_bench_test(f.data.mapping, {all[i]}, run.simulated());
+      } catch (const bench::ScoringError&) {
+      }
+    }
+    for (const bench::ChannelSpec& c : f.data.mapping.channels) fold.channels.push_back(c.name);
+    for (std::size_t k = 0; k < fold.channels.size(); ++k)
+      fold.ratings.push_back(s ? s->channels[k].mean.rating.overall
+                               : std::numeric_limits<double>::quiet_NaN());
+    folds.push_back(std::move(fold));
+  }
+  return folds;
+}
+
+nlohmann::json folds_json(const std::vector<Fold>& folds, const std::vector<FitArgument>& fits) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Fold& fold : folds) {
+    nlohmann::json values = nlohmann::json::object(), ratings = nlohmann::json::object();
+    for (std::size_t p = 0; p < fits.size(); ++p) values[fits[p].path] = fold.best[p];
+    for (std::size_t k = 0; k < fold.channels.size(); ++k)
+      ratings[fold.channels[k]] =
+          std::isnan(fold.ratings[k]) ? nlohmann::json() : nlohmann::json(fold.ratings[k]);
+    out.push_back({{"left_out", fold.left_out},
+                   {"fitted", values},
+                   {"objective", fold.objective},
+                   {"runs", fold.runs},
+                   {"left_out_rating", ratings}});
+  }
+  return out;
+}
+
+void print_folds(const std::vector<Fold>& folds, const std::vector<FitArgument>& fits) {
+  fmt::print("cross-validation: each trial left out in turn (fitted on the others, rated on it)\n");
+  for (const Fold& fold : folds) {
+    fmt::print("  without {}:", fold.left_out);
+    for (std::size_t p = 0; p < fits.size(); ++p)
+      fmt::print(" {} = {:.6g}", fits[p].path, fold.best[p]);
+    fmt::print(";  its rating");
+    for (std::size_t k = 0; k < fold.channels.size(); ++k)
+      fmt::print(" {} {:.3f}", fold.channels[k], fold.ratings[k]);
+    fmt::print("\n");
+  }
+  for (std::size_t p = 0; p < fits.size(); ++p) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Fold& fold : folds) {
+      lo = std::min(lo, fold.best[p]);
+      hi = std::max(hi, fold.best[p]);
+    }
+    fmt::print("  {}: {:.6g} to {:.6g} over the folds\n", fits[p].path, lo, hi);
+  }
+  fmt::print("\n");
+}
+
 void print_fit(const std::vector<rig::ParameterSpread>& spreads, const rig::SearchResult& r,
                int evaluations) {
   fmt::print("fitted ({}, {} runs, {}): mean nRMSE {:.4f}\n", r.algorithm, evaluations,
@@ -193,6 +285,9 @@ int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path
                    data.mapping);
   }
 
+  std::vector<Fold> folds;
+  if (args.cross_validate) folds = cross_validate(f, parameters);
+  f.fit_trials = subset(data.trials, fit_idx);
   auto objective = [&](const std::vector<double>& x) { return f.objective(x); };
   const rig::SearchResult result =
       rig::bounded_search(parameters, objective, {args.evaluations, 1e-3});
@@ -233,6 +328,7 @@ int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path
               {"runs", f.evaluations},
               {"fitted_to", fitted_to},
               {"left_out", std::vector<std::string>(left_out.begin(), left_out.end())}};
+  if (args.cross_validate) j["fit"]["cross_validation"] = folds_json(folds, f.fits);
   const db::ValidationRow row = validation_row(args, data, scores, left_out, j);
   j["store"] = record_validation_row(store, row);
   write_atomic(out / "validation.json", j.dump(2) + "\n");
@@ -241,6 +337,7 @@ int validate_fit(const ValidateArgs& args, const BenchData& data, const fs::path
   if (args.json)
     print_json(j);
   else {
+    if (args.cross_validate) print_folds(folds, f.fits);
     print_fit(spreads, result, f.evaluations);
     print_scores(scores, left_out);
     fmt::print(

@@ -312,3 +312,38 @@ TEST_CASE("ccm validate --fit: the striker's speed recovered from its own trials
   }
   CHECK(fs::exists(dir.path / "fit" / "fitted.toml"));
 }
+
+TEST_CASE("ccm validate --fit --cross-validate: each trial left out in turn",
+          "[bench_test][cli][heavy]") {
+  ccm::test::TempDir dir;
+  const auto [truth, data] = truth_and_bench(dir);
+  const fs::path start = dir.write("strike_start.toml", strike_scene(0.87));
+  const std::string fit = "--fit bodies.striker.initial_velocity=0.6:1.4";
+  const auto r = ccm::test::run_ccm(
+      fmt::format("validate '{}' --data '{}' --out '{}' --json --quiet {} --cross-validate",
+                  start.string(), data.string(), (dir.path / "cv").string(), fit),
+      dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& folds = j["fit"]["cross_validation"];
+  REQUIRE(folds.size() == 3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    INFO("fold " << i);
+    CHECK(folds[i]["left_out"] == fmt::format("drop_t{}.csv", i + 1));
+    // Fitted on two trials, within 3 % of the truth (the single split's tolerance above), and
+    // the trial it did not see rated better than "good" on both channels.
+    CHECK(folds[i]["fitted"]["bodies.striker.initial_velocity"].get<double>() ==
+          Approx(1.0).margin(0.03));
+    for (const char* channel : {"speed", "accel"})
+      CHECK(folds[i]["left_out_rating"][channel].get<double>() > 0.9);
+  }
+  CHECK(j["fit"]["fitted_to"].size() == 3);  // the final fit on every trial
+  const auto refused = ccm::test::run_ccm(
+      fmt::format("validate '{}' --data '{}' --out '{}' --quiet {} --cross-validate "
+                  "--fit-trials 1,2",
+                  start.string(), data.string(), (dir.path / "never").string(), fit),
+      dir);
+  CHECK(refused.status == 2);
+  CHECK_THAT(refused.err, Contains("--cross-validate leaves each trial out in turn"));
+}
