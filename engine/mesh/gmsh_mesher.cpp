@@ -14,12 +14,14 @@
 #include <mutex>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "engine/mesh/face_table.hpp"
 #include "engine/mesh/mesh_cache.hpp"
+#include "engine/mesh/mesh_defects.hpp"
 
 namespace ccm {
 namespace {
@@ -129,7 +131,7 @@ std::vector<size_t> sorted_order(const std::vector<size_t>& keys) {
   return order;
 }
 
-// Coordinates of the given node tags, in that order.
+// Coordinates of the given node tags, in that order. Refuses a model with nodes on no tet.
 std::vector<Vec3> node_coordinates(const std::vector<size_t>& wanted, const std::string& context) {
   std::vector<size_t> tags;
   std::vector<double> xyz, unused_param;
@@ -145,17 +147,58 @@ std::vector<Vec3> node_coordinates(const std::vector<size_t>& wanted, const std:
           fmt::format("{}: a tet uses node {}, which has no coordinates", context, tag));
     nodes.emplace_back(xyz[3 * *it], xyz[3 * *it + 1], xyz[3 * *it + 2]);
   }
+  std::vector<long> unused;
+  for (size_t i : order)
+    if (!std::binary_search(wanted.begin(), wanted.end(), tags[i]))
+      unused.push_back(static_cast<long>(tags[i]));
+  unused.erase(std::unique(unused.begin(), unused.end()), unused.end());
+  if (!unused.empty())
+    throw MeshError(fmt::format("{}: {}", context, unused_nodes_problem(unused, tags.size())));
   return nodes;
 }
 
-// Swaps two nodes of a negative tet; refuses a flat one (relative to its longest edge from t[0]).
-void orient_tet(Tet& t, const std::vector<Vec3>& x, size_t gmsh_tag, const std::string& context) {
-  const double v6 = six_volume(t, x);
-  const double edge = std::max(
-      {(x[t[1]] - x[t[0]]).norm(), (x[t[2]] - x[t[0]]).norm(), (x[t[3]] - x[t[0]]).norm()});
-  if (!(std::abs(v6) > 1e-12 * edge * edge * edge))
-    throw MeshError(fmt::format("{}: tetrahedron {} has zero volume", context, gmsh_tag));
-  if (v6 < 0) std::swap(t[2], t[3]);
+// A model with volume elements other than linear tets (bricks, wedges, pyramids, quadratic tets)
+// is refused: dropping them would lose their mass silently.
+void refuse_other_volume_elements(const std::string& context) {
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 3);
+  for (int type : types) {
+    if (type == kGmshTet4) continue;
+    std::vector<size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(type, tags, nodes);
+    std::string name;
+    int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, n_nodes, local, n_primary);
+    throw MeshError(fmt::format(
+        "{}: element {} is a {} (Gmsh type {}, {} nodes; {} of them in the file): ccm simulates "
+        "linear tetrahedra (type 4) only, and dropping the others would lose their mass",
+        context, tags.empty() ? 0 : *std::min_element(tags.begin(), tags.end()), name, type,
+        n_nodes, tags.size()));
+  }
+}
+
+// Zero volume is refused; so is a mixture of orientations (the minority is inverted). A model
+// whose tets are all negative is read in that convention: two nodes of each swapped.
+void orient_tets(std::vector<Tet>& tets, const std::vector<Vec3>& x,
+                 const std::vector<size_t>& gmsh_tags, const std::string& context) {
+  std::vector<double> v6(tets.size());
+  for (size_t e = 0; e < tets.size(); ++e) {
+    const Tet& t = tets[e];
+    v6[e] = six_volume(t, x);
+    const double edge = std::max(
+        {(x[t[1]] - x[t[0]]).norm(), (x[t[2]] - x[t[0]]).norm(), (x[t[3]] - x[t[0]]).norm()});
+    if (!(std::abs(v6[e]) > 1e-12 * edge * edge * edge))
+      throw MeshError(fmt::format("{}: tetrahedron {} has zero volume", context, gmsh_tags[e]));
+  }
+  if (const auto minority = inverted_minority(v6); !minority.empty()) {
+    std::vector<long> labels;
+    for (size_t e : minority) labels.push_back(static_cast<long>(gmsh_tags[e]));
+    throw MeshError(
+        fmt::format("{}: {}", context, inverted_problem(labels, tets.size(), "tetrahedron")));
+  }
+  for (size_t e = 0; e < tets.size(); ++e)
+    if (v6[e] < 0) std::swap(tets[e][2], tets[e][3]);
 }
 
 struct Extracted {
@@ -165,8 +208,9 @@ struct Extracted {
 };
 
 // All linear tets of the current model, ordered by Gmsh element tag, on a compact node numbering
-// (ascending Gmsh node tag) that holds only the nodes tets use.
+// (ascending Gmsh node tag). Refuses other volume elements and nodes on no tet.
 Extracted extract_tets(const std::string& context) {
+  refuse_other_volume_elements(context);
   std::vector<size_t> elem_tags, elem_nodes;
   gmsh::model::mesh::getElementsByType(kGmshTet4, elem_tags, elem_nodes);
   if (elem_tags.empty())
@@ -178,11 +222,23 @@ Extracted extract_tets(const std::string& context) {
   for (size_t e : sorted_order(elem_tags)) {
     Tet t;
     for (size_t k = 0; k < 4; ++k) t[k] = out.node_tags.find(elem_nodes[4 * e + k]);
-    orient_tet(t, out.mesh.nodes, elem_tags[e], context);
     out.mesh.tets.push_back(t);
     out.tet_tags.push_back(elem_tags[e]);
   }
+  orient_tets(out.mesh.tets, out.mesh.nodes, out.tet_tags, context);
   return out;
+}
+
+// Nodes at one position inside one region (a cut) are refused, naming their Gmsh tags.
+void refuse_coincident_nodes(const Extracted& ex, const std::string& context) {
+  const CoincidentNodes c = coincident_nodes(ex.mesh);
+  if (c.count == 0) return;
+  const auto& tags = ex.node_tags.tags();
+  throw MeshError(
+      fmt::format("{}: {}", context,
+                  coincident_problem(static_cast<long>(tags[static_cast<size_t>(c.first)]),
+                                     static_cast<long>(tags[static_cast<size_t>(c.second)]),
+                                     ex.mesh.nodes[static_cast<size_t>(c.first)], c.count)));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -246,6 +302,11 @@ std::map<std::string, std::vector<Triangle>> named_surfaces(const Extracted& ex,
   std::map<std::string, std::vector<Triangle>> out;
   for (const auto& [name, list] : gmsh_surfaces) {
     const std::string where = fmt::format("{}: surface '{}'", context, name);
+    if (list.empty())
+      throw MeshError(
+          fmt::format("{}: the physical group names no triangle (no face of a "
+                      "tetrahedron; quadrangles are not read)",
+                      where));
     auto& triangles = out[name];
     for (const GmshTriangle& g : list) triangles.push_back(outward_triangle(g, ex, table, where));
   }
@@ -492,6 +553,41 @@ void check_msh_file(const fs::path& path, const std::string& where) {
     throw MeshError(fmt::format("{}: not a Gmsh MSH file (it must start with $MeshFormat)", where));
 }
 
+// The node labels of an ASCII MSH 2 file's $Nodes section (none for another version or a binary
+// file). Gmsh keeps no node of an MSH 2 file that no element uses, so they are looked for here.
+std::optional<std::vector<long>> msh2_node_labels(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  double version = 0;
+  int binary = 0;
+  while (std::getline(in, line) && line.rfind("$MeshFormat", 0) != 0) {
+  }
+  if (!(in >> version >> binary) || version >= 3 || binary != 0) return std::nullopt;
+  while (std::getline(in, line) && line.rfind("$Nodes", 0) != 0) {
+  }
+  long count = 0;
+  if (!(in >> count) || count < 0) return std::nullopt;  // Gmsh reports the defect
+  std::vector<long> labels;
+  for (long k = 0; k < count; ++k) {
+    long label = 0;
+    double x = 0, y = 0, z = 0;
+    if (!(in >> label >> x >> y >> z)) return std::nullopt;
+    labels.push_back(label);
+  }
+  return labels;
+}
+
+void refuse_msh2_unused_nodes(const fs::path& path, const Extracted& ex, const std::string& where) {
+  const auto labels = msh2_node_labels(path);
+  if (!labels) return;
+  std::vector<long> unused;
+  for (long label : *labels)
+    if (label <= 0 || ex.node_tags.find(static_cast<size_t>(label)) < 0) unused.push_back(label);
+  std::sort(unused.begin(), unused.end());
+  if (!unused.empty())
+    throw MeshError(fmt::format("{}: {}", where, unused_nodes_problem(unused, labels->size())));
+}
+
 // A private directory holding a symbolic link "mesh.msh" to the file. Gmsh also executes
 // "<file>.opt" as a script when one exists next to the file it reads; no such file can exist here.
 class PrivateLink {
@@ -565,8 +661,10 @@ TetMesh read_msh_file(const std::filesystem::path& path) {
       [&] {
         gmsh::open(link.path().string());
         Extracted ex = extract_tets(where);
+        refuse_msh2_unused_nodes(path, ex, where);
         ex.mesh.named_surfaces = named_surfaces(ex, where);
         named_regions(ex.tet_tags, ex.mesh, where);
+        refuse_coincident_nodes(ex, where);
         return std::move(ex.mesh);
       },
       link.path().string());
@@ -578,6 +676,7 @@ TetMesh mesh_gmsh_model(const std::string& context, const std::function<void()>&
     Extracted ex = extract_tets(context);
     ex.mesh.named_surfaces = named_surfaces(ex, context);
     named_regions(ex.tet_tags, ex.mesh, context);
+    refuse_coincident_nodes(ex, context);
     return std::move(ex.mesh);
   });
 }

@@ -1,7 +1,9 @@
 #include "engine/mesh/readers/inp_reader.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <cstdlib>
 #include <deque>
 #include <map>
 #include <memory>
@@ -65,6 +67,7 @@ enum class Block {
   none,
   node,
   tet,
+  other_solid,  // volume elements ccm does not simulate: counted, then refused
   triangle,
   other_element,
   nset,
@@ -83,6 +86,7 @@ class InpParser {
     m_.set_section = "*NSET";
     m_.surface_section = "*SURFACE";
     parse_file(path, 0);
+    refuse_other_solids();
     resolve();
     return assemble(std::move(m_));
   }
@@ -223,12 +227,14 @@ class InpParser {
     if (k.params.count("INPUT")) fail(k.line, "INPUT= (elements in another file) is not supported");
     element_type_ = upper(required(k, "TYPE"));
     set_ = k.params.count("ELSET") ? &set_named(elsets_, k.params.at("ELSET"), k.line) : nullptr;
+    region_ = -1;
+    other_solid_fields_ = 0;
     if (is_tet_type(element_type_)) {
       block_ = Block::tet;
+      if (k.params.count("ELSET")) region_ = region_named(k.params.at("ELSET"));
     } else if (is_solid_type(element_type_)) {
-      fail(k.line, fmt::format("element type {} is not supported: ccm reads linear tetrahedra "
-                               "(C3D4) only",
-                               element_type_));
+      block_ = Block::other_solid;
+      other_solids_.try_emplace(element_type_, OtherSolids{0, file_index_, k.line});
     } else {
       block_ = is_triangle_type(element_type_) ? Block::triangle : Block::other_element;
     }
@@ -266,6 +272,16 @@ class InpParser {
     }
   }
 
+  // The region of the tets of an *ELEMENT, ELSET=name keyword (names case-insensitive, the first
+  // spelling kept).
+  int region_named(const std::string& name) {
+    auto& names = m_.region_names;
+    for (size_t r = 0; r < names.size(); ++r)
+      if (upper(names[r]) == upper(name)) return static_cast<int>(r);
+    names.push_back(name);
+    return static_cast<int>(names.size()) - 1;
+  }
+
   LabelSet& set_named(std::map<std::string, LabelSet>& sets, const std::string& name, int line) {
     LabelSet& s = sets[upper(name)];
     if (s.name.empty()) s = {name, {}, place(line)};
@@ -289,6 +305,8 @@ class InpParser {
       case Block::triangle:
       case Block::other_element:
         return element_line(i, line);
+      case Block::other_solid:
+        return other_solid_line(line);
       case Block::nset:
         return set_line(i, line, nsets_);
       case Block::elset:
@@ -345,13 +363,45 @@ class InpParser {
       fail(at, fmt::format("element {} is defined twice (first at line {})", e,
                            elements_.at(e).at.line));
     if (block_ == Block::tet)
-      m_.tets.push_back({e, {el.nodes[0], el.nodes[1], el.nodes[2], el.nodes[3]}, place(at)});
+      m_.tets.push_back(
+          {e, {el.nodes[0], el.nodes[1], el.nodes[2], el.nodes[3]}, place(at), region_});
     else if (block_ == Block::triangle && el.nodes.size() == 3)
       triangles_.insert(e);
     else
       ++m_.report.ignored[element_type_];
     elements_.emplace(e, std::move(el));
     if (set_) set_->labels.push_back(e);
+  }
+
+  // An element of a volume type ccm does not simulate, counted (its nodes run over continuation
+  // lines: C3D<n> has n nodes).
+  void other_solid_line(std::string_view line) {
+    other_solid_fields_ += split_commas(line).size();
+    const std::string digits = element_type_.substr(element_type_.find("3D") + 2);
+    const size_t n_nodes = std::strtoul(digits.c_str(), nullptr, 10);
+    if (other_solid_fields_ < 1 + n_nodes) return;
+    ++other_solids_.at(element_type_).count;
+    other_solid_fields_ = 0;
+  }
+
+  // Volume elements other than C3D4 are refused at the first such *ELEMENT keyword, with how many
+  // of each type the deck holds: leaving them out would lose their mass.
+  void refuse_other_solids() const {
+    if (other_solids_.empty()) return;
+    std::vector<std::string> counts;
+    const OtherSolids* first = nullptr;
+    for (const auto& [type, o] : other_solids_) {
+      counts.push_back(fmt::format("{} {}", o.count, type));
+      if (!first || std::pair(o.file, o.line) < std::pair(first->file, first->line)) first = &o;
+    }
+    for (const auto& [type, o] : other_solids_)
+      if (&o == first)
+        files_[static_cast<size_t>(o.file)]->fail(
+            o.line, "*ELEMENT",
+            fmt::format("element type {} is not supported: ccm reads linear tetrahedra (C3D4) "
+                        "only, and leaving the others out would lose their mass (the deck holds "
+                        "{})",
+                        type, fmt::join(counts, ", ")));
   }
 
   // Labels, set names, or with GENERATE "first, last[, increment]". A node-based surface line is
@@ -396,8 +446,10 @@ class InpParser {
       entry.elements = existing(elsets_, fields[0], i).labels;
     if (fields.size() == 2 && !fields[1].empty()) {
       const std::string face = upper(fields[1]);
-      if (face.size() != 2 || face[0] != 'S' || face[1] < '1' || face[1] > '4')
+      if (face.size() != 2 || face[0] != 'S' || face[1] < '1' || face[1] > '4') {
+        refuse_other_solids();  // the cause, when the face is one of a brick or wedge
         fail(i, fmt::format("face '{}' is not a face of a C3D4 (S1, S2, S3 or S4)", fields[1]));
+      }
       entry.face = face[1] - '1';
     }
     surface_entries_.push_back(std::move(entry));
@@ -480,6 +532,13 @@ class InpParser {
   bool generate_ = false;
   int parts_ = 0;
   std::string element_type_;
+  int region_ = -1;  // of the tets of the current *ELEMENT keyword
+  struct OtherSolids {
+    int count = 0;
+    int file = 0, line = 0;  // of the first *ELEMENT keyword of the type
+  };
+  std::map<std::string, OtherSolids> other_solids_;  // by element type
+  size_t other_solid_fields_ = 0;
   std::string surface_name_;
   LabelSet* set_ = nullptr;
   std::vector<std::string_view> pending_;

@@ -9,6 +9,7 @@
 
 #include "engine/mesh/face_table.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"  // MeshError
+#include "engine/mesh/mesh_defects.hpp"
 #include "engine/mesh/readers/text_file.hpp"
 
 namespace ccm {
@@ -35,47 +36,72 @@ std::unordered_map<long, size_t> node_index(const LabelledMesh& m) {
   return index;
 }
 
-// Compact numbering of the nodes the tets use, ascending by label.
+// Compact numbering of every node, ascending by label; a tet naming an undefined node is refused.
 std::unordered_map<long, int> compact_nodes(const LabelledMesh& m,
                                             const std::unordered_map<long, size_t>& all) {
-  std::vector<long> used;
-  used.reserve(4 * m.tets.size());
   for (const auto& t : m.tets)
-    for (long n : t.nodes) {
+    for (long n : t.nodes)
       if (!all.count(n))
         fail(m, t.at, m.tet_section,
              fmt::format("element {} uses node {}, which is not defined", t.label, n));
-      used.push_back(n);
-    }
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::vector<long> labels;
+  labels.reserve(m.nodes.size());
+  for (const auto& n : m.nodes) labels.push_back(n.label);
+  std::sort(labels.begin(), labels.end());
   std::unordered_map<long, int> compact;
-  compact.reserve(used.size());
-  for (size_t i = 0; i < used.size(); ++i) compact.emplace(used[i], static_cast<int>(i));
+  compact.reserve(labels.size());
+  for (size_t i = 0; i < labels.size(); ++i) compact.emplace(labels[i], static_cast<int>(i));
   return compact;
 }
 
+// A node on no tet is refused at its line (after the tets' own checks, which say more).
+void refuse_unused_nodes(const LabelledMesh& m, const std::unordered_map<long, size_t>& all) {
+  std::vector<char> used_node(m.nodes.size(), 0);
+  for (const auto& t : m.tets)
+    for (long n : t.nodes) used_node[all.at(n)] = 1;
+  std::vector<long> unused;
+  for (size_t i = 0; i < m.nodes.size(); ++i)
+    if (!used_node[i]) unused.push_back(m.nodes[i].label);
+  if (unused.empty()) return;
+  std::sort(unused.begin(), unused.end());
+  fail(m, m.nodes[all.at(unused.front())].at, m.node_section,
+       unused_nodes_problem(unused, m.nodes.size()));
+}
+
+// The tets on the compact numbering. Zero volume and a mixture of orientations are refused at the
+// element's line; a file whose tets are all negative is read in that convention (two nodes of
+// each swapped, counted as inverted).
 void add_tets(const LabelledMesh& m, const std::unordered_map<long, int>& compact, MeshFile& out) {
-  int inverted = 0;
-  for (const auto& lt : m.tets) {
+  const auto& x = out.mesh.nodes;
+  std::vector<double> v6(m.tets.size());
+  out.mesh.tets.reserve(m.tets.size());
+  for (size_t e = 0; e < m.tets.size(); ++e) {
+    const auto& lt = m.tets[e];
     Tet t;
     for (size_t k = 0; k < 4; ++k) t[k] = compact.at(lt.nodes[k]);
-    const auto& x = out.mesh.nodes;
     const double edge = std::max(
         {(x[t[1]] - x[t[0]]).norm(), (x[t[2]] - x[t[0]]).norm(), (x[t[3]] - x[t[0]]).norm()});
-    const double v6 = six_volume(t, x);
-    if (!(std::abs(v6) > 1e-12 * edge * edge * edge))
+    v6[e] = six_volume(t, x);
+    if (!(std::abs(v6[e]) > 1e-12 * edge * edge * edge))
       fail(
           m, lt.at, m.tet_section,
           fmt::format("element {} has zero volume (its nodes are repeated or coplanar)", lt.label));
-    if (v6 < 0) {
-      std::swap(t[2], t[3]);
-      if (out.report.inverted_labels.size() < kInvertedLabelsListed)
-        out.report.inverted_labels.push_back(lt.label);
-      ++inverted;
-    }
     out.mesh.tets.push_back(t);
     out.report.tet_labels.push_back(lt.label);
+  }
+  if (const auto minority = inverted_minority(v6); !minority.empty()) {
+    std::vector<long> labels;
+    for (size_t e : minority) labels.push_back(m.tets[e].label);
+    fail(m, m.tets[minority.front()].at, m.tet_section,
+         inverted_problem(labels, m.tets.size(), "element"));
+  }
+  int inverted = 0;
+  for (size_t e = 0; e < m.tets.size(); ++e) {
+    if (v6[e] > 0) continue;
+    std::swap(out.mesh.tets[e][2], out.mesh.tets[e][3]);
+    if (out.report.inverted_labels.size() < kInvertedLabelsListed)
+      out.report.inverted_labels.push_back(m.tets[e].label);
+    ++inverted;
   }
   out.report.inverted_tets = inverted;
 }
@@ -84,23 +110,14 @@ void add_node_sets(const LabelledMesh& m, const std::unordered_map<long, size_t>
                    const std::unordered_map<long, int>& compact, MeshFile& out) {
   for (const auto& [name, set] : m.node_sets) {
     std::vector<int> nodes;
-    int off_mesh = 0;
     for (long label : set.labels) {
       if (!all.count(label))
         fail(m, set.at, m.set_section,
              fmt::format("set '{}' names node {}, which is not defined", name, label));
-      const auto it = compact.find(label);
-      if (it == compact.end())
-        ++off_mesh;
-      else
-        nodes.push_back(it->second);
+      nodes.push_back(compact.at(label));  // every defined node is on a tet (compact_nodes)
     }
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    if (off_mesh > 0)
-      out.report.notes.push_back(
-          fmt::format("node set '{}': {} of its nodes belong to no tetrahedron and are left out",
-                      name, off_mesh));
     out.mesh.named_node_sets[name] = std::move(nodes);
   }
 }
@@ -149,34 +166,27 @@ void add_surfaces(const LabelledMesh& m, const std::unordered_map<long, int>& co
   }
 }
 
-// Nodes at exactly the same position under different labels: the tets on either side do not share
-// them, so the mesh is cut there (an export that duplicated an interface). Reported, not refused:
-// a cut may be meant (two parts that touch).
-void note_coincident_nodes(const std::unordered_map<long, int>& compact, MeshFile& out) {
-  const std::vector<Vec3>& x = out.mesh.nodes;
-  std::vector<long> label(x.size());
+// The file's parts as regions, when every tet belongs to one.
+void add_regions(const LabelledMesh& m, TetMesh& mesh) {
+  if (m.region_names.empty()) return;
+  for (const auto& t : m.tets)
+    if (t.region < 0) return;
+  mesh.region_names = m.region_names;
+  for (const auto& t : m.tets) mesh.tet_region.push_back(t.region);
+}
+
+// Nodes at exactly one position under two labels: the tets on either side do not share them, so
+// the body would open along them (an export that duplicated an interface). Refused at the line of
+// the later node.
+void refuse_coincident_nodes(const LabelledMesh& m, const std::unordered_map<long, size_t>& all,
+                             const std::unordered_map<long, int>& compact, const MeshFile& out) {
+  const CoincidentNodes c = coincident_nodes(out.mesh);
+  if (c.count == 0) return;
+  std::vector<long> label(out.mesh.nodes.size());
   for (const auto& [l, i] : compact) label[static_cast<size_t>(i)] = l;
-  std::vector<int> order(x.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  const auto at = [&](int i) {
-    const Vec3& p = x[static_cast<size_t>(i)];
-    return std::array<double, 3>{p.x(), p.y(), p.z()};
-  };
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return at(a) < at(b); });
-  int shared = 0;
-  std::pair<int, int> first{-1, -1};
-  for (size_t k = 1; k < order.size(); ++k)
-    if (at(order[k]) == at(order[k - 1])) {
-      if (shared == 0) first = {order[k - 1], order[k]};
-      ++shared;
-    }
-  if (shared == 0) return;
-  const Vec3& p = x[static_cast<size_t>(first.first)];
-  out.report.notes.push_back(fmt::format(
-      "{} node(s) share their position with another node (the first: nodes {} and {} at ({:g}, "
-      "{:g}, {:g})): the tets on either side are not connected there",
-      shared, label[static_cast<size_t>(first.first)], label[static_cast<size_t>(first.second)],
-      p.x(), p.y(), p.z()));
+  const long a = label[static_cast<size_t>(c.first)], b = label[static_cast<size_t>(c.second)];
+  fail(m, m.nodes[all.at(b)].at, m.node_section,
+       coincident_problem(a, b, out.mesh.nodes[static_cast<size_t>(c.first)], c.count));
 }
 
 }  // namespace
@@ -193,7 +203,9 @@ MeshFile assemble(LabelledMesh&& m) {
   for (const auto& [label, i] : compact)
     out.mesh.nodes[static_cast<size_t>(i)] = m.length_scale * m.nodes[all.at(label)].x;
   add_tets(m, compact, out);
-  note_coincident_nodes(compact, out);
+  refuse_unused_nodes(m, all);
+  add_regions(m, out.mesh);
+  refuse_coincident_nodes(m, all, compact, out);
   add_node_sets(m, all, compact, out);
   add_surfaces(m, compact, out);
   return out;

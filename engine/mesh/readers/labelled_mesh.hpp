@@ -29,6 +29,7 @@ struct LabelledMesh {
     long label;
     std::array<long, 4> nodes;
     Place at;
+    int region = -1;  // index into region_names; -1: none given
   };
   struct Face {
     std::array<long, 3> nodes;
@@ -45,6 +46,9 @@ struct LabelledMesh {
   std::vector<Tet> tets;
   std::map<std::string, std::vector<Face>> surfaces;
   std::map<std::string, NodeSet> node_sets;
+  // The parts of the file (Abaqus: the ELSET= of an *ELEMENT keyword). When every tet has one
+  // they become the mesh's regions: nodes of two regions may share a position (parts that meet).
+  std::vector<std::string> region_names;
   double length_scale = 1.0;  // every coordinate is multiplied by it
 
   // How the file format names the parts of the file, for messages ("dataset 2411 (nodes)").
@@ -52,11 +56,12 @@ struct LabelledMesh {
   MeshFileReport report;
 };
 
-// Nodes are numbered 0..n-1 in ascending label order and are only those some tet uses; tets keep
-// the file's order, a negative one has two nodes swapped (counted in report.inverted_tets). Node
-// set members on no tet are left out (a note says how many). Throws MeshError
-// "<file>:<line>: <section>: ..." for a node defined twice, a tet or set using an undefined
-// node, a tet of zero volume, a named triangle that is not a face of a tet, or no tet at all.
+// Nodes are numbered 0..n-1 in ascending label order; tets keep the file's order. A file whose
+// tets are all negative is read in that convention (two nodes of each swapped, counted in
+// report.inverted_tets). Throws MeshError "<file>:<line>: <section>: ..." for a node defined
+// twice, a node on no tet, two nodes at one position, a tet or set using an undefined node, a tet
+// of zero volume, tets of both orientations (at the first of the minority), a named triangle that
+// is not a face of a tet, or no tet at all (engine/mesh/mesh_defects.hpp).
 MeshFile assemble(LabelledMesh&& labelled);
 
 }  // namespace ccm

@@ -111,6 +111,7 @@ class UnvParser {
     if (!skipped.empty())
       m_.report.notes.push_back(
           fmt::format("datasets skipped (not mesh data): {}", fmt::join(skipped, ", ")));
+    refuse_other_solids();
     resolve_groups();
     return assemble(std::move(m_));
   }
@@ -235,14 +236,33 @@ class UnvParser {
       tet_nodes_.emplace(label, nodes);
     } else if (is_linear_triangle(fe) && nodes.size() == 3) {
       triangles_.emplace(label, std::array<long, 3>{nodes[0], nodes[1], nodes[2]});
-    } else if (fe == kLinearTet || is_other_solid(fe)) {
+    } else if (fe == kLinearTet) {
       f_.fail(at, section_,
               fmt::format("element {} is a {} with {} nodes; ccm reads linear tetrahedra (111, "
                           "4 nodes) only",
                           label, fe_name(fe), nodes.size()));
+    } else if (is_other_solid(fe)) {
+      if (other_solids_.empty()) {
+        first_other_solid_ =
+            fmt::format("element {} is a {} with {} nodes", label, fe_name(fe), nodes.size());
+        first_other_solid_at_ = at;
+      }
+      ++other_solids_[fe_name(fe)];
     } else {
       ++m_.report.ignored[fe_name(fe)];
     }
+  }
+
+  // Volume elements other than linear tets are refused at the first of them, with how many of
+  // each kind the file holds: leaving them out would lose their mass.
+  void refuse_other_solids() const {
+    if (other_solids_.empty()) return;
+    std::vector<std::string> counts;
+    for (const auto& [kind, n] : other_solids_) counts.push_back(fmt::format("{} {}", n, kind));
+    f_.fail(first_other_solid_at_, section_name(2412),
+            fmt::format("{}; ccm reads linear tetrahedra (111, 4 nodes) only, and leaving the "
+                        "others out would lose their mass (the file holds {})",
+                        first_other_solid_, fmt::join(counts, ", ")));
   }
 
   void read_groups(int begin, int end) {
@@ -304,6 +324,9 @@ class UnvParser {
   std::unordered_map<long, std::array<long, 3>> triangles_;
   std::unordered_map<long, std::vector<long>> tet_nodes_;
   std::map<std::string, Group> groups_;
+  std::map<std::string, int> other_solids_;  // volume elements that are not linear tets, by kind
+  std::string first_other_solid_;            // "element 6 is a ..."
+  int first_other_solid_at_ = 0;
 };
 
 }  // namespace

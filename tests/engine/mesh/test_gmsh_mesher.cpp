@@ -300,8 +300,9 @@ TEST_CASE("mesh_primitive: invalid specs name the field", "[mesh][gmsh]") {
   CHECK_THROWS_WITH(ccm::mesh_primitive(refined, {}), Contains("refinement.radius"));
 }
 
-// Two tets sharing the face {2,3,4}; node 6 is unused; tet 10 is inverted and listed first;
-// triangle 30 ("base") faces into tet 20; group 7 has no name.
+// Two tets sharing the face {2,3,4}, both numbered with negative volume (one convention, read
+// with two nodes swapped); tet 10 is listed first; triangle 30 ("base") faces into tet 20; group 7
+// has no name.
 constexpr const char* kHandMadeMsh = R"($MeshFormat
 2.2 0 8
 $EndMeshFormat
@@ -312,17 +313,16 @@ $PhysicalNames
 3 3 "body"
 $EndPhysicalNames
 $Nodes
-6
+5
 5 1 1 1
 1 0 0 0
 2 1 0 0
 3 0 1 0
 4 0 0 1
-6 5 5 5
 $EndNodes
 $Elements
 5
-20 4 2 3 1 1 2 3 4
+20 4 2 3 1 1 3 2 4
 10 4 2 3 1 2 4 3 5
 30 2 2 1 1 1 2 3
 31 2 2 2 2 2 3 5
@@ -333,11 +333,11 @@ $EndElements
 TEST_CASE("read_msh_file: compact numbering, orientation, named surfaces", "[mesh][gmsh]") {
   const TempDir dir;
   const TetMesh m = ccm::read_msh_file(dir.write("two.msh", kHandMadeMsh));
-  REQUIRE(m.n_nodes() == 5);  // tags 1..5 in tag order; tag 6 dropped
+  REQUIRE(m.n_nodes() == 5);  // tags 1..5 in tag order
   CHECK(m.nodes[4] == Vec3(1, 1, 1));
   REQUIRE(m.tets.size() == 2);
   CHECK(m.tets[0] == ccm::Tet{1, 3, 4, 2});  // tag 10 first, (2,4,3,5) made positive
-  CHECK(m.tets[1] == ccm::Tet{0, 1, 2, 3});
+  CHECK(m.tets[1] == ccm::Tet{0, 2, 3, 1});  // tag 20, (1,3,2,4) made positive
   CHECK(checked_volume(m) == Approx(1.0 / 6.0 + 2.0 / 6.0));
   REQUIRE(m.named_surfaces.size() == 2);
   CHECK(m.named_surfaces.at("base") == std::vector<ccm::Triangle>{{0, 2, 1}});   // flipped to -z
@@ -396,7 +396,7 @@ TEST_CASE("read_msh_file: bad files throw MeshError naming the path", "[mesh][gm
   CHECK_THROWS_WITH(ccm::read_msh_file(truncated), Contains(truncated.string()));
 
   std::string no_tets = kHandMadeMsh;  // the same file with both tets turned into triangles
-  no_tets.replace(no_tets.find("20 4 2 3 1 1 2 3 4"), 18, "20 2 2 3 1 1 2 3");
+  no_tets.replace(no_tets.find("20 4 2 3 1 1 3 2 4"), 18, "20 2 2 3 1 1 3 2");
   no_tets.replace(no_tets.find("10 4 2 3 1 2 4 3 5"), 18, "10 2 2 3 1 2 4 3");
   const fs::path flat = dir.write("flat.msh", no_tets);
   CHECK_THROWS_WITH(ccm::read_msh_file(flat),
@@ -406,6 +406,12 @@ TEST_CASE("read_msh_file: bad files throw MeshError naming the path", "[mesh][gm
   stray.replace(stray.find("30 2 2 1 1 1 2 3"), 16, "30 2 2 1 1 1 2 5");
   CHECK_THROWS_WITH(ccm::read_msh_file(dir.write("stray.msh", stray)),
                     Contains("'base'") && Contains("not a face"));
+
+  std::string quads = kHandMadeMsh;  // a named surface of quadrangles alone names no triangle
+  quads.replace(quads.find("3\n2 1 \"base\""), 1, "4\n2 9 \"pads\"");
+  quads.replace(quads.find("5\n20 4"), 1, "6\n41 3 2 9 9 1 2 5 4");
+  CHECK_THROWS_WITH(ccm::read_msh_file(dir.write("quads.msh", quads)),
+                    Contains("surface 'pads': the physical group names no triangle"));
 }
 
 TEST_CASE("read_msh_file: ignores a sibling .opt script", "[mesh][gmsh]") {

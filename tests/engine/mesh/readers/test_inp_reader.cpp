@@ -64,6 +64,9 @@ TEST_CASE("inp: HyperMesh's two-part unit cube with contact surfaces", "[mesh][i
   CHECK(m.mesh.n_nodes() == 116);          // "**NSET COUNT = 116" in the file's header
   CHECK(m.mesh.n_elements() == 172 + 92);  // "**ELSET COUNT" of UPPER and LOWER
   CHECK(mesh_volume(m.mesh) == Approx(1.0).epsilon(1e-12));  // the unit cube
+  // Two parts (ELSET= on each *ELEMENT) that meet at z = 0.5 without sharing a node (their
+  // corners coincide): two regions, so the coincident corners are parts that meet, not a cut.
+  CHECK(m.mesh.region_names == std::vector<std::string>{"UPPER", "LOWER"});
   // The parts share no node: 71 + 45 = 116.
   const auto& upper = m.mesh.named_node_sets.at("UPPER");
   const auto& lower = m.mesh.named_node_sets.at("LOWER");
@@ -98,7 +101,8 @@ TEST_CASE("inp: a mesh with C3D6 and other solids is refused at their *ELEMENT",
   CHECK(test::mesh_error_of([&] { read_inp_file(file); }) ==
         file.string() +
             ":186: *ELEMENT: element type C3D6 is not supported: ccm reads linear tetrahedra "
-            "(C3D4) only");
+            "(C3D4) only, and leaving the others out would lose their mass (the deck holds 8 "
+            "C3D10, 12 C3D15, 1 C3D20, 24 C3D6, 6 C3D8)");
 }
 
 TEST_CASE("inp: *INCLUDE, GENERATE, free-face and node-based surfaces", "[mesh][inp]") {
@@ -159,14 +163,15 @@ TEST_CASE("inp: bad fields name the file, the line and the keyword", "[mesh][inp
         f + ":41: *SURFACE: element 18 is not defined");
   CHECK(error_with("TYPE=C3D4", "TYPE=C3D10") ==
         f + ":12: *ELEMENT: element type C3D10 is not supported: ccm reads linear tetrahedra "
-            "(C3D4) only");
+            "(C3D4) only, and leaving the others out would lose their mass (the deck holds 5 "
+            "C3D10)");
   CHECK(error_with("*NSET, NSET=SYM12\n", "*NSET, NSET=SYM12\nNOPE,\n") ==
         f + ":35: *NSET: no set named 'NOPE' is defined before");
   CHECK(error_with("*NSET, NSET=SYM12\n", "*NSET\n") ==
         f + ":34: *NSET: the parameter NSET= is required");
 }
 
-TEST_CASE("inp: nodes at one position under two labels are reported (the mesh is cut there)",
+TEST_CASE("inp: nodes at one position in one part are refused (the mesh is cut there)",
           "[mesh][inp]") {
   test::TempDir dir;
   // Two tets on one face, the second given its own copies of the face's three nodes.
@@ -174,12 +179,21 @@ TEST_CASE("inp: nodes at one position under two labels are reported (the mesh is
                               "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
                               "5, 1, 1, 1\n6, 1, 0, 0\n7, 0, 1, 0\n8, 0, 0, 1\n"
                               "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 6, 7, 8, 5\n");
-  const MeshFile m = read_inp_file(file);
-  REQUIRE(m.mesh.tets.size() == 2);
-  REQUIRE(m.report.notes.size() == 1);
-  CHECK(m.report.notes[0] ==
-        "3 node(s) share their position with another node (the first: nodes 4 and 8 at (0, 0, "
-        "1)): the tets on either side are not connected there");
+  CHECK(test::mesh_error_of([&] { read_inp_file(file); }) ==
+        file.string() +
+            ":9: *NODE: nodes 4 and 8 share the position (0, 0, 1) (3 node(s) share their "
+            "position with another): the tetrahedra on either side are not connected there, a cut "
+            "the body would open along; merge the duplicates, or make each part a body (or a "
+            "region) of its own");
+  // The same two tets as two parts (ELSET= on *ELEMENT): parts that meet, read as two regions.
+  const auto parts = dir.write("parts.inp",
+                               "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
+                               "5, 1, 1, 1\n6, 1, 0, 0\n7, 0, 1, 0\n8, 0, 0, 1\n"
+                               "*ELEMENT, TYPE=C3D4, ELSET=a\n1, 1, 2, 3, 4\n"
+                               "*ELEMENT, TYPE=C3D4, ELSET=b\n2, 6, 7, 8, 5\n");
+  const MeshFile m = read_inp_file(parts);
+  CHECK(m.mesh.region_names == std::vector<std::string>{"a", "b"});
+  CHECK(m.mesh.tet_region == std::vector<int>{0, 1});
   // Joined (the second tet on nodes 2, 3, 4), nothing to report.
   const auto joined = dir.write("joined.inp",
                                 "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "engine/element/tet4.hpp"
 #include "engine/element/mesh_quality.hpp"
+#include "engine/element/tet4.hpp"
 #include "engine/mesh/readers/mesh_file.hpp"
 #include "tests/engine/mesh/readers/mesh_test_files.hpp"
 
