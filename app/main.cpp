@@ -6,7 +6,7 @@
 // `ccm rig run CASE [--data DIR --trial N] [--drive open-loop|physical] [--out DIR] [--db FILE]
 // [--json]`,
 // `ccm rig calibrate CASE --params mu_s,mu_k[,...] --data DIR [...]`,
-// `ccm mesh info FILE [--json]`,
+// `ccm mesh info FILE [--json] [--material E,NU,RHO]`,
 // `ccm compare SCENE --rigid BODY[,BODY...] [--observe COL,...] [--max-error E] [--out DIR]
 // [--json]`.
 #include <fmt/format.h>
@@ -342,6 +342,12 @@ int main(int argc, char** argv) {
       "info", "Node and tet counts, extent, named groups and element quality of a mesh file");
   mesh_info->add_option("FILE", mesh_info_args.file, "Mesh file (see docs/meshes.md)")->required();
   mesh_info->add_flag("--json", mesh_info_args.json, "Print the figures as JSON");
+  mesh_info
+      ->add_option("--material", mesh_info_args.material,
+                   "E,NU,RHO (Pa, -, kg/m^3): also print the stable step h_e / c_d of the worst "
+                   "tets and of the median tet")
+      ->expected(3)
+      ->delimiter(',');
   mesh_info->footer(
       "Exit codes: 0 read, 1 internal error, 2 bad input (the message names the "
       "file, the line and the dataset or keyword).");

@@ -33,17 +33,36 @@ MeshQuality mesh_quality(const TetMesh& mesh) {
   // The six edges (a, b) of a tet with the two other nodes (c, d).
   static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                        {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  std::vector<TetQuality> all(mesh.tets.size());
   for (size_t e = 0; e < mesh.tets.size(); ++e) {
     const Tet& t = mesh.tets[e];
+    TetQuality& tq = all[e];
+    tq.tet = static_cast<int>(e);
+    tq.min_dihedral_deg = std::numeric_limits<double>::infinity();
+    tq.max_dihedral_deg = -tq.min_dihedral_deg;
     for (const auto& edge : kEdges) {
       const double angle =
           dihedral_angle_deg(x[t[edge[0]]], x[t[edge[1]]], x[t[edge[2]]], x[t[edge[3]]]);
-      if (angle < q.min_dihedral_deg) q.min_dihedral_deg = angle, q.min_dihedral_tet = int(e);
-      if (angle > q.max_dihedral_deg) q.max_dihedral_deg = angle, q.max_dihedral_tet = int(e);
+      tq.min_dihedral_deg = std::min(tq.min_dihedral_deg, angle);
+      tq.max_dihedral_deg = std::max(tq.max_dihedral_deg, angle);
     }
-    const double h = characteristic_length(edge_matrix(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
-    if (h < q.min_h) q.min_h = h, q.min_h_tet = static_cast<int>(e);
+    if (tq.min_dihedral_deg < q.min_dihedral_deg)
+      q.min_dihedral_deg = tq.min_dihedral_deg, q.min_dihedral_tet = int(e);
+    if (tq.max_dihedral_deg > q.max_dihedral_deg)
+      q.max_dihedral_deg = tq.max_dihedral_deg, q.max_dihedral_tet = int(e);
+    tq.h = characteristic_length(edge_matrix(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+    if (tq.h < q.min_h) q.min_h = tq.h, q.min_h_tet = static_cast<int>(e);
   }
+  // Smallest h_e first, ties by tet index (deterministic).
+  const auto by_h = [](const TetQuality& a, const TetQuality& b) {
+    return a.h != b.h ? a.h < b.h : a.tet < b.tet;
+  };
+  const size_t n_worst = std::min(kWorstListed, all.size());
+  q.worst.resize(n_worst);
+  std::partial_sort_copy(all.begin(), all.end(), q.worst.begin(), q.worst.end(), by_h);
+  const auto middle = all.begin() + static_cast<std::ptrdiff_t>(all.size() / 2);
+  std::nth_element(all.begin(), middle, all.end(), by_h);
+  q.median_h = middle->h;
   return q;
 }
 

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -76,4 +77,47 @@ TEST_CASE("ccm mesh info: bad files exit 2 naming the file, line and dataset", "
                              ":24: *ELEMENT: element data ends after 2 of the 5 fields of a "
                              "C3D4\n");
   CHECK(mesh_info(dir, "").exit_code == 2);  // FILE is required
+}
+
+TEST_CASE("ccm mesh info: a sliver is named with its h_e and the stable step it implies",
+          "[mesh][cli]") {
+  ccm::test::TempDir dir;
+  // Tet 1: the unit right tet, h_e = det D / sqrt(sum_f |n_f|^2) = 1 / sqrt(3 + 3) (three faces of
+  // |n_f| = 1, the slanted one sqrt 3). Tet 2: a sliver, its apex eps above the centroid of its
+  // base: |n_base| = 1, each side face |n_f| = 1/3 + O(eps^2), so h_e = eps / sqrt(4/3) to
+  // relative O(eps^2) = 1e-6.
+  const double eps = 1e-3;
+  const auto file =
+      dir.write("sliver.inp", fmt::format("*NODE\n1, 2, 0, 0\n2, 3, 0, 0\n3, 2, 1, 0\n"
+                                          "4, 2, 0, 1\n5, 0, 0, 0\n6, 1, 0, 0\n"
+                                          "7, 0, 1, 0\n8, {}, {}, {}\n"
+                                          "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n"
+                                          "2, 5, 6, 7, 8\n",
+                                          1.0 / 3.0, 1.0 / 3.0, eps));
+  // E 5 MPa, nu 0.4, rho 1000: c_d = sqrt(E (1 - nu) / ((1 + nu)(1 - 2 nu) rho)).
+  const double c_d = std::sqrt(5e6 * 0.6 / (1.4 * 0.2 * 1000.0));
+  const MeshInfoOutput out =
+      mesh_info(dir, "'" + file.string() + "' --json --material 5e6,0.4,1000");
+  REQUIRE(out.exit_code == 0);
+  const auto j = nlohmann::json::parse(out.out);
+  const double h_sliver = eps / std::sqrt(4.0 / 3.0), h_regular = 1.0 / std::sqrt(6.0);
+  REQUIRE(j["worst_tets"].size() == 2);
+  CHECK(j["worst_tets"][0]["tet"] == 2);
+  CHECK(j["worst_tets"][0]["h_e"].get<double>() == Approx(h_sliver).epsilon(1e-5));
+  CHECK(j["worst_tets"][0]["stable_step_s"].get<double>() == Approx(h_sliver / c_d).epsilon(1e-5));
+  CHECK(j["median_h_e"].get<double>() == Approx(h_regular).epsilon(1e-12));
+  CHECK(j["wave_speed_mps"].get<double>() == Approx(c_d).epsilon(1e-12));
+  REQUIRE(j["notes"].size() == 1);
+  CHECK_THAT(j["notes"][0].get<std::string>(), Contains("tet 2 is nearly degenerate"));
+  // The regular tet alone: no note.
+  const auto good = dir.write("one.inp",
+                              "*NODE\n1, 2, 0, 0\n2, 3, 0, 0\n3, 2, 1, 0\n4, 2, 0, 1\n"
+                              "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n");
+  CHECK(
+      nlohmann::json::parse(mesh_info(dir, "'" + good.string() + "' --json").out)["notes"].empty());
+  // A material that is none: exit 2 naming the option, nothing on stdout.
+  const MeshInfoOutput bad = mesh_info(dir, "'" + file.string() + "' --material 5e6,0.5,1000");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Contains("--material E,NU,RHO: nu"));
+  CHECK(bad.out.empty());
 }
