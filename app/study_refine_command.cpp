@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -79,7 +80,7 @@ std::string chosen_axis(const GridSpec& spec, const std::string& given) {
 double default_tolerance(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const bool geometric = values.front() > 0.0 || values.back() < 0.0;
-  double finest = INFINITY;
+  double finest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 1; k < values.size(); ++k)
     finest = std::min(finest, geometric ? std::abs(std::log10(values[k] / values[k - 1]))
                                         : values[k] - values[k - 1]);

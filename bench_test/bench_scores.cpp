@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "config/config_error.hpp"
@@ -211,8 +212,8 @@ BenchScores score_bench_test(const BenchMapping& m, const std::vector<PreparedTr
     ChannelCurves& curves = result.curves;
     curves.t = first.t;
     curves.mean.assign(first.t.size(), 0.0);
-    curves.low.assign(first.t.size(), INFINITY);
-    curves.high.assign(first.t.size(), -INFINITY);
+    curves.low.assign(first.t.size(), std::numeric_limits<double>::infinity());
+    curves.high.assign(first.t.size(), -std::numeric_limits<double>::infinity());
     for (const rig::TimeSeries& a : aligned) {
       const rig::TimeSeries at = rig::sample_at(a, first.t);
       for (std::size_t k = 0; k < at.t.size(); ++k) {

@@ -16,9 +16,10 @@ packages=(
 # The tests alone: Catch2; Chromium renders the report page (tests/reports/test_report_page.cpp);
 # pandas and h5py run docs/store.md's Python recipes (tests/app/test_store_recipes.cpp); libxml2
 # parses the field output's XDMF, ParaView (with Xvfb) opens and renders it headless
-# (tests/io/fields/); mpiexec (openmpi-bin, above) runs the partitioned-run tests.
+# (tests/io/fields/); mpiexec (openmpi-bin, above) runs the partitioned-run tests; clang-14 (with
+# its OpenMP runtime) builds the sanitizer pass and the libFuzzer targets (docs/fuzzing.md).
 test_packages=(catch2 chromium python3 python3-pandas python3-h5py libxml2-dev python3-paraview
-  xvfb)
+  xvfb clang-14 libomp-14-dev)
 
 case "${1:-}" in
   --run) ;;

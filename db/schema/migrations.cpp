@@ -454,6 +454,9 @@ void refuse_foreign_or_newer(Connection& connection, int version, int applicatio
     throw StoreError(file +
                      ": an SQLite file with tables but no ccm application_id is not a "
                      "ccm study store; refusing to touch it");
+  if (version < 0)  // user_version is a signed 32-bit header field: damage, not a ccm version
+    throw StoreError(file + ": schema version " + std::to_string(version) +
+                     " is negative: the file's header is damaged (not a ccm study store)");
   if (version > latest_schema_version())
     throw StoreError(file + ": schema version " + std::to_string(version) +
                      " was written by a newer ccm (this build knows up to " +

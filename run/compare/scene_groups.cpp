@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "engine/body/mass_properties.hpp"
@@ -16,7 +17,8 @@ std::vector<Tet> tets_of(const ModelMesh& mesh, const Body& b) {
 }
 
 double largest_extent(const ModelMesh& mesh, const Body& b) {
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()),
+       hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
   for (int n = b.first_node; n < b.first_node + b.n_nodes; ++n) {
     lo = lo.cwiseMin(mesh.X[static_cast<size_t>(n)]);
     hi = hi.cwiseMax(mesh.X[static_cast<size_t>(n)]);

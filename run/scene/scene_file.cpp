@@ -889,7 +889,8 @@ const std::array<Section, 10> kSections = {{
 
 void check_top_level_keys(const toml::table& root, const Table& t) {
   for (auto&& [k, v] : root) {
-    const auto known = [&](const Section& s) { return s.key == k.str(); };
+    const std::string_view key = k.str();  // (clang 14 cannot capture a structured binding)
+    const auto known = [&](const Section& s) { return s.key == key; };
     if (std::none_of(kSections.begin(), kSections.end(), known)) {
       std::vector<std::string_view> allowed;
       for (const Section& s : kSections) allowed.push_back(s.key);

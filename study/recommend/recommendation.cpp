@@ -220,9 +220,13 @@ void compare_with_measured(Recommendation& r) {
 // ER, RLS and KE of the query against their ranges over the usable points at these levels.
 std::vector<GroupRange> group_ranges(std::span<const PointMetrics> measured, const AxisLevels& axes,
                                      const RecommendQuery& q) {
-  std::vector<GroupRange> g = {{"ER", "", q.modulus_ratio, INFINITY, -INFINITY},
-                               {"RLS", "", q.length_ratio, INFINITY, -INFINITY},
-                               {"KE", "J", q.kinetic_energy, INFINITY, -INFINITY}};
+  std::vector<GroupRange> g = {
+      {"ER", "", q.modulus_ratio, std::numeric_limits<double>::infinity(),
+       -std::numeric_limits<double>::infinity()},
+      {"RLS", "", q.length_ratio, std::numeric_limits<double>::infinity(),
+       -std::numeric_limits<double>::infinity()},
+      {"KE", "J", q.kinetic_energy, std::numeric_limits<double>::infinity(),
+       -std::numeric_limits<double>::infinity()}};
   for (const PointMetrics& m : measured) {
     if (!usable_grid_point(m) || fit_axes(m.point) != axes) continue;
     const double v[3] = {m.point.modulus_ratio, m.point.length_ratio, m.point.kinetic_energy};

@@ -83,7 +83,8 @@ TEST_CASE("bench scores: a trigger aligns each trial's clock within one sample",
   for (const ChannelScore& c : s.channels[0].trials) {
     INFO(c.against);
     CHECK(c.rating.grade == ccm::correlate::RatingGrade::excellent);
-    CHECK(std::abs(c.peak_time_error) <= 1e-4);
+    // Within one sample (1e-4 s): a difference of two sample times, so up to rounding of them.
+    CHECK(std::abs(c.peak_time_error) <= 1e-4 * (1 + 1e-9));
   }
   CHECK(s.channels[0].mean.rating.overall > 0.94);
   // The mean of three trials with 1 % noise lies within the spread, and near the pulse.

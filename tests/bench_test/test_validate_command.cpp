@@ -230,7 +230,8 @@ TEST_CASE("ccm validate: a run whose curves cannot be scored says why and exits 
 TEST_CASE("ccm validate: bad data and names that name nothing are refused before any run",
           "[bench_test][cli]") {
   ccm::test::TempDir dir;
-  const auto [scene, data] = truth_and_bench(dir);
+  const auto paths = truth_and_bench(dir);  // (clang 14 cannot capture a structured binding)
+  const fs::path scene = paths.first, data = paths.second;
   auto refused = [&](const std::string& expected) {
     const fs::path out = dir.path / "never";
     const auto r = ccm::test::run_ccm(fmt::format("validate '{}' --data '{}' --out '{}' --quiet",

@@ -179,4 +179,15 @@ TEST_CASE("foreign files are refused with a message naming the file, and left un
                                   ": schema version 99 was written by a newer ccm (this build "
                                   "knows up to 9); upgrade ccm to open it");
   }
+  SECTION("a store whose schema version is negative (a damaged header; found by fuzzing)") {
+    const auto file = dir / "damaged.sqlite";
+    {
+      db::Connection c(file);
+      db::migrate(c);
+      c.exec("PRAGMA user_version = -242");
+    }
+    CHECK(open_error(file) == file.string() +
+                                  ": schema version -242 is negative: the file's header is "
+                                  "damaged (not a ccm study store)");
+  }
 }

@@ -3,6 +3,7 @@
 // sums and names the member that failed.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -50,7 +51,8 @@ TEST_CASE("contact set: forces sum and corrections act in member order", "[conta
   std::vector<std::unique_ptr<ContactModel>> members;
   members.push_back(stub("a", kForcePhases, 1.0, 5.0));
   members.push_back(stub("b", kCorrectionPhases, 2.0, 3.0));
-  members.push_back(stub("c", kCorrectionPhases, INFINITY, INFINITY));
+  members.push_back(stub("c", kCorrectionPhases, std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::infinity()));
   ContactSet set(std::move(members));
   CHECK(set.name() == "a + b + c");
   CHECK(set.phases().adds_forces);
@@ -73,9 +75,11 @@ TEST_CASE("contact set: stiffness steps combine in inverse squares, kinematic st
   std::vector<std::unique_ptr<ContactModel>> members;
   members.push_back(stub("a", kForcePhases, 3.0, 5.0));
   members.push_back(stub("b", kForcePhases, 4.0, 2.0));
-  members.push_back(stub("c", kCorrectionPhases, INFINITY, INFINITY));
+  members.push_back(stub("c", kCorrectionPhases, std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::infinity()));
   const ContactSet set(std::move(members));
-  const ContactStepBound b = set.step_bound(one_node_state(), INFINITY);
+  const ContactStepBound b =
+      set.step_bound(one_node_state(), std::numeric_limits<double>::infinity());
   // 1/dt^2 = 1/9 + 1/16 = 25/144: dt = 12/5 exactly (two springs on one mass: omega^2 adds).
   CHECK(b.stiffness_dt == Approx(2.4).epsilon(1e-15));
   CHECK(b.kinematic_dt == 2.0);

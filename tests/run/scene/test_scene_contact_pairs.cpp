@@ -5,6 +5,7 @@
 // their names; what a pair may not do is refused with file, line and key.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "engine/contact/contact_set.hpp"
@@ -62,7 +63,7 @@ TEST_CASE("contact pairs: DCR above and penalty below a free rigid slab keep the
   opt.time = time_control(scene.time);
   opt.contact = setup.model.get();
   // The total linear momentum of the deformable nodes and the slab, at every sample.
-  Vec3 p0 = Vec3::Constant(NAN);
+  Vec3 p0 = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   double worst = 0.0, scale = 0.0;
   Vec3 slab_velocity = Vec3::Zero();
   opt.on_sample = [&](const State& s) {
