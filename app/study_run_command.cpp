@@ -102,6 +102,12 @@ int study_run_command(const StudyRunArgs& args) {
   } catch (const ConfigError& e) {
     fmt::print(stderr, "ccm: error: {}\n", e.what());
     return exit_code::bad_input;
+  } catch (const db::StoreError& e) {  // mid-study: a full disk, a store that became unwritable
+    fmt::print(stderr,
+               "ccm: error: {}\nccm: the runs stored before it are kept; when the store can be "
+               "written again, the same command resumes the study\n",
+               e.what());
+    return exit_code::bad_input;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ccm: error: {}\n", e.what());
     return exit_code::internal_error;

@@ -3,11 +3,13 @@
 #include <hdf5.h>
 #include <unistd.h>
 
+#include <fstream>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "db/sqlite/connection.hpp"
+#include "db/sqlite/disk_space.hpp"
 
 namespace ccm::db {
 
@@ -73,19 +75,43 @@ void write_impactor(hid_t h5, const std::filesystem::path& tmp,
   write_dataset(group.get(), tmp, "vz", impactor.vz);
 }
 
-void write_file(const std::filesystem::path& tmp, const study::ArtifactHistory& history,
-                const study::ImpactorHistory& impactor) {
-  H5Handle h5(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+// The HDF5 file built in memory (the core driver, no backing store): HDF5 itself never writes to
+// disk, so that a full disk fails our write below with its reason, not HDF5's flush (whose failed
+// close left a file open that HDF5's own exit handler then crashed on).
+std::vector<char> file_image(const std::filesystem::path& tmp,
+                             const study::ArtifactHistory& history,
+                             const study::ImpactorHistory& impactor) {
+  H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!fapl.valid() || H5Pset_fapl_core(fapl.get(), 64 * 1024, 0) < 0)
+    fail(tmp, "cannot set up an in-memory HDF5 file");
+  H5Handle h5(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!h5.valid()) fail(tmp, "cannot create HDF5 file");
-  H5Handle group(H5Gcreate2(h5.get(), kArtifactGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                 H5Gclose);
-  if (!group.valid()) fail(tmp, std::string("cannot create group ") + kArtifactGroup);
-  write_dataset(group.get(), tmp, "time", history.time);
-  write_dataset(group.get(), tmp, "u_mean", history.u_mean);
-  write_dataset(group.get(), tmp, "u_max", history.u_max);
-  write_dataset(group.get(), tmp, "kinetic_energy", history.kinetic_energy);
+  {
+    H5Handle group(H5Gcreate2(h5.get(), kArtifactGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                   H5Gclose);
+    if (!group.valid()) fail(tmp, std::string("cannot create group ") + kArtifactGroup);
+    write_dataset(group.get(), tmp, "time", history.time);
+    write_dataset(group.get(), tmp, "u_mean", history.u_mean);
+    write_dataset(group.get(), tmp, "u_max", history.u_max);
+    write_dataset(group.get(), tmp, "kinetic_energy", history.kinetic_energy);
+  }
   if (!impactor.empty()) write_impactor(h5.get(), tmp, impactor);
   if (H5Fflush(h5.get(), H5F_SCOPE_GLOBAL) < 0) fail(tmp, "cannot flush HDF5 file");
+  const ssize_t size = H5Fget_file_image(h5.get(), nullptr, 0);
+  if (size <= 0) fail(tmp, "cannot take the HDF5 file's image");
+  std::vector<char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(h5.get(), image.data(), image.size()) != size)
+    fail(tmp, "cannot take the HDF5 file's image");
+  return image;
+}
+
+void write_file(const std::filesystem::path& tmp, const study::ArtifactHistory& history,
+                const study::ImpactorHistory& impactor) {
+  const std::vector<char> image = file_image(tmp, history, impactor);
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  out.write(image.data(), static_cast<std::streamsize>(image.size()));
+  out.close();
+  if (!out) fail(tmp, "cannot write the history file" + disk_full_note(tmp));
 }
 
 }  // namespace

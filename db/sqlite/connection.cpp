@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "db/sqlite/disk_space.hpp"
+
 namespace ccm::db {
 namespace {
 
@@ -88,7 +90,10 @@ int Connection::changes() const { return sqlite3_changes(db_); }
 bool Connection::in_transaction() const { return sqlite3_get_autocommit(db_) == 0; }
 
 void Connection::fail(std::string_view what) const {
-  throw StoreError(file_.string() + ": " + std::string(what) + ": " + sqlite3_errmsg(db_));
+  const int code = sqlite3_errcode(db_);
+  const bool write_failed = code == SQLITE_FULL || code == SQLITE_IOERR;
+  throw StoreError(file_.string() + ": " + std::string(what) + ": " + sqlite3_errmsg(db_) +
+                   (write_failed ? disk_full_note(file_) : ""));
 }
 
 }  // namespace ccm::db

@@ -1,0 +1,132 @@
+// The store under a full disk (issue: the store under faults): a study whose disk fills mid-run
+// stops with a message that names the store and says how to go on, keeps every run it completed,
+// leaves a store that passes SQLite's integrity check, and the same command resumes it to the
+// uninterrupted result. The full disk is injected (tests/support/disk_full_preload.c): writes
+// under the store's folder fail with ENOSPC once a budget of bytes is spent, placed at 60 % of
+// what the whole study writes into a store that already has its schema.
+#include <fmt/format.h>
+#include <sys/wait.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <sstream>
+
+#include "db/sqlite/connection.hpp"
+#include "db/sqlite/statement.hpp"
+#include "db/store/study_store.hpp"
+#include "tests/study/grid/grid_fixtures.hpp"
+#include "tests/support/temp_dir.hpp"
+
+using namespace ccm;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kFaultGrid = R"(title = "tiny"
+[axes]
+ER = [1.0, 100.0]
+RLS = [0.5]
+KE = [0.001]
+[time]
+contact_time = 0.02
+end = 0.03
+output_interval = 1e-3
+)" + std::string(test::kTinyGridBodies);
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Outcome {
+  int exit_code;
+  std::string err;
+};
+
+// `ccm study run` on the grid into db, with `environment` ("NAME=value ...") in front.
+Outcome run_study(const test::TempDir& tmp, const fs::path& grid, const fs::path& db,
+                  const std::string& environment = "") {
+  const fs::path err = tmp.path / "err.txt";
+  const int status =
+      std::system(fmt::format("{} '{}' study run '{}' --db '{}' --quiet > /dev/null 2> '{}'",
+                              environment, CCM_BINARY, grid.string(), db.string(), err.string())
+                      .c_str());
+  REQUIRE(WIFEXITED(status));  // never a crash
+  return {WEXITSTATUS(status), text_of(err)};
+}
+
+// Runs by status, over the study's points and both models.
+std::map<std::string, int> run_states(const fs::path& db) {
+  std::map<std::string, int> n;
+  db::StudyStore store(db, db::Access::read_only);
+  if (!store.open_existing_study()) return n;
+  for (const auto& p : store.status())
+    for (const auto& run : {p.ccm, p.rigid}) ++n[run ? std::string(db::to_string(*run)) : "none"];
+  return n;
+}
+
+std::string integrity(const fs::path& db) {
+  db::Connection c(db, db::Access::read_only);
+  db::Statement s(c, "PRAGMA integrity_check");
+  REQUIRE(s.step());
+  return s.column_text(0);
+}
+
+}  // namespace
+
+TEST_CASE("a study whose disk fills mid-run keeps its runs and resumes to the whole result",
+          "[study][cli]") {
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("tiny.toml", kFaultGrid);
+  const fs::path folder = tmp.path / "disk";
+  fs::create_directories(folder);
+  const std::string preload = fmt::format(
+      "LD_PRELOAD='{}' ASAN_OPTIONS=\"$ASAN_OPTIONS:verify_asan_link_order=0\" "
+      "CCM_TEST_DISK_DIR='{}'",
+      CCM_DISK_FULL_PRELOAD, fs::canonical(folder).string());
+
+  // Each store made first, with its schema (most of an empty store's bytes): the fault then
+  // falls among the runs, not in the migration.
+  const auto make_store = [](const fs::path& file) { db::StudyStore store(file); };
+
+  // The whole study, counting what it writes there.
+  const fs::path report = tmp.path / "bytes.txt";
+  const fs::path whole = folder / "whole.sqlite";
+  make_store(whole);
+  REQUIRE(run_study(tmp, grid, whole,
+                    preload + fmt::format(" CCM_TEST_DISK_REPORT='{}'", report.string()))
+              .exit_code == 0);
+  unsigned long long bytes = 0;
+  std::istringstream(text_of(report)) >> bytes;  // the first process: the study itself
+  REQUIRE(bytes > 0);
+  REQUIRE(run_states(whole)["completed"] == 4);
+
+  // The same study on a disk that fills at 60 % of that.
+  const fs::path db = folder / "full.sqlite";
+  make_store(db);
+  const Outcome full =
+      run_study(tmp, grid, db, preload + fmt::format(" CCM_TEST_DISK_BYTES={}", bytes * 6 / 10));
+  INFO(full.err);
+  CHECK(full.exit_code == 2);
+  CHECK_THAT(full.err, Catch::Contains("ccm: error: " + folder.string()));
+  CHECK_THAT(full.err, Catch::Contains("the same command resumes the study"));
+  CHECK(integrity(db) == "ok");
+  const int kept = run_states(db)["completed"];
+  CHECK(kept < 4);
+
+  // Space again: the same command completes it, each run once, as the uninterrupted study.
+  REQUIRE(run_study(tmp, grid, db).exit_code == 0);
+  const auto after = run_states(db);
+  CHECK(after.at("completed") == 4);
+  CHECK(after.size() == 1);  // no other state, no duplicate
+  CHECK(integrity(db) == "ok");
+  db::StudyStore a(whole, db::Access::read_only), b(db, db::Access::read_only);
+  REQUIRE(a.open_existing_study());
+  REQUIRE(b.open_existing_study());
+  const auto metrics_a = a.load_metrics(), metrics_b = b.load_metrics();
+  REQUIRE(metrics_a.size() == metrics_b.size());
+  for (std::size_t i = 0; i < metrics_a.size(); ++i)
+    CHECK(metrics_a[i].final_state.u_mean == metrics_b[i].final_state.u_mean);
+}
