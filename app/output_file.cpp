@@ -1,7 +1,10 @@
 #include "app/output_file.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -16,6 +19,17 @@ void write_atomic(const std::filesystem::path& file, std::string_view content) {
     if (!out) throw std::runtime_error(fmt::format("{}: write failed", tmp.string()));
   }
   std::filesystem::rename(tmp, file);
+}
+
+void require_writable_output(const std::filesystem::path& out, std::string_view option) {
+  std::error_code ec;
+  std::filesystem::path existing = std::filesystem::absolute(out, ec);
+  while (!existing.empty() && !std::filesystem::exists(existing, ec) &&
+         existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw std::invalid_argument(fmt::format("{} {}: {} is not writable ({})", option, out.string(),
+                                            existing.string(), std::strerror(errno)));
 }
 
 std::string toml_string(std::string_view s) {

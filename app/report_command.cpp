@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/command_errors.hpp"
+#include "app/output_file.hpp"
 #include "app/run_command.hpp"
 #include "app/study_commands.hpp"
 #include "app/study_store_open.hpp"
@@ -48,6 +49,7 @@ int report_command(const ReportArgs& args) {
     if (!(std::isfinite(args.max_error) && args.max_error > 0.0))
       throw StudyInputError(
           fmt::format("--max-error {}: must be a positive number", args.max_error));
+    require_writable_output(args.out, "--out");
     const reports::ReportData data = load_study(args.db);
     const auto content = reports::build_report(data, {args.max_error}, reports::current_stamp());
     reports::write_report(content, args.out);

@@ -1,7 +1,10 @@
 #include "db/sqlite/connection.hpp"
 
 #include <sqlite3.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <string>
 
 #include "db/sqlite/disk_space.hpp"
@@ -35,6 +38,24 @@ bool has_wal_file(const std::filesystem::path& file) {
   return std::filesystem::exists(file.string() + "-wal", ignored);
 }
 
+// A store a command will write must be writable, and so must its folder (SQLite keeps its -wal
+// and -shm files, or a rollback journal, beside it): said before SQLite's "attempt to write a
+// readonly database" surfaces from the first statement that writes.
+void require_writable(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::exists(file, ec) && ::access(file.c_str(), W_OK) != 0)
+    throw StoreError(file.string() + ": the store is read-only (" + std::strerror(errno) +
+                     "): a command that writes to it cannot use it; `ccm study status`, "
+                     "`ccm recommend` and `ccm report` read it as it is");
+  const std::filesystem::path folder =
+      file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  if (std::filesystem::is_directory(folder, ec) && ::access(folder.c_str(), W_OK) != 0)
+    throw StoreError(file.string() + ": its folder " + folder.string() + " is not writable (" +
+                     std::strerror(errno) +
+                     "): SQLite keeps the store's journal beside it; a command that writes "
+                     "to the store cannot use it there");
+}
+
 }  // namespace
 
 Connection::Connection(const std::filesystem::path& file, Access access, int busy_timeout_ms)
@@ -44,6 +65,8 @@ Connection::Connection(const std::filesystem::path& file, Access access, int bus
   if (access == Access::read_only) {
     name = read_only_uri(file, !has_wal_file(file));
     flags = SQLITE_OPEN_READONLY | SQLITE_OPEN_URI | SQLITE_OPEN_FULLMUTEX;
+  } else if (file != ":memory:") {
+    require_writable(file);
   }
   if (sqlite3_open_v2(name.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";

@@ -6,6 +6,7 @@
 // what the whole study writes into a store that already has its schema.
 #include <fmt/format.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <fstream>
@@ -129,4 +130,62 @@ TEST_CASE("a study whose disk fills mid-run keeps its runs and resumes to the wh
   REQUIRE(metrics_a.size() == metrics_b.size());
   for (std::size_t i = 0; i < metrics_a.size(); ++i)
     CHECK(metrics_a[i].final_state.u_mean == metrics_b[i].final_state.u_mean);
+}
+
+TEST_CASE("a read-only store or folder: writing commands say so and exit 2, reading ones read",
+          "[study][cli]") {
+  test::TempDir tmp;
+  const fs::path grid = tmp.write("tiny.toml", kFaultGrid);
+  const fs::path folder = tmp.path / "ro";
+  fs::create_directories(folder);
+  const fs::path db = folder / "s.sqlite";
+  REQUIRE(run_study(tmp, grid, db).exit_code == 0);
+  // As root every file is writable: the commands then run as the user nobody (setpriv, from
+  // util-linux), who reads the test's folders and owns nothing in them.
+  const bool root = geteuid() == 0;
+  const std::string as_user = root ? "setpriv --reuid=65534 --regid=65534 --clear-groups" : "";
+  using fs::perms;
+  fs::permissions(tmp.path, perms::owner_all | perms::group_read | perms::group_exec |
+                                perms::others_read | perms::others_exec);
+  const fs::path writable_out = tmp.path / "out";
+  fs::create_directories(writable_out);
+  fs::permissions(writable_out, perms::all);
+  const auto ccm_as_user = [&](const std::string& args) {
+    const fs::path err = writable_out / "err.txt";
+    const int status = std::system(
+        fmt::format("{} '{}' {} > /dev/null 2> '{}'", as_user, CCM_BINARY, args, err.string())
+            .c_str());
+    REQUIRE(WIFEXITED(status));
+    return Outcome{WEXITSTATUS(status), text_of(err)};
+  };
+  const perms read_only = perms::owner_read | perms::group_read | perms::others_read;
+  const perms read_exec = read_only | perms::owner_exec | perms::group_exec | perms::others_exec;
+  fs::permissions(db, read_only);
+  fs::permissions(folder / "s.histories", read_exec);
+  fs::permissions(folder, read_exec);
+  const std::string db_arg = fmt::format("--db '{}'", db.string());
+
+  const Outcome run = ccm_as_user(fmt::format("study run '{}' {} --quiet", grid.string(), db_arg));
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.err, Catch::Contains(db.string() + ": the store is read-only"));
+  const Outcome status = ccm_as_user("study status " + db_arg);
+  CHECK(status.exit_code == 0);
+  CHECK(status.err.empty());
+  const Outcome report_there =
+      ccm_as_user(fmt::format("report {} --out '{}'", db_arg, (folder / "report").string()));
+  CHECK(report_there.exit_code == 2);
+  CHECK_THAT(report_there.err, Catch::Contains("--out " + (folder / "report").string() + ": " +
+                                               folder.string() + " is not writable"));
+  CHECK_FALSE(fs::exists(folder / "report"));
+
+  // The store writable, its folder not (SQLite could not make its journal beside it).
+  if (root) CHECK(std::system(fmt::format("chown 65534 '{}'", db.string()).c_str()) == 0);
+  fs::permissions(db,
+                  perms::owner_read | perms::owner_write | perms::group_read | perms::others_read);
+  const Outcome in_folder =
+      ccm_as_user(fmt::format("study run '{}' {} --quiet", grid.string(), db_arg));
+  CHECK(in_folder.exit_code == 2);
+  CHECK_THAT(in_folder.err,
+             Catch::Contains(db.string() + ": its folder " + folder.string() + " is not writable"));
+  fs::permissions(folder, perms::owner_all);  // the temporary folder can be removed again
 }
