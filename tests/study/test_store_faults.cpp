@@ -150,11 +150,18 @@ TEST_CASE("a read-only store or folder: writing commands say so and exit 2, read
   const fs::path writable_out = tmp.path / "out";
   fs::create_directories(writable_out);
   fs::permissions(writable_out, perms::all);
+  // What the other user runs and reads lies in the test's folder: the build and the sources may
+  // lie where only their owner may look (a clone under /root).
+  const fs::path binary = writable_out / "ccm", supp = writable_out / "lsan.supp";
+  fs::copy_file(CCM_BINARY, binary);
+  fs::copy_file(fs::path(CCM_SOURCE_DIR) / "tests" / "lsan.supp", supp);
+  const std::string environment = fmt::format("LSAN_OPTIONS=suppressions='{}' CCM_MESH_CACHE='{}'",
+                                              supp.string(), (writable_out / "cache").string());
   const auto ccm_as_user = [&](const std::string& args) {
     const fs::path err = writable_out / "err.txt";
-    const int status = std::system(
-        fmt::format("{} '{}' {} > /dev/null 2> '{}'", as_user, CCM_BINARY, args, err.string())
-            .c_str());
+    const int status = std::system(fmt::format("{} {} '{}' {} > /dev/null 2> '{}'", environment,
+                                               as_user, binary.string(), args, err.string())
+                                       .c_str());
     REQUIRE(WIFEXITED(status));
     return Outcome{WEXITSTATUS(status), text_of(err)};
   };
