@@ -9,8 +9,12 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <csignal>
 #include <fstream>
+#include <random>
 #include <sstream>
+#include <thread>
 
 #include "db/sqlite/connection.hpp"
 #include "db/sqlite/statement.hpp"
@@ -195,4 +199,118 @@ TEST_CASE("a read-only store or folder: writing commands say so and exit 2, read
   CHECK_THAT(in_folder.err,
              Catch::Contains(db.string() + ": its folder " + folder.string() + " is not writable"));
   fs::permissions(folder, perms::owner_all);  // the temporary folder can be removed again
+}
+
+namespace {
+
+// How many rows the runs table holds, and how many share a point and a model (duplicates).
+std::pair<long, long> run_rows(const fs::path& db) {
+  db::Connection c(db, db::Access::read_only);
+  db::Statement all(c, "SELECT COUNT(*) FROM runs");
+  REQUIRE(all.step());
+  db::Statement twice(c,
+                      "SELECT COUNT(*) FROM (SELECT grid_point_id, model FROM runs GROUP BY "
+                      "grid_point_id, model HAVING COUNT(*) > 1)");
+  REQUIRE(twice.step());
+  return {all.column_int(0), twice.column_int(0)};
+}
+
+}  // namespace
+
+TEST_CASE("kill -9 at 50 random moments: the store stays whole and the study resumes to the end",
+          "[study][cli][validation]") {
+  test::TempDir tmp;
+  // 16 points x 2 models of the tiny bodies, each run a fraction of a second.
+  std::string text = kFaultGrid;
+  text.replace(text.find("ER = [1.0, 100.0]"), 17, "ER = [1.0, 10.0, 100.0, 1000.0]");
+  text.replace(text.find("RLS = [0.5]"), 11, "RLS = [0.5, 1.0]");
+  text.replace(text.find("KE = [0.001]"), 12, "KE = [0.001, 0.01]");
+  const fs::path grid = tmp.write("soak.toml", text);
+  const fs::path reference = tmp.path / "reference.sqlite";
+  REQUIRE(run_study(tmp, grid, reference).exit_code == 0);
+  REQUIRE(run_states(reference)["completed"] == 32);
+
+  std::mt19937 random(20261206);  // the moments are random, the test repeatable
+  std::uniform_int_distribution<int> delay_ms(0, 250);  // the study takes ~0.3 s
+  int store_number = 0, kills = 0, finished_stores = 0;
+  fs::path db;
+  int completed_before = 0;
+  while (kills < 50) {
+    if (db.empty() || (fs::exists(db) && run_states(db)["completed"] == 32)) {  // a fresh store
+      if (!db.empty()) ++finished_stores;
+      db = tmp.path / fmt::format("soak{}.sqlite", store_number++);
+      completed_before = 0;
+    }
+    const std::string command =
+        fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null 2>&1", CCM_BINARY,
+                    grid.string(), db.string());
+    const pid_t pid = fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+      execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(random)));
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ++kills;
+    if (!fs::exists(db)) continue;  // killed before it made the store
+    INFO("kill " << kills << " on " << db.filename().string());
+    REQUIRE(integrity(db) == "ok");
+    const auto [rows, duplicated] = run_rows(db);
+    CHECK(duplicated == 0);
+    CHECK(rows <= 32);
+    const int completed = run_states(db)["completed"];
+    CHECK(completed >= completed_before);  // no completed run lost
+    completed_before = completed;
+  }
+  // The last store resumed to the end equals the uninterrupted study.
+  REQUIRE(run_study(tmp, grid, db).exit_code == 0);
+  CHECK(run_states(db)["completed"] == 32);
+  CHECK(run_rows(db).second == 0);
+  db::StudyStore a(reference, db::Access::read_only), b(db, db::Access::read_only);
+  REQUIRE(a.open_existing_study());
+  REQUIRE(b.open_existing_study());
+  const auto metrics_a = a.load_metrics(), metrics_b = b.load_metrics();
+  REQUIRE(metrics_a.size() == metrics_b.size());
+  for (std::size_t i = 0; i < metrics_a.size(); ++i)
+    CHECK(metrics_a[i].final_state.u_mean == metrics_b[i].final_state.u_mean);
+  WARN(kills << " kills over " << store_number << " stores, " << finished_stores
+             << " of them finished between kills");
+}
+
+TEST_CASE("ccm study status reads a store while a study writes it", "[study][cli]") {
+  test::TempDir tmp;
+  std::string text = kFaultGrid;
+  text.replace(text.find("ER = [1.0, 100.0]"), 17,
+               "ER = [1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0]");
+  text.replace(text.find("RLS = [0.5]"), 11, "RLS = [0.5, 0.75, 1.0, 1.25]");
+  const fs::path grid = tmp.write("busy.toml", text), db = tmp.path / "busy.sqlite";
+  const std::string command = fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null",
+                                          CCM_BINARY, grid.string(), db.string());
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int reads_during = 0, status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (!fs::exists(db)) continue;
+    const fs::path err = tmp.path / "status-err.txt";
+    const int code = std::system(fmt::format("'{}' study status --db '{}' > /dev/null 2> '{}'",
+                                             CCM_BINARY, db.string(), err.string())
+                                     .c_str());
+    const std::string message = text_of(err);
+    // A store made a moment ago may not hold its study yet; anything else must read.
+    if (message.find("holds no study yet") != std::string::npos) continue;
+    INFO(message);
+    CHECK(WEXITSTATUS(code) == 0);
+    ++reads_during;
+  }
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(run_states(db)["completed"] == 64);
+  CHECK(reads_during >= 2);
 }
