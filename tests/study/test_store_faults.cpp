@@ -314,3 +314,77 @@ TEST_CASE("ccm study status reads a store while a study writes it", "[study][cli
   CHECK(run_states(db)["completed"] == 64);
   CHECK(reads_during >= 2);
 }
+
+namespace {
+
+// The resident set of a process and its children, in kB (0 once it has exited).
+long resident_kb(pid_t pid) {
+  long total = 0;
+  std::ifstream status(fmt::format("/proc/{}/status", pid));
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmRSS:", 0) == 0) total += std::stol(line.substr(6));
+  std::ifstream children(fmt::format("/proc/{}/task/{}/children", pid, pid));
+  for (pid_t child; children >> child;) total += resident_kb(child);
+  return total;
+}
+
+long completed_rows(const fs::path& db) {
+  try {
+    db::Connection c(db, db::Access::read_only);
+    db::Statement s(c, "SELECT COUNT(*) FROM runs WHERE status = 'completed'");
+    return s.step() ? s.column_int(0) : 0;
+  } catch (const db::StoreError&) {
+    return 0;  // not made yet
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a study of 1000 small runs holds its memory flat at a few ms of overhead per run",
+          "[study][cli][validation]") {
+  test::TempDir tmp;
+  std::string text = kFaultGrid;  // 10 x 10 x 5 points x 2 models
+  text.replace(text.find("ER = [1.0, 100.0]"), 17,
+               "ER = [1.0, 1.5, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 30.0]");
+  text.replace(text.find("RLS = [0.5]"), 11,
+               "RLS = [0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4]");
+  text.replace(text.find("KE = [0.001]"), 12, "KE = [0.001, 0.002, 0.003, 0.004, 0.005]");
+  const fs::path grid = tmp.write("long.toml", text), db = tmp.path / "long.sqlite";
+  const std::string command = fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null",
+                                          CCM_BINARY, grid.string(), db.string());
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // The largest resident set seen while the first 100 runs, and the last 100, were under way.
+  long first_peak = 0, last_peak = 0;
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    const long rss = resident_kb(pid), done = completed_rows(db);
+    if (done < 100) first_peak = std::max(first_peak, rss);
+    if (done >= 900 && done < 1000) last_peak = std::max(last_peak, rss);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == 0);
+  db::Connection c(db, db::Access::read_only);
+  db::Statement runs(c, "SELECT COUNT(*), SUM(wall_seconds) FROM runs WHERE status = 'completed'");
+  REQUIRE(runs.step());
+  REQUIRE(runs.column_int(0) == 1000);
+  // Everything but the runs' own step loops, per run: start-up, meshing, the store's writes and
+  // the study's fits at the end, all charged to the runs.
+  const double overhead = (wall - runs.column_double(1)) / 1000.0;
+  INFO("first 100 runs: " << first_peak << " kB, last 100: " << last_peak << " kB; overhead "
+                          << overhead * 1e3 << " ms per run over " << wall << " s");
+  REQUIRE(first_peak > 0);
+  REQUIRE(last_peak > 0);
+  CHECK(static_cast<double>(last_peak) <= 1.10 * static_cast<double>(first_peak));
+  CHECK(overhead < 0.050);
+  WARN("first 100 runs " << first_peak << " kB, last 100 " << last_peak << " kB; overhead "
+                         << overhead * 1e3 << " ms per run (" << wall << " s in all)");
+}
