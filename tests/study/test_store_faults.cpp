@@ -27,16 +27,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kFaultGrid = R"(title = "tiny"
-[axes]
-ER = [1.0, 100.0]
-RLS = [0.5]
-KE = [0.001]
-[time]
-contact_time = 0.02
-end = 0.03
-output_interval = 1e-3
-)" + std::string(test::kTinyGridBodies);
+const std::string kFaultGrid = test::tiny_study_grid();
 
 std::string text_of(const fs::path& file) {
   std::ifstream in(file);
@@ -77,6 +68,30 @@ std::string integrity(const fs::path& db) {
   db::Statement s(c, "PRAGMA integrity_check");
   REQUIRE(s.step());
   return s.column_text(0);
+}
+
+// Starts `sh -c command` as a child process (to be killed or waited for).
+pid_t spawn_shell(const std::string& command) {
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+// The two stores' metrics are the same, point by point, bit for bit (deterministic runs).
+void require_same_metrics(const fs::path& a_file, const fs::path& b_file) {
+  db::StudyStore a(a_file, db::Access::read_only), b(b_file, db::Access::read_only);
+  REQUIRE(a.open_existing_study());
+  REQUIRE(b.open_existing_study());
+  const auto metrics_a = a.load_metrics(), metrics_b = b.load_metrics();
+  REQUIRE(metrics_a.size() == metrics_b.size());
+  for (std::size_t i = 0; i < metrics_a.size(); ++i) {
+    CHECK(metrics_a[i].final_state.u_mean == metrics_b[i].final_state.u_mean);
+    CHECK(metrics_a[i].final_state.kinetic_energy == metrics_b[i].final_state.kinetic_energy);
+  }
 }
 
 }  // namespace
@@ -127,13 +142,7 @@ TEST_CASE("a study whose disk fills mid-run keeps its runs and resumes to the wh
   CHECK(after.at("completed") == 4);
   CHECK(after.size() == 1);  // no other state, no duplicate
   CHECK(integrity(db) == "ok");
-  db::StudyStore a(whole, db::Access::read_only), b(db, db::Access::read_only);
-  REQUIRE(a.open_existing_study());
-  REQUIRE(b.open_existing_study());
-  const auto metrics_a = a.load_metrics(), metrics_b = b.load_metrics();
-  REQUIRE(metrics_a.size() == metrics_b.size());
-  for (std::size_t i = 0; i < metrics_a.size(); ++i)
-    CHECK(metrics_a[i].final_state.u_mean == metrics_b[i].final_state.u_mean);
+  require_same_metrics(whole, db);
 }
 
 TEST_CASE("a read-only store or folder: writing commands say so and exit 2, reading ones read",
@@ -244,12 +253,7 @@ TEST_CASE("kill -9 at 50 random moments: the store stays whole and the study res
     const std::string command =
         fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null 2>&1", CCM_BINARY,
                     grid.string(), db.string());
-    const pid_t pid = fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-      execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-      _exit(127);
-    }
+    const pid_t pid = spawn_shell(command);
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(random)));
     kill(pid, SIGKILL);
     int status = 0;
@@ -269,13 +273,7 @@ TEST_CASE("kill -9 at 50 random moments: the store stays whole and the study res
   REQUIRE(run_study(tmp, grid, db).exit_code == 0);
   CHECK(run_states(db)["completed"] == 32);
   CHECK(run_rows(db).second == 0);
-  db::StudyStore a(reference, db::Access::read_only), b(db, db::Access::read_only);
-  REQUIRE(a.open_existing_study());
-  REQUIRE(b.open_existing_study());
-  const auto metrics_a = a.load_metrics(), metrics_b = b.load_metrics();
-  REQUIRE(metrics_a.size() == metrics_b.size());
-  for (std::size_t i = 0; i < metrics_a.size(); ++i)
-    CHECK(metrics_a[i].final_state.u_mean == metrics_b[i].final_state.u_mean);
+  require_same_metrics(reference, db);
   WARN(kills << " kills over " << store_number << " stores, " << finished_stores
              << " of them finished between kills");
 }
@@ -289,12 +287,7 @@ TEST_CASE("ccm study status reads a store while a study writes it", "[study][cli
   const fs::path grid = tmp.write("busy.toml", text), db = tmp.path / "busy.sqlite";
   const std::string command = fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null",
                                           CCM_BINARY, grid.string(), db.string());
-  const pid_t pid = fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
+  const pid_t pid = spawn_shell(command);
   int reads_during = 0, status = 0;
   while (waitpid(pid, &status, WNOHANG) == 0) {
     if (!fs::exists(db)) continue;
@@ -353,12 +346,7 @@ TEST_CASE("a study of 1000 small runs holds its memory flat at a few ms of overh
   const std::string command = fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null",
                                           CCM_BINARY, grid.string(), db.string());
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
+  const pid_t pid = spawn_shell(command);
   // The largest resident set seen while the first 100 runs, and the last 100, were under way.
   long first_peak = 0, last_peak = 0;
   int status = 0;

@@ -25,18 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Two points x two models, each run well under a second: coarse meshes, 30 ms of simulated
-// time, first touch at 20 ms.
-const std::string kTinyGrid = R"(title = "tiny"
-[axes]
-ER = [1.0, 100.0]
-RLS = [0.5]
-KE = [0.001]
-[time]
-contact_time = 0.02
-end = 0.03
-output_interval = 1e-3
-)" + std::string(test::kTinyGridBodies);
+const std::string kTinyGrid = test::tiny_study_grid();
 
 std::string read_file(const fs::path& file) {
   std::ifstream in(file);

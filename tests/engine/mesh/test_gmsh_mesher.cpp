@@ -422,3 +422,18 @@ TEST_CASE("read_msh_file: ignores a sibling .opt script", "[mesh][gmsh]") {
   dir.write("two.msh.opt", "Error(\"the .opt file was run\");\n");
   CHECK(ccm::read_msh_file(mesh).tets.size() == 2);
 }
+
+TEST_CASE("read_msh_file: a file that crashes Gmsh's reader is a MeshError, not a crash",
+          "[mesh][gmsh]") {
+  // Found by fuzz/fuzz_msh_mesh.cpp (tests/data/fuzz/README.md): Gmsh 4.8 dies of SIGSEGV reading
+  // it; ccm reads .msh files in a child process and names the file.
+  const fs::path file =
+      fs::path(CCM_SOURCE_DIR) / "tests/data/fuzz/fuzz_msh_mesh/gmsh-reader-segfault.msh";
+  CHECK_THROWS_WITH(ccm::read_msh_file(file),
+                    Contains(file.string() + ": Gmsh's reader crashed on the file (signal"));
+  // A good file still reads through the child: the hand-made two-tet file's mesh comes back whole.
+  const TempDir dir;
+  const TetMesh m = ccm::read_msh_file(dir.write("two.msh", kHandMadeMsh));
+  CHECK(m.tets.size() == 2);
+  CHECK(m.named_surfaces.size() == 2);
+}

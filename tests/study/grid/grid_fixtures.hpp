@@ -52,6 +52,21 @@ mesh_size_ratio = 0.5
 penalty = 1.0e6
 )";
 
+// Two points x two models of kTinyGridBodies, each run well under a second: coarse meshes, 30 ms
+// of simulated time, first touch at 20 ms.
+inline std::string tiny_study_grid() {
+  return R"(title = "tiny"
+[axes]
+ER = [1.0, 100.0]
+RLS = [0.5]
+KE = [0.001]
+[time]
+contact_time = 0.02
+end = 0.03
+output_interval = 1e-3
+)" + std::string(kTinyGridBodies);
+}
+
 // kTinyGridBodies' bodies on a stiffer plate (E_A 1e5 Pa), hit harder, as whole impacts: each
 // run ends 5 ms after its bodies separate, the guard `end` (0.4 s) far beyond the impact. The
 // rigid run separates near 0.05 s; at ER 1 the CCM run near 0.24 s. `extra_axes` (lines such as
