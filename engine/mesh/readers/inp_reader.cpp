@@ -23,6 +23,7 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxIncludeDepth = 10;
 constexpr long kMaxGenerated = 100'000'000;
+constexpr std::size_t kMaxSetLabels = 20'000'000;  // in all the deck's sets together
 
 // Faces of a C3D4 (Abaqus element library, "solid element faces"): S1 = 1-2-3, S2 = 1-4-2,
 // S3 = 2-4-3, S4 = 3-4-1.
@@ -414,13 +415,25 @@ class InpParser {
     for (const auto field : fields) {
       if (field.empty()) continue;
       if (parse_integer(field)) {
+        book_set_labels(i, 1);
         set_->labels.push_back(label(i, field, "label"));
       } else {
         const LabelSet& other = existing(sets, field, i);
-        const std::vector<long> copy = other.labels;  // other may be *set_ itself
-        set_->labels.insert(set_->labels.end(), copy.begin(), copy.end());
+        if (&other == set_) continue;  // a set naming itself adds nothing
+        book_set_labels(i, other.labels.size());
+        set_->labels.insert(set_->labels.end(), other.labels.begin(), other.labels.end());
       }
     }
+  }
+
+  // Sets that name sets can grow geometrically (B = A, A, A; C = B, B, B ...): refused past a
+  // bound on the labels of all sets together, before the memory runs out (found by fuzzing).
+  void book_set_labels(int i, std::size_t count) {
+    set_labels_ += count;
+    if (set_labels_ > kMaxSetLabels)
+      fail(i, fmt::format("the sets hold more than {} labels in all (sets that name sets many "
+                          "times over); ccm refuses the deck",
+                          kMaxSetLabels));
   }
 
   void generate(int i, const std::vector<std::string_view>& fields) {
@@ -432,6 +445,7 @@ class InpParser {
     if (last < first) fail(i, fmt::format("GENERATE: last label {} < first {}", last, first));
     if ((last - first) / step > kMaxGenerated)
       fail(i, fmt::format("GENERATE: more than {} labels", kMaxGenerated));
+    book_set_labels(i, static_cast<std::size_t>((last - first) / step + 1));
     for (long l = first; l <= last; l += step) set_->labels.push_back(l);
   }
 
@@ -539,6 +553,7 @@ class InpParser {
   };
   std::map<std::string, OtherSolids> other_solids_;  // by element type
   size_t other_solid_fields_ = 0;
+  std::size_t set_labels_ = 0;  // in all sets, for kMaxSetLabels
   std::string surface_name_;
   LabelSet* set_ = nullptr;
   std::vector<std::string_view> pending_;

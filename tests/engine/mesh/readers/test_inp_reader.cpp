@@ -200,3 +200,15 @@ TEST_CASE("inp: nodes at one position in one part are refused (the mesh is cut t
                                 "5, 1, 1, 1\n*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n");
   CHECK(read_inp_file(joined).report.notes.empty());
 }
+
+TEST_CASE("inp: a set that names itself adds nothing (it once doubled at every line)",
+          "[mesh][inp]") {
+  // Found by fuzzing (tests/data/fuzz/README.md): 40 lines of "A, A" made set A hold 2^40 labels.
+  test::TempDir dir;
+  std::string deck =
+      "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
+      "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*NSET, NSET=A\n1, 2, 3\n*NSET, NSET=A\n";
+  for (int k = 0; k < 40; ++k) deck += "A, A\n";
+  const MeshFile m = read_inp_file(dir.write("self.inp", deck));
+  CHECK(m.mesh.named_node_sets.at("A") == std::vector<int>{0, 1, 2});
+}
