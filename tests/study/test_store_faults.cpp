@@ -70,6 +70,17 @@ std::string integrity(const fs::path& db) {
   return s.column_text(0);
 }
 
+// 10 x 10 x 5 points x 2 models of the tiny bodies: 1,000 runs in a few seconds.
+std::string thousand_run_grid() {
+  std::string text = kFaultGrid;
+  text.replace(text.find("ER = [1.0, 100.0]"), 17,
+               "ER = [1.0, 1.5, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 30.0]");
+  text.replace(text.find("RLS = [0.5]"), 11,
+               "RLS = [0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4]");
+  text.replace(text.find("KE = [0.001]"), 12, "KE = [0.001, 0.002, 0.003, 0.004, 0.005]");
+  return text;
+}
+
 // Starts `sh -c command` as a child process (to be killed or waited for).
 pid_t spawn_shell(const std::string& command) {
   const pid_t pid = fork();
@@ -336,12 +347,7 @@ long completed_rows(const fs::path& db) {
 TEST_CASE("a study of 1000 small runs holds its memory flat at a few ms of overhead per run",
           "[study][cli][validation]") {
   test::TempDir tmp;
-  std::string text = kFaultGrid;  // 10 x 10 x 5 points x 2 models
-  text.replace(text.find("ER = [1.0, 100.0]"), 17,
-               "ER = [1.0, 1.5, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 30.0]");
-  text.replace(text.find("RLS = [0.5]"), 11,
-               "RLS = [0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4]");
-  text.replace(text.find("KE = [0.001]"), 12, "KE = [0.001, 0.002, 0.003, 0.004, 0.005]");
+  const std::string text = thousand_run_grid();
   const fs::path grid = tmp.write("long.toml", text), db = tmp.path / "long.sqlite";
   const std::string command = fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null",
                                           CCM_BINARY, grid.string(), db.string());
@@ -380,12 +386,7 @@ TEST_CASE("a study of 1000 small runs holds its memory flat at a few ms of overh
 TEST_CASE("ccm report and recommend read a store while a 1000-run study writes it",
           "[study][cli][validation]") {
   test::TempDir tmp;
-  std::string text = kFaultGrid;  // 10 x 10 x 5 points x 2 models: a few seconds
-  text.replace(text.find("ER = [1.0, 100.0]"), 17,
-               "ER = [1.0, 1.5, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 30.0]");
-  text.replace(text.find("RLS = [0.5]"), 11,
-               "RLS = [0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4]");
-  text.replace(text.find("KE = [0.001]"), 12, "KE = [0.001, 0.002, 0.003, 0.004, 0.005]");
+  const std::string text = thousand_run_grid();
   const fs::path grid = tmp.write("busy.toml", text), db = tmp.path / "busy.sqlite";
   const pid_t pid =
       spawn_shell(fmt::format("exec '{}' study run '{}' --db '{}' --quiet > /dev/null", CCM_BINARY,
