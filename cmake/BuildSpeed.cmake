@@ -16,9 +16,20 @@ set(CMAKE_UNITY_BUILD_BATCH_SIZE ${CCM_UNITY_BUILD_BATCH_SIZE})
 # own options sets SKIP_PRECOMPILE_HEADERS (engine/CMakeLists.txt).
 set(CCM_LIBRARY_PCH_HEADERS <Eigen/Core> <Eigen/Geometry> <fmt/format.h> <algorithm> <array>
   <cmath> <filesystem> <map> <memory> <optional> <string> <string_view> <vector>)
+# Under CCM_FUZZ a library instrumented for coverage cannot read a header precompiled without it
+# (clang refuses it): those libraries share one precompiled with it, ccm_fuzz_pch's.
 function(ccm_library_pch target)
   if(target STREQUAL "ccm_engine")
     target_precompile_headers(ccm_engine PRIVATE ${CCM_LIBRARY_PCH_HEADERS})
+  elseif(CCM_FUZZ AND target IN_LIST CCM_FUZZ_COVERED_LIBRARIES)
+    if(NOT TARGET ccm_fuzz_pch)
+      file(WRITE ${PROJECT_BINARY_DIR}/ccm_fuzz_pch.cpp "")
+      add_library(ccm_fuzz_pch OBJECT ${PROJECT_BINARY_DIR}/ccm_fuzz_pch.cpp)
+      target_link_libraries(ccm_fuzz_pch PRIVATE Eigen3::Eigen fmt::fmt)
+      target_compile_options(ccm_fuzz_pch PRIVATE -fsanitize=fuzzer-no-link)
+      target_precompile_headers(ccm_fuzz_pch PRIVATE ${CCM_LIBRARY_PCH_HEADERS})
+    endif()
+    target_precompile_headers(${target} REUSE_FROM ccm_fuzz_pch)
   else()
     target_precompile_headers(${target} REUSE_FROM ccm_engine)
   endif()

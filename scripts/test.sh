@@ -28,7 +28,7 @@ CCM_MESH_CACHE="$cache_root/optimised" scripts/unit-shards.sh build "~[validatio
 
 phase "sanitizer build (build-asan/: clang, AddressSanitizer + UBSan, and the fuzz targets)"
 # clang-14 at -O1 -g1 (line tables only, for the sanitizers' stack traces), with the libFuzzer
-# targets of fuzz/ (CCM_FUZZ: every library instrumented for coverage too; docs/fuzzing.md).
+# targets of fuzz/ (CCM_FUZZ: the readers' libraries instrumented for coverage; docs/fuzzing.md).
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCCM_SANITIZE=ON -DCCM_FUZZ=ON \
   -DCCM_BUILD_BENCH=OFF -DCCM_UNITY_BUILD=ON >/dev/null
