@@ -58,7 +58,8 @@ double thread_seconds() { return seconds_on(g_clock); }
 // whole steps (`loop`: from one begin_step to the next, and the last one to its end_step).
 class TimedContact : public ContactModel {
  public:
-  explicit TimedContact(ContactModel& inner) : ContactModel(inner.name(), inner.phases()), inner_(inner) {}
+  explicit TimedContact(ContactModel& inner)
+      : ContactModel(inner.name(), inner.phases()), inner_(inner) {}
   void begin_step(const State& s, double dt) override {
     const double now = thread_seconds();
     if (step_start_ >= 0.0) loop += now - step_start_;
@@ -81,6 +82,9 @@ class TimedContact : public ContactModel {
     ContactStepBound bound;
     timed([&] { bound = inner_.step_bound(s, ceiling); });
     return bound;
+  }
+  double corrected_elements_stable_dt() const override {
+    return inner_.corrected_elements_stable_dt();
   }
   // Closes the last step.
   void finish() {

@@ -66,6 +66,9 @@ class Timed : public ContactModel {
     self->timed(self->phase[2], [&] { b = inner_.step_bound(s, ceiling); });
     return b;
   }
+  double corrected_elements_stable_dt() const override {
+    return inner_.corrected_elements_stable_dt();
+  }
   double seconds = 0.0;
   double phase[4] = {0.0, 0.0, 0.0, 0.0};  // begin_step, add_forces, step_bound, end_step
   long point_steps = 0;

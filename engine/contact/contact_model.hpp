@@ -93,6 +93,12 @@ class ContactModel {
   // the step the engine takes without the contact's kinematic bound: a kinematic_dt at or above
   // it does not change the step, so a model may return infinity instead of computing it.
   virtual ContactStepBound step_bound(const State& state, double ceiling) const = 0;
+  // The structure's stable step (without safety factor) of the elements whose nodes correct()
+  // moved, at their corrected positions; infinite when it moved none. The element kernel measured
+  // the structure's step before the correction, so the next step takes the smaller of the two.
+  // A model that moves no node (a force model) returns infinity; a model that wraps others
+  // forwards it (pure, so that none forgets).
+  virtual double corrected_elements_stable_dt() const = 0;
 
   // A partitioned run offers its team to the replicated model (replica_team.hpp): for whole
   // bodies and for loops split among the ranks. A model that reads only its contact surfaces and

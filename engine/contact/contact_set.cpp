@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -71,6 +72,12 @@ ContactStepBound ContactSet::step_bound(const State& state, double ceiling) cons
   }
   if (inverse_square > 0.0) bound.stiffness_dt = 1.0 / std::sqrt(inverse_square);
   return bound;
+}
+
+double ContactSet::corrected_elements_stable_dt() const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (const auto& m : members_) dt = std::min(dt, m->corrected_elements_stable_dt());
+  return dt;
 }
 
 void ContactSet::use_replica_team(ReplicaTeam& team) {

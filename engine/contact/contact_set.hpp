@@ -34,6 +34,7 @@ class ContactSet final : public ContactModel {
   // member order, named by that member.
   void end_step(const State& state, double dt) override;
   ContactStepBound step_bound(const State& state, double ceiling) const override;
+  double corrected_elements_stable_dt() const override;  // the members' smallest
   void use_replica_team(ReplicaTeam& team) override;
   void add_held_impulses(std::vector<HeldImpulse>& per_body) const override;
 

@@ -67,6 +67,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -122,6 +123,10 @@ class RigidSpherePenalty : public ContactModel, public HistorySource {
   // The springs' stiffness bound of the points that can act within the step, or the time until
   // the next point can arrive (a kinematic bound); see the .cpp and docs/contact-time-step.md.
   ContactStepBound step_bound(const State& state, double ceiling) const override;
+  // Forces only: it moves no node.
+  double corrected_elements_stable_dt() const override {
+    return std::numeric_limits<double>::infinity();
+  }
   // Work of the contact forces on the body's nodes, trapezoidal over each step:
   // sum 1/2 (f_n + f_{n+1}) . (x_{n+1} - x_n) [J].
   double work() const { return work_body_; }

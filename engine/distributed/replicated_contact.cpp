@@ -220,6 +220,11 @@ ContactStepBound ReplicatedContact::step_bound(const State& state, double ceilin
   return bound;
 }
 
+// Every rank projects the same contacts on its replica: the same step on every rank.
+double ReplicatedContact::corrected_elements_stable_dt() const {
+  return inner_.corrected_elements_stable_dt();
+}
+
 void ReplicatedContact::begin_step(const State& state, double dt) {
   view_.t = state.t;
   if (!started_) {

@@ -48,6 +48,7 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   // Takes the inner model's ledger (the monitor's checks read it).
   void end_step(const State& state, double dt) override;
   ContactStepBound step_bound(const State& state, double ceiling) const override;
+  double corrected_elements_stable_dt() const override;
   // The nodes beyond the region, from their owners, for the rest of this step's correct().
   void make_whole_bodies_current() override;
   // The listed nodes beyond the region, from their owners, for the rest of this step's correct().

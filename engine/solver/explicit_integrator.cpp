@@ -316,6 +316,10 @@ void CentralDifference::couple_evaluation(bool with_energy) {
 // Step 3; a rigid body takes the impulses the contact gave the nodes it held (rigid_bodies.hpp).
 void CentralDifference::correct_contact(double dt) {
   opt_.contact->correct(s_, dt);
+  // The next step starts from the corrected positions: where the correction squeezed elements,
+  // their stable step is shorter than the one measured before it (docs/time-step.md).
+  last_eval_.stable_dt =
+      std::min(last_eval_.stable_dt, opt_.contact->corrected_elements_stable_dt());
   if (rigid_.empty()) return;
   held_.assign(model_.mesh.bodies.size(), HeldImpulse{});
   opt_.contact->add_held_impulses(held_);

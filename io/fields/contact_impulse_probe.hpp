@@ -31,7 +31,13 @@ class ContactImpulseProbe : public ContactModel {
   ContactStepBound step_bound(const State& s, double ceiling) const override {
     return inner_.step_bound(s, ceiling);
   }
+  double corrected_elements_stable_dt() const override {
+    return inner_.corrected_elements_stable_dt();
+  }
   void use_replica_team(ReplicaTeam& team) override { inner_.use_replica_team(team); }
+  void add_held_impulses(std::vector<HeldImpulse>& per_body) const override {
+    inner_.add_held_impulses(per_body);
+  }
 
   const std::vector<int>& nodes() const { return nodes_; }
   // The impulse on nodes()[k] since the last reset [N s].

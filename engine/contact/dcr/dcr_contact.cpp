@@ -609,6 +609,7 @@ void DcrContact::enforce_positions(State& s, double dt) {
     const ProjectionUpdate::EnergyChange dE =
         projection_update_.apply(moved_, x_start_, s, inv_m_, dt);
     projection_stored_ = dE.stored;
+    projected_stable_dt_ = dE.stable_dt;
     work_ += dE.total();
     parts_.projection += dE.total();
   }
@@ -619,6 +620,7 @@ void DcrContact::correct(State& s, double dt) {
   if (report) output_.begin(s);
   detect(s);
   last_impulse_ = projection_stored_ = 0.0;
+  projected_stable_dt_ = std::numeric_limits<double>::infinity();
   active_ = sweeps_ = 0;
   pair_impulses_.clear();
   near_.clear();

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -86,6 +87,9 @@ class DcrContact : public ContactModel, public HistorySource {
   void end_step(const State& state, double dt) override;
   // A kinematic bound only, per candidate pair (docs/contact-time-step.md, "DCR").
   ContactStepBound step_bound(const State& state, double ceiling) const override;
+  // The stable step of the elements around the nodes this step's projection moved, there
+  // (projection_update.hpp).
+  double corrected_elements_stable_dt() const override { return projected_stable_dt_; }
   // A partitioned run's team: whole bodies for the restitution; the loops over the surface nodes
   // (the bodies' boxes and reach, the broad phase's sweep) split among the ranks.
   void use_replica_team(ReplicaTeam& team) override;
@@ -197,6 +201,7 @@ class DcrContact : public ContactModel, public HistorySource {
   ContactImpulses impulses_;
   PairRestitution restitution_;
   ProjectionUpdate projection_update_;
+  double projected_stable_dt_ = std::numeric_limits<double>::infinity();
   ContactOutput output_;
   std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
   std::vector<bool> anchored_;              // per body: holds a held node

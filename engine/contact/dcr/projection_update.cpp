@@ -1,7 +1,9 @@
 #include "engine/contact/dcr/projection_update.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
+#include "engine/element/stable_step.hpp"
 #include "engine/material/linear_elastic.hpp"
 #include "engine/material/neo_hookean.hpp"
 
@@ -56,7 +58,8 @@ ProjectionUpdate::ProjectionUpdate(const ModelMesh& mesh, std::span<const int> m
     const auto reference = make_tet_reference(X[t[0]], X[t[1]], X[t[2]], X[t[3]]);
     if (!reference) throw std::invalid_argument("projection update: degenerate reference tet");
     const Body& body = mesh.bodies[static_cast<size_t>(mesh.element_body[static_cast<size_t>(e)])];
-    elements_.push_back({t, *reference, body.material.model, element_lame(body)});
+    elements_.push_back({t, *reference, body.material.model, element_lame(body),
+                         lame_from(body.material), body.material.rho});
     prepared.push_back(t);
   }
   around_ =
@@ -110,6 +113,10 @@ ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> move
         df[c].setZero();
       }
       dE.stored += evaluate(e, x_new, 1.0, df) - evaluate(e, x_old, -1.0, df);
+      dE.stable_dt =
+          std::min(dE.stable_dt,
+                   element_stable_dt(e.model, edge_matrix(x_new[0], x_new[1], x_new[2], x_new[3]),
+                                     e.reference.Dm_inv, e.stiffness, e.rho0));
       for (int c = 0; c < 4; ++c) {
         const auto i = static_cast<size_t>(e.nodes[c]);
         if (inv_m[i] == 0.0) continue;  // fixed: the boundary condition keeps it at rest

@@ -21,6 +21,7 @@
 // is NodalPressureUpdate's (nodal_pressure_update.hpp).
 #pragma once
 
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -43,10 +44,17 @@ class ProjectionUpdate {
     double stored = 0.0;   // dQ [J]
     double kinetic = 0.0;  // dK [J]
     double total() const { return stored + kinetic; }
+    // The smallest stable step of the re-evaluated elements at their new positions
+    // (element_stable_dt; infinite when none). The structure's step was measured before the
+    // projection moved their nodes: a projection that squeezes a thin wall between two contacts
+    // shortens it (to 0.58 of the measured one in the crushed pipe of docs/hard-scenes.md), and
+    // the next step must not exceed it. For a nodal-pressure body this is the plain tet's bound at
+    // the element's own J (the kernel's next evaluation applies the body's nodal one).
+    double stable_dt = std::numeric_limits<double>::infinity();
   };
   // The nodes `moved` (unique) went from `before` (same order) to their positions in s.x: adds
   // the force change divided by the node's mass into s.a (inv_m: 1/m, 0 for fixed nodes) and
-  // returns dQ and dK for the step dt.
+  // returns dQ and dK for the step dt, and the stable step of the elements around them.
   EnergyChange apply(std::span<const int> moved, std::span<const Vec3> before, State& s,
                      std::span<const double> inv_m, double dt);
   // The nodes of the plain-tet elements apply() re-evaluates for `moved` (repeats possible): what
@@ -59,7 +67,9 @@ class ProjectionUpdate {
     Tet nodes;
     TetReference reference;
     MaterialModel model;
-    Lame lame;
+    Lame lame;          // of its energy (lambda = 0 for the nodal-pressure tet)
+    Lame stiffness;     // the body's, for its stable step
+    double rho0 = 0.0;  // reference density
   };
   // V0 W(F) of e, and its nodal forces added into f[4] with the given sign.
   double evaluate(const Element& e, const Vec3 (&x)[4], double sign, Vec3 (&f)[4]) const;

@@ -21,6 +21,7 @@
 // rigid surface's grid cell relative to the body in one step (it cannot pass through unseen).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,10 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   void correct(State& /*state*/, double /*dt*/) override {}  // a force model
   void end_step(const State& state, double dt) override;
   ContactStepBound step_bound(const State& state, double ceiling) const override;
+  // Forces only: it moves no node.
+  double corrected_elements_stable_dt() const override {
+    return std::numeric_limits<double>::infinity();
+  }
 
   // <name>.active_points, .penetration_max [m], .work [J], .rigid_force_x/y/z (the springs'
   // force on the rigid body at the sample [N])

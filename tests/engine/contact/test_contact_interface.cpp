@@ -1,4 +1,4 @@
-// The contact interface cannot be half-implemented: ContactModel is abstract (its five pure
+// The contact interface cannot be half-implemented: ContactModel is abstract (its six pure
 // virtual methods), and every concrete model and wrapper implements all of them
 // (an abstract class cannot be named here as constructible). A model that leaves one out fails
 // these static assertions at compile time.
@@ -6,7 +6,9 @@
 #include <type_traits>
 
 #include "engine/contact/contact_model.hpp"
+#include "engine/contact/contact_set.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
+#include "engine/contact/penalty/rigid_surface_penalty.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
 #include "engine/distributed/replicated_contact.hpp"
 #include "io/fields/contact_impulse_probe.hpp"
@@ -20,11 +22,13 @@ static_assert(!std::is_abstract_v<dcr::DcrContact>);
 static_assert(!std::is_abstract_v<RigidSpherePenalty>);
 static_assert(!std::is_abstract_v<fields::ContactImpulseProbe>);
 static_assert(!std::is_abstract_v<distributed::ReplicatedContact>);
+static_assert(!std::is_abstract_v<RigidSurfacePenalty>);
+static_assert(!std::is_abstract_v<ContactSet>);
 // The name and the ledger are base-class data: not virtual, nothing to forward.
 static_assert(std::is_same_v<decltype(&ContactModel::ledger),
                              const ContactLedger& (ContactModel::*)() const>);
 
-// A model that implements four of the five is abstract.
+// A model that implements four of the six is abstract.
 struct FourOfFive : ContactModel {
   FourOfFive() : ContactModel("four", kForcePhases) {}
   void begin_step(const State&, double) override {}

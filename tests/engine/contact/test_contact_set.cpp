@@ -23,6 +23,9 @@ class StubContact : public ContactModel {
   void correct(State& s, double) override { s.v[0] = 2.0 * s.v[0] + Vec3::UnitX(); }
   void end_step(const State&, double) override { ledger_ = given_; }
   ContactStepBound step_bound(const State&, double) const override { return bound_; }
+  double corrected_elements_stable_dt() const override {
+    return std::numeric_limits<double>::infinity();
+  }
   void add_held_impulses(std::vector<HeldImpulse>& per_body) const override {
     per_body[0].impulse += Vec3::UnitZ();
   }

@@ -3,6 +3,7 @@
 // Set-up: a free box moving at 1 m/s, with a fake constraint-type contact model that speeds
 // every node up by a factor (1 + k) per step and books the kinetic energy it adds as its work.
 #include <catch2/catch.hpp>
+#include <limits>
 #include <string>
 
 #include "engine/contact/contact_model.hpp"
@@ -24,6 +25,9 @@ class Accelerator : public ContactModel {
     ledger_.injected_energy = counts_ ? std::max(0.0, work_) : 0.0;
   }
   ContactStepBound step_bound(const State& /*s*/, double /*ceiling*/) const override { return {}; }
+  double corrected_elements_stable_dt() const override {
+    return std::numeric_limits<double>::infinity();
+  }
   void correct(State& s, double dt) override {
     for (size_t i = 0; i < s.v.size(); ++i) {
       const Vec3 v_end_before = s.v[i] + 0.5 * dt * s.a[i];

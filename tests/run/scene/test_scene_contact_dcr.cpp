@@ -1,6 +1,7 @@
 // Scene [contact] model = "dcr": parsing, defaults, errors with file, line and key, the builder
 // and the example; the contact failure verdict (ContactModel::failure) of the integrator.
 #include <catch2/catch.hpp>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,9 @@ class FailingContact : public ContactModel {
   }
   ContactStepBound step_bound(const State& /*state*/, double /*ceiling*/) const override {
     return {};
+  }
+  double corrected_elements_stable_dt() const override {
+    return std::numeric_limits<double>::infinity();
   }
   int steps() const { return steps_; }
 
