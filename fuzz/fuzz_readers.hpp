@@ -1,6 +1,6 @@
 // One function per fuzz target: an input handed to one reader of outside input, which may refuse it
-// only with its own error type (fuzz_input.hpp). The fuzz targets (fuzz_*.cpp) call these; the unit
-// tests replay the inputs that once failed (tests/data/fuzz/<target>/) through the same functions.
+// only with its own error type (fuzz_input.hpp). The fuzz targets (ccm_fuzz.cpp) call these; the
+// unit tests replay the inputs that once failed (tests/data/fuzz/<target>/) through the same functions.
 #pragma once
 
 #include <cstdlib>

@@ -1,7 +1,0 @@
-// libFuzzer target: a .inp mesh file (fuzz_readers.hpp).
-#include "fuzz/fuzz_readers.hpp"
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  ccm::fuzz::mesh_file_input(ccm::fuzz::as_text(data, size), ".inp");
-  return 0;
-}
