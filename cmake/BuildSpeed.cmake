@@ -6,7 +6,7 @@
 #   set_source_files_properties(dir/file.cpp PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
 # and a build with -DCCM_UNITY_BUILD=ON -DCCM_UNITY_BUILD_BATCH_SIZE=0 (every source of a target
 # in one batch) finds every such pair at once.
-set(CCM_UNITY_BUILD_BATCH_SIZE 8 CACHE STRING "Sources per unity batch (0: a whole target)")
+set(CCM_UNITY_BUILD_BATCH_SIZE 16 CACHE STRING "Sources per unity batch (0: a whole target)")
 set(CMAKE_UNITY_BUILD ${CCM_UNITY_BUILD})
 set(CMAKE_UNITY_BUILD_BATCH_SIZE ${CCM_UNITY_BUILD_BATCH_SIZE})
 
