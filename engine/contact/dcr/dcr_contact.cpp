@@ -46,6 +46,17 @@ constexpr double kReanchorFraction = 0.1;
 // of the [hard] test by one separation more: +7 % of that small scene's energy scale).
 constexpr double kRestingAim = 1.005;
 
+// How far a projection may move a node, as a fraction of the height of the tets around it,
+// before the next step is shortened (eq. PJ.1, docs/time-step.md, "After a contact correction"):
+//     dt_next <= dt sqrt(kProjectionJump / (max |dx_proj| / h_e))
+// The predictor presses pressed surfaces together by dt^2/2 of their acceleration, so the next
+// projection's move scales with dt^2 and this brings it to kProjectionJump h_e. A projection
+// that moves nodes by a sizeable part of their tets every step leaves the step's energy measure
+// unbalanced (a thin wall crushed fast, docs/hard-scenes.md: 5.2 % at one tenth, and more; the
+// family of such crushes within 1 % from 3 % down); a resting or Hertz contact moves them by
+// 1e-4 of h_e or less, and this bound is far above its step.
+constexpr double kProjectionJump = 0.03;
+
 // Tolerance of the "projection inside the face" test of a persistent contact (barycentric).
 constexpr double kPersistentTolerance = 1e-6;
 
@@ -610,6 +621,7 @@ void DcrContact::enforce_positions(State& s, double dt) {
         projection_update_.apply(moved_, x_start_, s, inv_m_, dt);
     projection_stored_ = dE.stored;
     projected_stable_dt_ = dE.stable_dt;
+    if (dE.jump_ratio > 0.0) projection_jump_dt_ = dt * std::sqrt(kProjectionJump / dE.jump_ratio);
     work_ += dE.total();
     parts_.projection += dE.total();
   }
@@ -620,7 +632,7 @@ void DcrContact::correct(State& s, double dt) {
   if (report) output_.begin(s);
   detect(s);
   last_impulse_ = projection_stored_ = 0.0;
-  projected_stable_dt_ = std::numeric_limits<double>::infinity();
+  projected_stable_dt_ = projection_jump_dt_ = std::numeric_limits<double>::infinity();
   active_ = sweeps_ = 0;
   pair_impulses_.clear();
   near_.clear();
@@ -837,7 +849,7 @@ ContactStepBound DcrContact::step_bound(const State& state, double ceiling) cons
   const double apart = settings_.self_contact
                            ? std::numeric_limits<double>::infinity()
                            : approach_limit(bodies, settings_.step_fraction * min_edge_);
-  return {.kinematic_dt = std::min(local.dt, apart)};
+  return {.kinematic_dt = std::min({local.dt, apart, projection_jump_dt_})};
 }
 
 void DcrContact::end_step(const State& /*state*/, double dt) {

@@ -202,6 +202,8 @@ class DcrContact : public ContactModel, public HistorySource {
   PairRestitution restitution_;
   ProjectionUpdate projection_update_;
   double projected_stable_dt_ = std::numeric_limits<double>::infinity();
+  // The next step's bound from the last projection's largest move (step_bound, eq. PJ.1).
+  double projection_jump_dt_ = std::numeric_limits<double>::infinity();
   ContactOutput output_;
   std::vector<PairImpulse> pair_impulses_;  // scratch: this step's impulses per body pair
   std::vector<bool> anchored_;              // per body: holds a held node

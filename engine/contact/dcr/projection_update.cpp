@@ -1,6 +1,7 @@
 #include "engine/contact/dcr/projection_update.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "engine/element/stable_step.hpp"
@@ -80,6 +81,17 @@ double ProjectionUpdate::evaluate(const Element& e, const Vec3 (&x)[4], double s
   return e.reference.V0 * energy_density(e.model, F, e.lame);
 }
 
+namespace {
+
+// The largest distance a node of a tet moved.
+double largest_move(const Vec3 (&before)[4], const Vec3 (&after)[4]) {
+  double d2 = 0.0;
+  for (int c = 0; c < 4; ++c) d2 = std::max(d2, (after[c] - before[c]).squaredNorm());
+  return std::sqrt(d2);
+}
+
+}  // namespace
+
 std::vector<int> ProjectionUpdate::element_nodes(std::span<const int> moved) const {
   std::vector<int> nodes;
   for (int n : moved)
@@ -113,10 +125,11 @@ ProjectionUpdate::EnergyChange ProjectionUpdate::apply(std::span<const int> move
         df[c].setZero();
       }
       dE.stored += evaluate(e, x_new, 1.0, df) - evaluate(e, x_old, -1.0, df);
-      dE.stable_dt =
-          std::min(dE.stable_dt,
-                   element_stable_dt(e.model, edge_matrix(x_new[0], x_new[1], x_new[2], x_new[3]),
-                                     e.reference.Dm_inv, e.stiffness, e.rho0));
+      const Mat3 Ds = edge_matrix(x_new[0], x_new[1], x_new[2], x_new[3]);
+      dE.stable_dt = std::min(
+          dE.stable_dt, element_stable_dt(e.model, Ds, e.reference.Dm_inv, e.stiffness, e.rho0));
+      dE.jump_ratio =
+          std::max(dE.jump_ratio, largest_move(x_old, x_new) / characteristic_length(Ds));
       for (int c = 0; c < 4; ++c) {
         const auto i = static_cast<size_t>(e.nodes[c]);
         if (inv_m[i] == 0.0) continue;  // fixed: the boundary condition keeps it at rest

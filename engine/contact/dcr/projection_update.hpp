@@ -51,6 +51,10 @@ class ProjectionUpdate {
     // the next step must not exceed it. For a nodal-pressure body this is the plain tet's bound at
     // the element's own J (the kernel's next evaluation applies the body's nodal one).
     double stable_dt = std::numeric_limits<double>::infinity();
+    // The largest move of a node by the projection over the height (characteristic_length, at
+    // the new positions) of a re-evaluated element around it; 0 when nothing moved. The contact
+    // bounds the next step with it (DcrContact::step_bound, docs/time-step.md).
+    double jump_ratio = 0.0;
   };
   // The nodes `moved` (unique) went from `before` (same order) to their positions in s.x: adds
   // the force change divided by the node's mass into s.a (inv_m: 1/m, 0 for fixed nodes) and

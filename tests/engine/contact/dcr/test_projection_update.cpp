@@ -10,6 +10,7 @@
 
 #include "engine/contact/dcr/projection_update.hpp"
 #include "engine/element/internal_force.hpp"
+#include "engine/element/tet4.hpp"
 #include "engine/mesh/structured_box.hpp"
 #include "tests/support/models.hpp"
 #include "tests/support/tolerance.hpp"
@@ -148,4 +149,49 @@ TEST_CASE("projection update: the stable step of the squeezed elements is the ke
           "[dcr][projection_update]") {
   check_squeezed_stable_dt(MaterialModel::neo_hookean);
   check_squeezed_stable_dt(MaterialModel::linear_elastic);
+}
+
+// Eq. PJ.1 (docs/time-step.md): the update reports the largest move of a node over the height of
+// a tet around it, at the moved positions. Here nodes of the box's top face moved down by 60 % of
+// a cell, some by 30 %: the ratio is the largest of move / characteristic_length over the tets
+// that hold a moved node, computed here from the mesh itself (to round-off), and 0 for no move.
+TEST_CASE("projection update: the largest move over the height of the tets around it",
+          "[dcr][projection_update]") {
+  Model model = box(MaterialModel::neo_hookean, 0.45, ElementKind::tet4);
+  const ModelMesh& mesh = model.mesh;
+  State s;
+  s.x = mesh.X;
+  s.v.assign(s.x.size(), Vec3::Zero());
+  s.a.assign(s.x.size(), Vec3::Zero());
+  const std::vector<double> inv_m(s.x.size(), 1.0);
+  const std::vector<int>& surface = mesh.node_sets.at("box/boundary");
+  dcr::ProjectionUpdate update(mesh, surface);
+  CHECK(update.apply({}, {}, s, inv_m, 1e-6).jump_ratio == 0.0);
+
+  const double cell = 0.01 / 2.0;
+  std::vector<int> moved;
+  std::vector<Vec3> before;
+  std::vector<double> move(s.x.size(), 0.0);
+  for (size_t k = 0; k < surface.size(); k += 3) {
+    const auto n = static_cast<size_t>(surface[k]);
+    if (s.x[n].z() < 0.01 - 1e-12) continue;  // the top face only
+    moved.push_back(surface[k]);
+    before.push_back(s.x[n]);
+    move[n] = (moved.size() % 2 == 0 ? 0.6 : 0.3) * cell;
+    s.x[n].z() -= move[n];
+  }
+  REQUIRE(moved.size() >= 4);
+  double expected = 0.0;
+  for (const Tet& t : mesh.tets) {
+    double largest = 0.0;
+    for (int n : t) largest = std::max(largest, move[static_cast<size_t>(n)]);
+    if (largest == 0.0) continue;
+    const Mat3 Ds = edge_matrix(s.x[static_cast<size_t>(t[0])], s.x[static_cast<size_t>(t[1])],
+                                s.x[static_cast<size_t>(t[2])], s.x[static_cast<size_t>(t[3])]);
+    expected = std::max(expected, largest / characteristic_length(Ds));
+  }
+  const double ratio = update.apply(moved, before, s, inv_m, 1e-6).jump_ratio;
+  INFO("jump ratio " << ratio << ", from the mesh " << expected);
+  CHECK(expected > 0.3);  // a move of 0.6 cell against tets a cell or less high
+  CHECK(test::relative_error(ratio, expected) < 1e-12);
 }
