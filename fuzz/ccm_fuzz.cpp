@@ -7,7 +7,6 @@
 // fuzz_msh_mesh .msh files made with Gmsh in the folder <path>.
 #include <gmsh.h>
 
-#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -18,24 +17,7 @@
 
 namespace {
 
-using Target = void (*)(std::string_view input);
-
-struct NamedTarget {
-  std::string_view name;
-  Target run;
-};
-
-const std::array<NamedTarget, 7> kTargets = {{
-    {"fuzz_scene_file", ccm::fuzz::scene_file_input},
-    {"fuzz_grid_file", ccm::fuzz::grid_file_input},
-    {"fuzz_unv_mesh", [](std::string_view s) { ccm::fuzz::mesh_file_input(s, ".unv"); }},
-    {"fuzz_inp_mesh", [](std::string_view s) { ccm::fuzz::mesh_file_input(s, ".inp"); }},
-    {"fuzz_msh_mesh", [](std::string_view s) { ccm::fuzz::mesh_file_input(s, ".msh"); }},
-    {"fuzz_trial_csv", ccm::fuzz::trial_csv_input},
-    {"fuzz_store_file", ccm::fuzz::store_file_input},
-}};
-
-Target g_target = nullptr;
+const ccm::fuzz::Target* g_target = nullptr;
 
 // A coarse box with a named surface and volume, in MSH 4.1 and 2.2, ASCII.
 void make_msh_seeds(const std::filesystem::path& folder) {
@@ -64,11 +46,11 @@ void make_store_seed(const std::string& file) {
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   const std::string name = *argc > 0 ? std::filesystem::path((*argv)[0]).filename().string() : "";
-  for (const NamedTarget& t : kTargets)
-    if (t.name == name) g_target = t.run;
+  g_target = ccm::fuzz::target_named(name);
   if (g_target == nullptr) {
     std::fprintf(stderr, "ccm fuzz: run as one of the target names (fuzz/CMakeLists.txt):");
-    for (const NamedTarget& t : kTargets) std::fprintf(stderr, " %s", std::string(t.name).c_str());
+    for (const ccm::fuzz::Target& t : ccm::fuzz::targets())
+      std::fprintf(stderr, " %s", std::string(t.name).c_str());
     std::fprintf(stderr, "\n");
     std::exit(2);
   }
@@ -81,6 +63,6 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  g_target(ccm::fuzz::as_text(data, size));
+  g_target->read(ccm::fuzz::as_text(data, size));
   return 0;
 }

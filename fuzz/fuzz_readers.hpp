@@ -1,8 +1,10 @@
 // One function per fuzz target: an input handed to one reader of outside input, which may refuse it
 // only with its own error type (fuzz_input.hpp). The fuzz targets (ccm_fuzz.cpp) call these; the
-// unit tests replay the inputs that once failed (tests/data/fuzz/<target>/) through the same functions.
+// unit tests replay the inputs that once failed (tests/data/fuzz/<target>/) through the same
+// functions.
 #pragma once
 
+#include <array>
 #include <cstdlib>
 
 #include "bench_test/bench_mapping.hpp"
@@ -88,6 +90,33 @@ inline void store_file_input(std::string_view bytes) {
     store.load_fits();
     store.load_grid();
   });
+}
+
+// The fuzz targets by name, each with its entry point above: the names ccm_fuzz runs as
+// (fuzz/CMakeLists.txt) and the folders of tests/data/fuzz/.
+struct Target {
+  std::string_view name;
+  void (*read)(std::string_view input);
+};
+
+inline const std::array<Target, 7>& targets() {
+  static const std::array<Target, 7> all = {{
+      {"fuzz_scene_file", scene_file_input},
+      {"fuzz_grid_file", grid_file_input},
+      {"fuzz_unv_mesh", [](std::string_view s) { mesh_file_input(s, ".unv"); }},
+      {"fuzz_inp_mesh", [](std::string_view s) { mesh_file_input(s, ".inp"); }},
+      {"fuzz_msh_mesh", [](std::string_view s) { mesh_file_input(s, ".msh"); }},
+      {"fuzz_trial_csv", trial_csv_input},
+      {"fuzz_store_file", store_file_input},
+  }};
+  return all;
+}
+
+// The target called `name`; nullptr for none.
+inline const Target* target_named(std::string_view name) {
+  for (const Target& t : targets())
+    if (t.name == name) return &t;
+  return nullptr;
 }
 
 }  // namespace ccm::fuzz

@@ -5,7 +5,6 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <sstream>
 
 #include "fuzz/fuzz_readers.hpp"
@@ -21,18 +20,6 @@ std::string bytes_of(const fs::path& file) {
   return s.str();
 }
 
-const std::map<std::string, void (*)(std::string_view)>& replayers() {
-  static const std::map<std::string, void (*)(std::string_view)> r = {
-      {"fuzz_scene_file", ccm::fuzz::scene_file_input},
-      {"fuzz_grid_file", ccm::fuzz::grid_file_input},
-      {"fuzz_unv_mesh", [](std::string_view t) { ccm::fuzz::mesh_file_input(t, ".unv"); }},
-      {"fuzz_inp_mesh", [](std::string_view t) { ccm::fuzz::mesh_file_input(t, ".inp"); }},
-      {"fuzz_msh_mesh", [](std::string_view t) { ccm::fuzz::mesh_file_input(t, ".msh"); }},
-      {"fuzz_trial_csv", ccm::fuzz::trial_csv_input},
-      {"fuzz_store_file", ccm::fuzz::store_file_input}};
-  return r;
-}
-
 }  // namespace
 
 TEST_CASE("fuzz regressions: every kept input is read or refused by its reader's own error",
@@ -43,10 +30,11 @@ TEST_CASE("fuzz regressions: every kept input is read or refused by its reader's
     if (!target.is_directory()) continue;  // README.md
     const std::string name = target.path().filename().string();
     INFO("target folder " << name);
-    REQUIRE(replayers().count(name) == 1);  // a folder names a target
+    const ccm::fuzz::Target* reader = ccm::fuzz::target_named(name);
+    REQUIRE(reader != nullptr);  // a folder names a target
     for (const auto& input : fs::directory_iterator(target.path())) {
       INFO("input " << input.path().filename().string());
-      replayers().at(name)(bytes_of(input.path()));
+      reader->read(bytes_of(input.path()));
       ++replayed;
     }
   }

@@ -106,6 +106,15 @@ TEST_CASE("projection update: energy and force changes equal the kernel's (nodal
 
 namespace {
 
+// The mesh at rest in its reference positions.
+State at_rest(const ModelMesh& mesh) {
+  State s;
+  s.x = mesh.X;
+  s.v.assign(s.x.size(), Vec3::Zero());
+  s.a.assign(s.x.size(), Vec3::Zero());
+  return s;
+}
+
 // A projection that squeezes the box's top layer: every third top node pushed down by 60 % of a
 // cell. The stable step the update reports for the elements around the moved nodes is the
 // kernel's over the whole squeezed mesh (its shortest elements are the squeezed ones), to
@@ -114,10 +123,7 @@ namespace {
 void check_squeezed_stable_dt(MaterialModel material) {
   Model model = box(material, 0.45, ElementKind::tet4);
   const ModelMesh& mesh = model.mesh;
-  State s;
-  s.x = mesh.X;
-  s.v.assign(s.x.size(), Vec3::Zero());
-  s.a.assign(s.x.size(), Vec3::Zero());
+  State s = at_rest(mesh);
   const std::vector<double> inv_m(s.x.size(), 1.0);
   const std::vector<int>& surface = mesh.node_sets.at("box/boundary");
   std::vector<int> moved;
@@ -159,10 +165,7 @@ TEST_CASE("projection update: the largest move over the height of the tets aroun
           "[dcr][projection_update]") {
   Model model = box(MaterialModel::neo_hookean, 0.45, ElementKind::tet4);
   const ModelMesh& mesh = model.mesh;
-  State s;
-  s.x = mesh.X;
-  s.v.assign(s.x.size(), Vec3::Zero());
-  s.a.assign(s.x.size(), Vec3::Zero());
+  State s = at_rest(mesh);
   const std::vector<double> inv_m(s.x.size(), 1.0);
   const std::vector<int>& surface = mesh.node_sets.at("box/boundary");
   dcr::ProjectionUpdate update(mesh, surface);
