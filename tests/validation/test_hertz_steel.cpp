@@ -1,16 +1,17 @@
 // Issue 15 item 2 and issue 34 item 2, [validation]: the steel Hertz impact of
 // scenes/validation/hertz_steel_*.toml (two R = 10 mm steel spheres at +-5 m/s, DCR with
 // restitution 1, graded meshes with a / h = 2.5, 3.5, 5 and 10 at the contact poles), run as a user
-// runs it (`ccm run`), against the closed form (tests/support/hertz.hpp; docs/contact-persistent.md,
-// "Steel spheres at +-5 m/s"): contact duration, peak force (the force output, the upper sphere's
-// momentum rate) and maximum approach of the centres, from history rows 10 ns apart. Each error
-// must shrink under refinement; at a / 5 the errors are below the CalculiX 2.20 figures of issue
-// 15 (3.7 %, 4.2 %, 3.4 %) with the nodal-pressure tet (measured -3.03 %, +3.92 %, -3.05 %; the
-// plain tet's approach, -3.54 %, is not). At +-5 m/s the reference is the converged dynamic
-// solution, the Richardson limit of a / 3.5, 5, 10 ("The converged solution at +-5 m/s"). The
-// energy balance stays within 0.5 %. About 20 minutes in Release on 2 cores. The last test runs
-// the a / 5 mesh at a tenth of the speed with the nodal-pressure tet (about 5 minutes): within the
-// issue's 2 % there (docs/contact-persistent.md, "Steel spheres at +-5 m/s", "the speed").
+// runs it (`ccm run`), against the closed form (tests/support/hertz.hpp;
+// docs/contact-persistent.md, "Steel spheres at +-5 m/s"): contact duration, peak force (the force
+// output, the upper sphere's momentum rate) and maximum approach of the centres, from history rows
+// 10 ns apart. Each error must shrink under refinement; at a / 5 the errors are below the
+// CalculiX 2.20 figures of issue 15 (3.7 %, 4.2 %, 3.4 %) with the nodal-pressure tet (measured
+// -3.03 %, +3.92 %, -3.05 %; the plain tet's approach, -3.54 %, is not). At +-5 m/s the reference
+// is the converged dynamic solution, the Richardson limit of a / 3.5, 5, 10 ("The converged
+// solution at +-5 m/s"). The energy balance stays within 0.5 %. About 20 minutes in Release on 2
+// cores. The last test runs the a / 5 mesh at a tenth of the speed with the nodal-pressure tet
+// (about 5 minutes): within the issue's 2 % there (docs/contact-persistent.md, "Steel spheres at
+// +-5 m/s", "the speed").
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
