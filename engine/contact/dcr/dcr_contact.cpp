@@ -52,9 +52,9 @@ constexpr double kRestingAim = 1.005;
 // The predictor presses pressed surfaces together by dt^2/2 of their acceleration, so the next
 // projection's move scales with dt^2 and this brings it to kProjectionJump h_e. A projection
 // that moves nodes by a sizeable part of their tets every step leaves the step's energy measure
-// unbalanced (a thin wall crushed fast, docs/hard-scenes.md: 5.2 % at one tenth, and more; the
-// family of such crushes within 1 % from 3 % down); a resting or Hertz contact moves them by
-// 1e-4 of h_e or less, and this bound is far above its step.
+// unbalanced (a wall one flat tet thick crushed at 8 m/s, docs/hard-scenes.md: 5.2 % without the
+// bound, 0.33 % with it); a resting or Hertz contact moves them by 1e-4 of h_e or less, and this
+// bound is far above its step.
 constexpr double kProjectionJump = 0.03;
 
 // Tolerance of the "projection inside the face" test of a persistent contact (barycentric).

@@ -11,6 +11,13 @@
 namespace ccm::dcr {
 namespace {
 
+// The largest distance a node of a tet moved.
+double largest_move(const Vec3 (&before)[4], const Vec3 (&after)[4]) {
+  double d2 = 0.0;
+  for (int c = 0; c < 4; ++c) d2 = std::max(d2, (after[c] - before[c]).squaredNorm());
+  return std::sqrt(d2);
+}
+
 // W(F) and P(F) of the body's material (eq. 2.1; eq. 2.2-2.3).
 double energy_density(MaterialModel model, const Mat3& F, const Lame& lame) {
   switch (model) {
@@ -80,17 +87,6 @@ double ProjectionUpdate::evaluate(const Element& e, const Vec3 (&x)[4], double s
   }
   return e.reference.V0 * energy_density(e.model, F, e.lame);
 }
-
-namespace {
-
-// The largest distance a node of a tet moved.
-double largest_move(const Vec3 (&before)[4], const Vec3 (&after)[4]) {
-  double d2 = 0.0;
-  for (int c = 0; c < 4; ++c) d2 = std::max(d2, (after[c] - before[c]).squaredNorm());
-  return std::sqrt(d2);
-}
-
-}  // namespace
 
 std::vector<int> ProjectionUpdate::element_nodes(std::span<const int> moved) const {
   std::vector<int> nodes;
