@@ -388,14 +388,12 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
       throw UsageError(
           "field output (--fields, [output] fields) is not available in a run "
           "partitioned over MPI ranks: run it on one rank");
+    if (ranks.size() > 1)
+      if (auto why = distributed::partition_refusal(p.model)) throw UsageError(*why);
     if (ranks.size() > 1 && !p.joints.empty())
       throw UsageError(
           "a scene with [[joints]] does not yet run partitioned over MPI ranks: run it on one "
           "rank (threads still apply)");
-    if (ranks.size() > 1 && !p.model.rigid_bodies.empty())
-      throw UsageError(
-          "a scene with rigid bodies (kind = \"rigid\") does not yet run partitioned over MPI "
-          "ranks: run it on one rank (threads still apply)");
   } catch (...) {
     failure = std::current_exception();
   }

@@ -63,16 +63,22 @@ void fill_report(const Subdomain& d, const std::vector<int>& part, const ModelMe
 
 }  // namespace
 
+std::optional<std::string> partition_refusal(const Model& global) {
+  for (const Body& b : global.mesh.bodies)
+    if (b.element == ElementKind::nodal_pressure && !b.rigid)
+      return fmt::format(
+          "a run partitioned over MPI ranks does not support element = \"nodal_pressure\" yet "
+          "(body '{}'): run it on one rank (threads still apply), or use the linear tet",
+          b.name);
+  return std::nullopt;
+}
+
 RunSummary run_partitioned(const Model& global, const RunOptions& options,
                            PartitionReport* report) {
   if (!options.constraints.empty() || !options.loads.empty())
     throw std::invalid_argument(
         "a partitioned run supports no kinematic constraints or state loads yet");
-  // Its nodal volumes would need the neighbours' share at every shared node before the pressures.
-  for (const Body& b : global.mesh.bodies)
-    if (b.element == ElementKind::nodal_pressure)
-      throw std::invalid_argument(fmt::format(
-          "a partitioned run does not support element nodal_pressure yet (body '{}')", b.name));
+  if (auto why = partition_refusal(global)) throw std::invalid_argument(*why);
   const int rank = world_rank(), size = world_size();
   const std::vector<int> part = partition_elements(global.mesh, size);
   const std::vector<int> owners = node_owners(global.mesh, part, size);

@@ -7,6 +7,8 @@
 // This header is MPI-free: MPI stays private to ccm_distributed.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/distributed/replicated_contact.hpp"
@@ -36,10 +38,14 @@ struct PartitionReport {
   long region_gathers = 0;                                   // contact region gathers, whole run
 };
 
+// Why a model cannot run partitioned (a body of nodal-pressure tets: its nodal volumes would need
+// the neighbours' share at every shared node before the pressures), or nothing.
+std::optional<std::string> partition_refusal(const Model& global);
+
 // Every rank calls it with the same global model and options (contact: the rank's own copy of the
 // global contact model). The summary is the global one, the same on every rank. Throws
 // std::invalid_argument for what a partitioned run does not support (kinematic constraints,
-// state loads).
+// state loads, partition_refusal).
 RunSummary run_partitioned(const Model& global, const RunOptions& options,
                            PartitionReport* report = nullptr);
 

@@ -178,9 +178,10 @@ void HaloCoupling::sample(const State& local, std::span<const double> body_inter
     global_.v[n] = Vec3(p[3], p[4], p[5]);
     global_.a[n] = Vec3(p[6], p[7], p[8]);
     global_.m_lumped[n] = p[9];
-    global_.inv_m[n] = 1.0 / p[9];
+    global_.inv_m[n] = p[9] > 0.0 ? 1.0 / p[9] : 0.0;  // a rigid body's nodes: 0
   }
   global_.t = local.t;
+  global_.rigid = local.rigid;  // every rank steps the rigid bodies alike (subdomain.hpp)
   if (history_) history_->sample(global_, body_internal_energy);
   if (on_sample_) on_sample_(global_);
 }

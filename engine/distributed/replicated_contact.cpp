@@ -39,7 +39,7 @@ void unpack_state(const double* p, size_t g, State& s) {
   s.v[g] = Vec3(p[3], p[4], p[5]);
   s.a[g] = Vec3(p[6], p[7], p[8]);
   s.m_lumped[g] = p[9];
-  s.inv_m[g] = 1.0 / p[9];
+  s.inv_m[g] = p[9] > 0.0 ? 1.0 / p[9] : 0.0;  // a rigid body's nodes: 0, as the integrator's
 }
 
 }  // namespace
@@ -73,6 +73,10 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, const std::vector<int>
     local_of_[static_cast<size_t>(subdomain.global_node[l])] = static_cast<int>(l);
   std::vector<char> in_region(global_mesh.X.size(), 0);
   for (int g : region) in_region[static_cast<size_t>(g)] = current_[static_cast<size_t>(g)] = 1;
+  for (const Body& b : global_mesh.bodies)
+    if (b.rigid)
+      for (int g = b.first_node; g < b.first_node + b.n_nodes; ++g)
+        if (in_region[static_cast<size_t>(g)]) rigid_region_.push_back(g);
   std::vector<int> rest;
   for (size_t g = 0; g < in_region.size(); ++g)
     if (!in_region[g]) rest.push_back(static_cast<int>(g));
@@ -184,6 +188,21 @@ void ReplicatedContact::catch_up(double dt) const {
   for (int n : region_.global) predict_node(static_cast<size_t>(n), dt, half_dt);
 }
 
+// A rigid body's nodes follow its pose, not the nodal predictor and corrector the view replays:
+// every rank steps the body alike and holds all its nodes (subdomain.hpp), so the view takes
+// them, and the bodies' states, from the local state.
+void ReplicatedContact::take_rigid_bodies(const State& local) const {
+  if (local.rigid.empty()) return;
+  view_.rigid = local.rigid;
+  for (int n : rigid_region_) {
+    const auto g = static_cast<size_t>(n);
+    const auto l = static_cast<size_t>(local_of_[g]);
+    view_.x[g] = local.x[l];
+    view_.v[g] = local.v[l];
+    view_.a[g] = local.a[l];
+  }
+}
+
 void ReplicatedContact::copy_to_local(size_t g, State& local) const {
   const int l = local_of_[g];
   if (l < 0) return;
@@ -215,6 +234,7 @@ ContactStepBound ReplicatedContact::step_bound(const State& state, double ceilin
     gather_state(state);
     started_ = true;
   }
+  take_rigid_bodies(state);
   ContactStepBound bound;
   contact_time([&] { bound = inner_.step_bound(view_, ceiling); });
   return bound;
@@ -232,6 +252,7 @@ void ReplicatedContact::begin_step(const State& state, double dt) {
     started_ = true;
   }
   dt_ = dt;
+  take_rigid_bodies(state);
   contact_time([&] { inner_.begin_step(view_, dt); });
   predict_due_ = true;  // the integrator predicts next
 }
@@ -246,6 +267,7 @@ void ReplicatedContact::add_forces(State& state) {
     catch_up(dt_);
   else
     gather_state(state);
+  take_rigid_bodies(state);
   contact_time([&] {
     for (int g : region_.global) view_.f[static_cast<size_t>(g)].setZero();
     inner_.add_forces(view_);
@@ -263,6 +285,7 @@ void ReplicatedContact::correct(State& state, double dt) {
   rest_current_ = false;
   contact_time([&] {
     gather_accelerations(state, dt);
+    take_rigid_bodies(state);
     inner_.correct(view_, dt);
     if (rest_current_) scatter(rest_.global, state);
     scatter(fetched_, state);
@@ -346,6 +369,7 @@ void ReplicatedContact::end_step(const State& state, double dt) {
     });
   }
   finished_ = false;
+  take_rigid_bodies(state);
   contact_time([&] { inner_.end_step(view_, dt); });
   ledger_ = inner_.ledger();
 }

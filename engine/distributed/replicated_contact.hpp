@@ -49,6 +49,11 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   void end_step(const State& state, double dt) override;
   ContactStepBound step_bound(const State& state, double ceiling) const override;
   double corrected_elements_stable_dt() const override;
+  // The inner model's impulses on held bodies: the same on every rank, as every rank steps the
+  // rigid bodies alike.
+  void add_held_impulses(std::vector<HeldImpulse>& per_body) const override {
+    inner_.add_held_impulses(per_body);
+  }
   // The nodes beyond the region, from their owners, for the rest of this step's correct().
   void make_whole_bodies_current() override;
   // The listed nodes beyond the region, from their owners, for the rest of this step's correct().
@@ -69,6 +74,7 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   void gather_accelerations(const State& local, double dt) const;  // a of the region
   void predict_node(size_t g, double dt, double half_dt) const;    // eq. 2.27-2.28 on node g
   void catch_up(double dt) const;                                  // replays the predictor when due
+  void take_rigid_bodies(const State& local) const;  // rigid bodies' nodes and states from local
   void copy_to_local(size_t g, State& local) const;  // x, v, a of g into its local copy, if any
   void scatter(std::span<const int> nodes, State& local) const;  // x, v, a into the local copies
   void finish_step(double dt);  // the integrator's fixed nodes and velocity correction
@@ -82,13 +88,14 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   ContactModel& inner_;
   PhaseTimes& times_;
   int rank_ = 0, size_ = 1;
-  GatherPlan region_, rest_;      // the contact region; every other node
-  std::vector<int> local_of_;     // per global node: its local id here, or -1
-  std::vector<int> owner_;        // per global node: its owner rank
-  std::vector<char> current_;     // per global node: in the region, or fetched in this correct()
-  std::vector<int> fetched_;      // the nodes make_nodes_current() fetched in this correct()
-  std::vector<char> fixed_;       // per global node
-  const State* local_ = nullptr;  // the local state of the correct() under way
+  GatherPlan region_, rest_;       // the contact region; every other node
+  std::vector<int> local_of_;      // per global node: its local id here, or -1
+  std::vector<int> owner_;         // per global node: its owner rank
+  std::vector<char> current_;      // per global node: in the region, or fetched in this correct()
+  std::vector<int> fetched_;       // the nodes make_nodes_current() fetched in this correct()
+  std::vector<char> fixed_;        // per global node
+  std::vector<int> rigid_region_;  // the region's nodes on rigid bodies (global ids)
+  const State* local_ = nullptr;   // the local state of the correct() under way
   mutable std::vector<double> send_, receive_;
   mutable State view_;                // global numbering; the region is current
   mutable bool started_ = false;      // the view has been gathered once

@@ -53,6 +53,39 @@ ModelMesh local_mesh(const ModelMesh& global, const std::vector<int>& local_elem
   return m;
 }
 
+std::vector<char> rigid_elements(const ModelMesh& mesh) {
+  std::vector<char> rigid(mesh.tets.size(), 0);
+  for (size_t e = 0; e < rigid.size(); ++e)
+    rigid[e] = mesh.bodies[static_cast<size_t>(mesh.element_body[e])].rigid ? 1 : 0;
+  return rigid;
+}
+
+bool on_rigid_body(const ModelMesh& mesh, size_t node) {
+  for (const Body& b : mesh.bodies)
+    if (b.rigid && static_cast<int>(node) >= b.first_node &&
+        static_cast<int>(node) < b.first_node + b.n_nodes)
+      return true;
+  return false;
+}
+
+// A rigid body is whole on every rank, its nodes contiguous in local ids (owned on rank 0, replicas
+// elsewhere, each in ascending global id): its node range and surface are kept, in local ids, for
+// the rigid-body stepper (engine/body/rigid_bodies.hpp).
+void localise_rigid_bodies(const ModelMesh& global, const std::vector<int>& local_of,
+                           ModelMesh& local) {
+  for (size_t b = 0; b < global.bodies.size(); ++b) {
+    const Body& g = global.bodies[b];
+    if (!g.rigid) continue;
+    Body& l = local.bodies[b];
+    l.first_node = local_of[static_cast<size_t>(g.first_node)];
+    l.n_nodes = g.n_nodes;
+    for (Triangle t : g.boundary) {
+      for (int& n : t) n = local_of[static_cast<size_t>(n)];
+      l.boundary.push_back(t);
+    }
+  }
+}
+
 void localise_conditions(const Model& global, const std::vector<int>& local_of, int owned,
                          Model& local) {
   auto local_id = [&](int n) { return local_of[static_cast<size_t>(n)]; };
@@ -65,7 +98,8 @@ void localise_conditions(const Model& global, const std::vector<int>& local_of, 
     mine.area_share.clear();
     for (size_t i = 0; i < load.nodes.size(); ++i) {
       const int l = local_id(load.nodes[i]);
-      if (l < 0 || l >= owned) continue;
+      const bool replicated = on_rigid_body(global.mesh, static_cast<size_t>(load.nodes[i]));
+      if (l < 0 || (l >= owned && !replicated)) continue;
       mine.nodes.push_back(l);
       mine.area_share.push_back(load.area_share[i]);
     }
@@ -120,25 +154,34 @@ Subdomain make_subdomain(const Model& global, const std::vector<int>& element_pa
   d.n_ranks = n_ranks;
   // Local nodes: owned (lowest touching rank is this one) first, then the copies; each group in
   // ascending global id.
-  std::vector<int> owned, copies;
+  // A rigid body's nodes are rank 0's (partition.hpp); every other rank holds them as replicas,
+  // after its copies.
+  std::vector<int> owned, copies, replicas;
   for (size_t n = 0; n < mesh.X.size(); ++n) {
     const auto rs = ranks_of(n);
-    if (std::find(rs.begin(), rs.end(), rank) == rs.end()) continue;
+    if (std::find(rs.begin(), rs.end(), rank) == rs.end()) {
+      if (on_rigid_body(mesh, n)) replicas.push_back(static_cast<int>(n));
+      continue;
+    }
     (rs.front() == rank ? owned : copies).push_back(static_cast<int>(n));
   }
   d.owned_nodes = static_cast<int>(owned.size());
   d.global_node = owned;
   d.global_node.insert(d.global_node.end(), copies.begin(), copies.end());
+  const std::vector<char> rigid = rigid_elements(mesh);
+  if (rank != 0) d.global_node.insert(d.global_node.end(), replicas.begin(), replicas.end());
   std::vector<int> local_of(mesh.X.size(), -1);
   for (size_t l = 0; l < d.global_node.size(); ++l)
     local_of[static_cast<size_t>(d.global_node[l])] = static_cast<int>(l);
 
   std::vector<int> local_elements;
   for (size_t e = 0; e < element_part.size(); ++e)
-    if (element_part[e] == rank) local_elements.push_back(static_cast<int>(e));
+    if (element_part[e] == rank || rigid[e]) local_elements.push_back(static_cast<int>(e));
   ModelMesh lm = local_mesh(mesh, local_elements, local_of);
   for (int g : d.global_node) lm.X.push_back(mesh.X[static_cast<size_t>(g)]);
+  localise_rigid_bodies(mesh, local_of, lm);
   d.model = make_model(std::move(lm));
+  d.model.rigid_bodies = global.rigid_bodies;
   for (size_t l = 0; l < d.global_node.size(); ++l)
     d.model.initial_velocity[l] = global.initial_velocity[static_cast<size_t>(d.global_node[l])];
   localise_conditions(global, local_of, d.owned_nodes, d.model);

@@ -42,7 +42,11 @@ std::vector<HaloSize> halo_sizes(const ModelMesh& mesh, const std::vector<int>& 
                                  int n_ranks);
 
 // The subdomain of `rank`. Surface loads are kept on the nodes the rank owns only (their sum over
-// ranks is the global load); fixed nodes and initial velocities on every local copy.
+// ranks is the global load), and on a rigid body's replicas; fixed nodes and initial velocities
+// on every local copy. A rigid body is whole on every rank (its elements are never stepped): rank
+// 0 owns its nodes, the others hold replicas of them after their copies, which no halo exchange
+// touches. Every rank steps it alike from the same complete forces (the replicated contact gives
+// every copy the whole contact force).
 Subdomain make_subdomain(const Model& global, const std::vector<int>& element_part, int n_ranks,
                          int rank);
 

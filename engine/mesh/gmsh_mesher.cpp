@@ -670,6 +670,9 @@ TetMesh read_in_child(const std::string& where, const std::function<TetMesh()>& 
   }
   if (pid == 0) {
     ::close(fds[0]);
+    // A crash ends the child by its signal, whatever handler the parent installed (a test
+    // framework's would report a failure from the child and print its own summary).
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(sig, SIG_DFL);
     std::string reply;
     try {
       // (appended, not "M" + bytes: GCC 12 warns of a false memcpy overflow in operator+)

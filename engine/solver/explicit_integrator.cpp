@@ -80,7 +80,8 @@ struct StepChoice {
   StepLimiter limiter;
 };
 
-// Work of the prescribed surface loads, by the trapezoidal rule over each step.
+// Work of the prescribed surface loads, by the trapezoidal rule over each step, on the nodes the
+// domain owns (a partitioned run's rigid-body replicas carry the load too, counted by rank 0).
 class LoadWork {
  public:
   explicit LoadWork(const BoundaryConditions& bcs) : bcs_(bcs) {}
@@ -89,12 +90,13 @@ class LoadWork {
     for (const SurfaceLoad& l : bcs_.loads)
       for (int n : l.nodes) x_n_.push_back(s.x[static_cast<size_t>(n)]);
   }
-  void after_step(const State& s, double t_n, double t_np1) {
+  void after_step(const State& s, double t_n, double t_np1, int owned_nodes) {
     size_t k = 0;
     for (const SurfaceLoad& l : bcs_.loads) {
       const Vec3 F_mid = 0.5 * (l.magnitude(t_n) + l.magnitude(t_np1)) * l.direction;
       for (size_t i = 0; i < l.nodes.size(); ++i, ++k)
-        work_ += l.area_share[i] * F_mid.dot(s.x[static_cast<size_t>(l.nodes[i])] - x_n_[k]);
+        if (l.nodes[i] < owned_nodes)
+          work_ += l.area_share[i] * F_mid.dot(s.x[static_cast<size_t>(l.nodes[i])] - x_n_[k]);
     }
   }
   double work() const { return work_; }
@@ -344,7 +346,8 @@ void CentralDifference::correct(double dt) {
   rigid_.finish(s_, dt);
 }
 
-// Work of gravity = sum m g . u (exact: gravity is a constant field).
+// Work of gravity = sum m g . u (exact: gravity is a constant field). A partitioned run's rigid
+// bodies are stepped alike on every rank: their part is added once, after the sum over domains.
 double CentralDifference::gravity_work() const {
   if (!model_.bcs.has_gravity()) return 0.0;
   return fixed_order_sum(owned_nodes(), threads_,
@@ -352,7 +355,7 @@ double CentralDifference::gravity_work() const {
                            const auto i = static_cast<size_t>(n);
                            return s_.m_lumped[i] * model_.bcs.gravity.dot(s_.x[i] - s_.X[i]);
                          }) +
-         rigid_.gravity_work(model_.bcs.gravity);
+         (opt_.coupling ? 0.0 : rigid_.gravity_work(model_.bcs.gravity));
 }
 
 // 1e-12 of the energy the model would carry with every node moving at the fastest wave speed:
@@ -361,13 +364,13 @@ double CentralDifference::energy_floor() const {
   double c_max = 0.0, mass = 0.0;
   for (const ElementBlock& b : model_.elements.blocks) c_max = std::max(c_max, b.wave_speed);
   for (int i = 0; i < owned_nodes(); ++i) mass += s_.m_lumped[static_cast<size_t>(i)];
-  for (int k = 0; k < rigid_.size(); ++k) mass += rigid_.body(k).mass();
   if (opt_.coupling) {
     double bounds[2] = {-c_max, 0.0};
     opt_.coupling->min_over_domains(bounds);
     opt_.coupling->sum_over_domains(std::span<double>(&mass, 1));
     c_max = -bounds[0];
   }
+  for (int k = 0; k < rigid_.size(); ++k) mass += rigid_.body(k).mass();  // on every rank alike
   return 1e-12 * mass * c_max * c_max;
 }
 
@@ -439,6 +442,7 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   }
   if (not_finite) return not_finite;
   if (replicated_contact) w_ext += opt_.contact->ledger().work;
+  if (opt_.coupling) w_ext += rigid_.gravity_work(model_.bcs.gravity);  // see gravity_work()
   kinetic += rigid_.kinetic_energy();
   w_ext += rigid_.contact_work() + rigid_.joint_work();
   const double err = energy_.update(kinetic, total_internal_energy(), w_ext);
@@ -507,7 +511,7 @@ RunSummary CentralDifference::run() {
     if (opt_.contact) opt_.contact->end_step(s_, dt);
     for (StateLoad* load : opt_.loads) load->end_step(s_, dt);
     last_dt_ = dt;
-    load_work_.after_step(s_, t_n, s_.t);
+    load_work_.after_step(s_, t_n, s_.t, owned_nodes());
     count_step(step, t_n);
     track_separation();
     if (auto bad = check(energy_check)) {

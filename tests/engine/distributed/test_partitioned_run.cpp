@@ -90,25 +90,73 @@ fs::path short_dcr_scene(const test::TempDir& tmp) {
   return short_scene(tmp, "ball_on_plate_dcr.toml", 3e-4, 5e-5, "");
 }
 
+// What a comparison varies: the scene's edits, the ranks, the column that shows the contact acted
+// (a pair's work, or the analytic sphere's force), and columns compared beside the energies and
+// tracked displacements (a rigid body's pose, velocities and impulses, held to the displacements'
+// 1e-10).
+struct SameRun {
+  std::string restitution;
+  std::function<std::string(std::string)> edit;
+  int ranks = 2;
+  std::string contact_column = "contact.work";
+  std::vector<std::string> also;
+
+  SameRun with_restitution(std::string e) && {
+    restitution = std::move(e);
+    return std::move(*this);
+  }
+  SameRun with_edit(std::function<std::string(std::string)> f) && {
+    edit = std::move(f);
+    return std::move(*this);
+  }
+  SameRun on_ranks(int n) && {
+    ranks = n;
+    return std::move(*this);
+  }
+  SameRun contact_in(std::string column) && {
+    contact_column = std::move(column);
+    return std::move(*this);
+  }
+  SameRun comparing(std::vector<std::string> columns) && {
+    also = std::move(columns);
+    return std::move(*this);
+  }
+};
+
+double summary_number(const fs::path& summary, const std::string& key) {
+  std::istringstream in(file_text(summary));
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(key + " = ", 0) == 0) return std::stod(line.substr(key.size() + 3));
+  FAIL("no " << key << " in " << summary);
+  return 0.0;
+}
+
 // Returns the serial run's history.
 History require_same_run(const std::string& example, double end, double interval,
-                         const std::string& restitution = "",
-                         const std::function<std::string(std::string)>& edit = {}) {
+                         const SameRun& how = {}) {
   const std::string mpi = mpiexec();
   test::TempDir tmp;
-  const fs::path scene = short_scene(tmp, example, end, interval, restitution, edit);
+  const fs::path scene = short_scene(tmp, example, end, interval, how.restitution, how.edit);
   const fs::path serial = tmp.path / "serial", ranks = tmp.path / "ranks";
   REQUIRE(shell(fmt::format("'{}' run '{}' --out '{}' --quiet", CCM_BINARY, scene.string(),
                             serial.string())) == 0);
-  REQUIRE(shell(fmt::format("{} -n 2 '{}' run '{}' --out '{}' --quiet > '{}' 2>&1", mpi, CCM_BINARY,
-                            scene.string(), ranks.string(), (tmp.path / "mpi.log").string())) == 0);
+  REQUIRE(shell(fmt::format("{} -n {} '{}' run '{}' --out '{}' --quiet > '{}' 2>&1", mpi, how.ranks,
+                            CCM_BINARY, scene.string(), ranks.string(),
+                            (tmp.path / "mpi.log").string())) == 0);
   INFO(file_text(tmp.path / "mpi.log"));
   // Written once, by rank 0: the same three files as a serial run, and it was partitioned.
   int files = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(ranks)) ++files;
   CHECK(files == 3);
   CHECK(file_text(ranks / "summary.toml").find("[partition]") != std::string::npos);
-  CHECK(file_text(ranks / "summary.toml").find("ranks = 2") != std::string::npos);
+  CHECK(file_text(ranks / "summary.toml").find(fmt::format("ranks = {}", how.ranks)) !=
+        std::string::npos);
+  // The energy balance sums every term once whatever the partition (a rigid body's gravity work
+  // and loads are stepped on every rank and counted once): its error agrees to 1e-6 of itself.
+  const double balance = summary_number(serial / "summary.toml", "energy_balance_error");
+  CHECK(std::abs(summary_number(ranks / "summary.toml", "energy_balance_error") - balance) <=
+        1e-6 * balance);
 
   const History a = read_history(serial / "history.csv");
   const History b = read_history(ranks / "history.csv");
@@ -119,10 +167,11 @@ History require_same_run(const std::string& example, double end, double interval
                                a.columns.begin());
   };
   // Contact acted within the window: cross-partition contact is exercised.
-  double contact_work = 0.0;
+  REQUIRE(column(how.contact_column) < a.columns.size());
+  double contact_acted = 0.0;
   for (const auto& r : a.rows)
-    contact_work = std::max(contact_work, std::abs(r[column("contact.work")]));
-  REQUIRE(contact_work > 0.0);
+    contact_acted = std::max(contact_acted, std::abs(r[column(how.contact_column)]));
+  REQUIRE(contact_acted > 0.0);
   // The energies are held to 1e-12 of the run's energy scale (the largest energy of any column,
   // as the energy balance scales its error): a body's stored energy is a sum over its elements
   // that the partition adds in another order, so its round-off is n eps of its own size, and a
@@ -140,7 +189,8 @@ History require_same_run(const std::string& example, double end, double interval
     // terms, up to 1e-12 of its net value (7.5e-13 measured on the DCR scene), so it is held to
     // the displacements' 1e-10.
     const bool tracked = ends_with(name, ".ux") || ends_with(name, ".uy") ||
-                         ends_with(name, ".uz") || name == "contact.work";
+                         ends_with(name, ".uz") || name == how.contact_column ||
+                         std::find(how.also.begin(), how.also.end(), name) != how.also.end();
     if (!energy && !tracked) continue;
     double scale = 0.0, diff = 0.0;
     for (size_t i = 0; i < a.rows.size(); ++i) {
@@ -152,7 +202,8 @@ History require_same_run(const std::string& example, double end, double interval
     CHECK(diff <= (energy ? 1e-12 : 1e-10) * scale);
     ++compared;
   }
-  CHECK(compared >= 6);  // per body KE and IE, contact work, a tracked node's u
+  CHECK(compared >= 6 + static_cast<int>(how.also.size()));  // per body KE and IE, contact
+                                                             // work, a tracked node's u
   return a;
 }
 
@@ -170,7 +221,8 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR ball on a clamped pla
 // exchange, e = 1) to -4.4e-3 J (measured, serial).
 TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR with a body-pair restitution",
           "[distributed][mpi][cli][restitution]") {
-  const History serial = require_same_run("ball_on_plate_dcr.toml", 4e-3, 1e-4, "0.1");
+  const History serial =
+      require_same_run("ball_on_plate_dcr.toml", 4e-3, 1e-4, SameRun{}.with_restitution("0.1"));
   const auto work =
       static_cast<size_t>(std::find(serial.columns.begin(), serial.columns.end(), "contact.work") -
                           serial.columns.begin());
@@ -180,7 +232,7 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR with a body-pair rest
 
 TEST_CASE("mpiexec -n 2 ccm run equals the serial run: rigid sphere (penalty) on a plate",
           "[distributed][mpi][cli]") {
-  require_same_run("sphere_on_plate.toml", 8e-4, 5e-5);
+  require_same_run("sphere_on_plate.toml", 8e-4, 5e-5, SameRun{}.contact_in("ball.contact_force"));
 }
 
 // Two contact pairs in one partitioned run (a ContactSet replicated on every rank): the DCR
@@ -201,7 +253,8 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR and penalty pairs in 
            "velocity = [0.0, 0.0, -3.0]\n\n" +
            text.substr(end);
   };
-  const History serial = require_same_run("ball_on_plate_dcr.toml", 6e-4, 5e-5, "", pairs);
+  const History serial =
+      require_same_run("ball_on_plate_dcr.toml", 6e-4, 5e-5, SameRun{}.with_edit(pairs));
   // The pebble (0.5 mm above the plate at 3 m/s) struck it within the window: both pairs acted.
   const auto force = static_cast<size_t>(
       std::find(serial.columns.begin(), serial.columns.end(), "pebble.contact_force") -
@@ -210,6 +263,105 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR and penalty pairs in 
   double largest = 0.0;
   for (const auto& r : serial.rows) largest = std::max(largest, std::abs(r[force]));
   CHECK(largest > 0.0);
+}
+
+// A rigid body in a partitioned run is whole on every rank (rank 0 owns its nodes, the others
+// hold replicas) and stepped alike from the same complete forces (engine/distributed/
+// subdomain.hpp). The columns compared beside the energies: its pose, velocities and the contact
+// impulse it took.
+const std::vector<std::string> kRigidBallColumns = {"ball.x",
+                                                    "ball.z",
+                                                    "ball.vx",
+                                                    "ball.vz",
+                                                    "ball.wx",
+                                                    "ball.wy",
+                                                    "ball.contact_impulse_z",
+                                                    "ball.contact_force_z"};
+
+std::string rigid_ball(std::string text) {
+  const std::string velocity = "initial_velocity = [0.0, 0.0, -3.0]   # m/s\n";
+  const auto at = text.find(velocity);
+  REQUIRE(at != std::string::npos);
+  return text.insert(at + velocity.size(), "kind = \"rigid\"\n");
+}
+
+// A surface load on the rigid ball, pushing it along x and down from t = 0: the replicas carry it,
+// rank 0 alone counts its work.
+std::string pushed(std::string text) {
+  const auto at = text.find("\n[contact]\n") + 1;
+  REQUIRE(at > 0);
+  return text.insert(at,
+                     "[[surface_loads]]\nname = \"push\"\nbody = \"ball\"\nplane = { point = "
+                     "[0.03, 0.03, 0.0185], normal = [1.0, 0.0, 0.0], tolerance = 0.011 }\n"
+                     "direction = [1.0, 0.0, -1.0]\nforce = [[0.0, 0.0], [3e-4, 40.0]]\n\n");
+}
+
+TEST_CASE("mpiexec ccm run equals the serial run: a free rigid ball (DCR) pushed onto a plate",
+          "[distributed][mpi][cli][rigid]") {
+  for (const int ranks : {2, 3}) {
+    INFO(ranks << " ranks");
+    const History serial = require_same_run(
+        "ball_on_plate_dcr.toml", 6e-4, 5e-5,
+        SameRun{}
+            .with_edit([](std::string t) { return pushed(rigid_ball(std::move(t))); })
+            .on_ranks(ranks)
+            .comparing(kRigidBallColumns));
+    // The ball took the plate's impulses and turned: the DCR's impulses reached the body.
+    const auto impulse = static_cast<size_t>(
+        std::find(serial.columns.begin(), serial.columns.end(), "ball.contact_impulse_z") -
+        serial.columns.begin());
+    REQUIRE(impulse < serial.columns.size());
+    CHECK(serial.rows.back()[impulse] > 1e-3);  // N s, of 0.0147 kg x 3 m/s = 0.044 N s
+  }
+}
+
+// The penalty pair against a free meshed rigid ball under gravity: the springs' reaction on the
+// replicas, the body's gravity work counted once.
+TEST_CASE("mpiexec -n 2 ccm run equals the serial run: a free rigid ball on the penalty",
+          "[distributed][mpi][cli][rigid]") {
+  const auto penalty = [](std::string text) {
+    text = rigid_ball(std::move(text));
+    const auto at = text.find("\n[contact]\n") + 1;
+    const auto end = text.find("\n[output]\n") + 1;
+    REQUIRE(at > 0);
+    REQUIRE(end > at);
+    return text.substr(0, at) +
+           "[contact]\nmodel = \"rigid_penalty\"\nbody = \"plate\"\nrigid = \"ball\"\n"
+           "penalty = 2.0e4\ndamping = 0.1\n\n[gravity]\nacceleration = [0.0, 0.0, -9.81]\n\n" +
+           text.substr(end);
+  };
+  require_same_run("ball_on_plate_dcr.toml", 6e-4, 5e-5,
+                   SameRun{}.with_edit(penalty).comparing(
+                       {"ball.z", "ball.vz", "ball.wx", "ball.wy", "contact.rigid_force_z"}));
+}
+
+// The example with a DCR pair (pad on limb) and a penalty pair against a fixed rigid table, on the
+// linear tet (a partitioned run refuses the nodal-pressure tet, below).
+TEST_CASE("mpiexec -n 2 ccm run equals the serial run: pad on limb on a rigid table",
+          "[distributed][mpi][cli][rigid]") {
+  const auto linear_tets = [](std::string text) {
+    const std::string element = "element = \"nodal_pressure\"";
+    const auto at = text.find(element);
+    REQUIRE(at != std::string::npos);
+    return text.erase(at, element.size());
+  };
+  require_same_run("pad_limb_table_pairs.toml", 2e-3, 1e-4,
+                   SameRun{}.with_edit(linear_tets).contact_in("pad_limb.work"));
+}
+
+TEST_CASE("mpiexec: a partitioned run refuses the nodal-pressure tet before any step",
+          "[distributed][mpi][cli]") {
+  const std::string mpi = mpiexec();
+  test::TempDir tmp;
+  const fs::path scene = short_scene(tmp, "pad_limb_table_pairs.toml", 2e-3, 1e-4, "");
+  const fs::path out = tmp.path / "out", log = tmp.path / "mpi.log";
+  const int code = shell(fmt::format("{} -n 2 '{}' run '{}' --out '{}' --quiet > '{}' 2>&1", mpi,
+                                     CCM_BINARY, scene.string(), out.string(), log.string()));
+  INFO(file_text(log));
+  CHECK(code == 2);  // exit_code::bad_input, not an internal error
+  CHECK(file_text(log).find("nodal_pressure") != std::string::npos);
+  CHECK(file_text(log).find("'limb'") != std::string::npos);
+  CHECK(!fs::exists(out));
 }
 
 // Under mpiexec only rank 0 has the standard input: a scene piped to `ccm run -` is read by rank

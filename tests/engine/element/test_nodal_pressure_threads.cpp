@@ -127,6 +127,7 @@ TEST_CASE("A partitioned run refuses a nodal-pressure body before it starts",
   const Model model = make_model(std::move(mesh));
   RunOptions opt;
   opt.time.end_time = 1e-4;
-  CHECK_THROWS_WITH(distributed::run_partitioned(model, opt),
-                    "a partitioned run does not support element nodal_pressure yet (body 'pad')");
+  CHECK_THROWS_WITH(
+      distributed::run_partitioned(model, opt),
+      Catch::Contains("does not support element = \"nodal_pressure\" yet (body 'pad')"));
 }
