@@ -150,6 +150,20 @@ Impact run(const Model& model, ContactModel& contact, double sphere_mass, bool m
   return out;
 }
 
+// The largest depth of a face of a sphere's surface mesh below the sphere: R - d, d the face
+// plane's distance from the centre.
+double largest_facet_sag(const ModelMesh& mesh, const Body& ball, const Vec3& centre, double R) {
+  double largest = 0.0;
+  for (const Triangle& t : ball.boundary) {
+    const Vec3& a = mesh.X[static_cast<size_t>(t[0])];
+    const Vec3 normal = (mesh.X[static_cast<size_t>(t[1])] - a)
+                            .cross(mesh.X[static_cast<size_t>(t[2])] - a)
+                            .normalized();
+    largest = std::max(largest, R - std::abs(normal.dot(a - centre)));
+  }
+  return largest;
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -165,10 +179,17 @@ TEST_CASE(
   RigidBodyModel ball = make_rigid(mesh, 1, RigidMotion::free);
   ball.velocity = Vec3(0.0, 0.0, -kBallSpeed);
   const double mass = ball.mass.mass;
+  const double largest_sag = largest_facet_sag(mesh, mesh.bodies[1], kCentre, kBallRadius);
   Model meshed = make_model(std::move(mesh));
   meshed.rigid_bodies = {ball};
+  // Springs with dashpots at critical damping (zeta = 1, as the study grids' rigid model,
+  // docs/grid-file.md): with bare springs the surface nodes chatter, and each run's final state
+  // moved by 1.4-2.3 % with the step schedule alone (dt_safety 0.8-0.9, outputs every 0.25 or
+  // 1 ms; measured 7 December 2026), more than the faceting this test measures. With the
+  // dashpots, 0.05-0.3 % for the analytic sphere, up to 1.5 % in the meshed one's u_max.
   RigidSurfacePenaltyParams p;
   p.penalty = 1e6;
+  p.damping = 1.0;
   RigidSurfacePenalty penalty(meshed.mesh, meshed.mesh.surfaces.at("artifact/boundary").triangles,
                               1, p);
   const Impact m = run(meshed, penalty, mass, true);
@@ -183,6 +204,7 @@ TEST_CASE(
   q.sphere = {kBallRadius, mass, kCentre + (ball.mass.center - kCentre),
               Vec3(0.0, 0.0, -kBallSpeed)};
   q.penalty = 1e6;
+  q.damping = 1.0;
   RigidSpherePenalty sphere(analytic.mesh.surfaces.at("artifact/boundary").triangles, q);
   const Impact a = run(analytic, sphere, mass, false);
   REQUIRE(a.summary.verdict == Verdict::completed);
@@ -201,16 +223,19 @@ TEST_CASE(
        << ", u_mean " << m.u_mean << " / " << a.u_mean << ", u_max " << m.u_max << " / " << a.u_max
        << ", steps " << m.summary.steps << " / " << a.summary.steps);
   CHECK(peak > 0.1 * 0.5 * mass * kBallSpeed * kBallSpeed);
-  // The three final-state metrics (the trade study's, eq. 2.39) within 1 %: the meshed sphere is
-  // an inscribed polyhedron (chordal sag s^2 / 8R = 0.03 mm at s = 1.5 mm, 0.7 % of the 4.3 mm
-  // largest displacement) and the penalty acts on its faces' distance, not the sphere's.
+  // The three final-state metrics (the trade study's, eq. 2.39). The meshed sphere is an
+  // inscribed polyhedron and the penalty acts on its faces' distance, not the sphere's: where a
+  // face touches, the artifact is pressed less deep by up to that face's sag R - d (d: the face
+  // plane's distance from the centre; 0.036 mm on average, 0.15 mm at most on this mesh, 0.8 %
+  // and 3.5 % of the 4.3 mm largest displacement). The largest displacement is held to the
+  // largest sag (measured over six step schedules: 0.6-2.1 % lower); the kinetic energy and the
+  // mean displacement, sums over the whole artifact, to 1 % (measured 0.0-0.6 %).
   auto relative = [](double x, double y) { return std::abs(x - y) / std::abs(y); };
   CHECK(relative(m.ke.back(), a.ke.back()) < 0.01);
   CHECK(relative(m.u_mean, a.u_mean) < 0.01);
-  CHECK(relative(m.u_max, a.u_max) < 0.01);
-  // The kinetic-energy history: the first contact of a faceted cap chatters differently on the
-  // surface nodes (largest gap at 4 ms, 13 % of the peak); over the whole history, 5 %.
-  CHECK(l2 < 0.05);
+  CHECK(std::abs(m.u_max - a.u_max) < largest_sag);
+  // The kinetic-energy history: 0.9-1.2 % over the six schedules; 2 %.
+  CHECK(l2 < 0.02);
   // Momentum: the penalty's forces act in equal and opposite pairs (round-off, 1e-9).
   CHECK((m.momentum_end - m.momentum_0).norm() < 1e-9 * m.momentum_0.norm());
 }
