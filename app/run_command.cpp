@@ -390,10 +390,6 @@ int run(const RunArgs& args, const study::RankContext& ranks) {
           "partitioned over MPI ranks: run it on one rank");
     if (ranks.size() > 1)
       if (auto why = distributed::partition_refusal(p.model)) throw UsageError(*why);
-    if (ranks.size() > 1 && !p.joints.empty())
-      throw UsageError(
-          "a scene with [[joints]] does not yet run partitioned over MPI ranks: run it on one "
-          "rank (threads still apply)");
   } catch (...) {
     failure = std::current_exception();
   }

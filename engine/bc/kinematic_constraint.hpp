@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 #include "engine/core/state.hpp"
 
@@ -19,6 +20,9 @@ class KinematicConstraint {
  public:
   virtual ~KinematicConstraint() = default;
   virtual std::string_view name() const = 0;
+  // The nodes it reads and writes (a partitioned run gathers them onto every rank,
+  // engine/distributed/replicated_constraint.hpp).
+  virtual const std::vector<int>& nodes() const = 0;
 
   // Called once with the initial state (after the first evaluation): masses are known; the
   // constraint may correct the initial velocities and accelerations of its nodes.

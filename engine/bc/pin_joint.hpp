@@ -63,6 +63,7 @@ class PinJoint : public KinematicConstraint {
   PinJoint(PinJointSpec spec, const std::vector<Vec3>& X);
 
   std::string_view name() const override { return "pin_joint"; }
+  const std::vector<int>& nodes() const override { return spec_.nodes; }
   void initialise(State& s) override;
   void apply(State& s, double dt) override;
   double work() const override { return work_; }

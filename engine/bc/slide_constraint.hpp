@@ -22,7 +22,7 @@ class SlideConstraint : public KinematicConstraint {
   void initialise(State& s) override;
   void apply(State& s, double dt) override;
 
-  const std::vector<int>& nodes() const { return nodes_; }
+  const std::vector<int>& nodes() const override { return nodes_; }
   const Vec3& direction() const { return d_; }
 
  private:

@@ -41,6 +41,7 @@ class TrackFriction : public KinematicConstraint {
   explicit TrackFriction(TrackFrictionSpec spec);
 
   std::string_view name() const override { return "track_friction"; }
+  const std::vector<int>& nodes() const override { return spec_.nodes; }
   void initialise(State& s) override;
   void apply(State& s, double dt) override;
   double work() const override { return work_; }

@@ -8,6 +8,7 @@
 
 #include "engine/distributed/halo_coupling.hpp"
 #include "engine/distributed/partition.hpp"
+#include "engine/distributed/replicated_constraint.hpp"
 #include "engine/distributed/subdomain.hpp"
 
 namespace ccm::distributed {
@@ -75,9 +76,8 @@ std::optional<std::string> partition_refusal(const Model& global) {
 
 RunSummary run_partitioned(const Model& global, const RunOptions& options,
                            PartitionReport* report) {
-  if (!options.constraints.empty() || !options.loads.empty())
-    throw std::invalid_argument(
-        "a partitioned run supports no kinematic constraints or state loads yet");
+  if (!options.loads.empty())
+    throw std::invalid_argument("a partitioned run supports no state loads yet");
   if (auto why = partition_refusal(global)) throw std::invalid_argument(*why);
   const int rank = world_rank(), size = world_size();
   const std::vector<int> part = partition_elements(global.mesh, size);
@@ -87,12 +87,22 @@ RunSummary run_partitioned(const Model& global, const RunOptions& options,
   HaloCoupling coupling(d, owners, global.mesh, rank == 0 ? options.history : nullptr,
                         rank == 0 ? options.on_sample : SampleFn{},
                         options.history != nullptr || static_cast<bool>(options.on_sample), times);
+  std::vector<int> constrained;  // every joint's nodes
+  for (const KinematicConstraint* c : options.constraints)
+    constrained.insert(constrained.end(), c->nodes().begin(), c->nodes().end());
   std::unique_ptr<ReplicatedContact> replicated;
   if (options.contact)
-    replicated =
-        std::make_unique<ReplicatedContact>(*options.contact, contact_region(global.mesh), d,
-                                            owners, global.mesh, global.bcs.fixed_nodes, times);
+    replicated = std::make_unique<ReplicatedContact>(*options.contact, contact_region(global.mesh),
+                                                     d, owners, global.mesh, global.bcs.fixed_nodes,
+                                                     times, constrained);
+  std::vector<std::unique_ptr<ReplicatedConstraint>> constraints;
   RunOptions local = options;
+  local.constraints.clear();
+  for (KinematicConstraint* c : options.constraints) {
+    constraints.push_back(
+        std::make_unique<ReplicatedConstraint>(*c, d, owners, global.mesh, times));
+    local.constraints.push_back(constraints.back().get());
+  }
   local.coupling = &coupling;
   local.contact = replicated.get();
   local.history = nullptr;

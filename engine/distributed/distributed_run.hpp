@@ -42,10 +42,10 @@ struct PartitionReport {
 // the neighbours' share at every shared node before the pressures), or nothing.
 std::optional<std::string> partition_refusal(const Model& global);
 
-// Every rank calls it with the same global model and options (contact: the rank's own copy of the
-// global contact model). The summary is the global one, the same on every rank. Throws
-// std::invalid_argument for what a partitioned run does not support (kinematic constraints,
-// state loads, partition_refusal).
+// Every rank calls it with the same global model and options (contact and constraints: the rank's
+// own copies of the global ones, replicated_contact.hpp, replicated_constraint.hpp). The summary
+// is the global one, the same on every rank. Throws std::invalid_argument for what a partitioned
+// run does not support (state loads, partition_refusal).
 RunSummary run_partitioned(const Model& global, const RunOptions& options,
                            PartitionReport* report = nullptr);
 

@@ -10,21 +10,6 @@ namespace {
 constexpr int kStateWidth = 10;        // x, v, a, m per node: once at the start, and the rest
 constexpr int kAccelerationWidth = 3;  // a per node: every step
 
-GatherPlan make_plan(const std::vector<int>& nodes, const Subdomain& d,
-                     const std::vector<int>& owners, const std::vector<int>& local_of) {
-  std::vector<std::vector<int>> owned_by(static_cast<size_t>(d.n_ranks));
-  for (int g : nodes) owned_by[static_cast<size_t>(owners[static_cast<size_t>(g)])].push_back(g);
-  GatherPlan plan;
-  for (int g : owned_by[static_cast<size_t>(d.rank)])
-    plan.owned_local.push_back(local_of[static_cast<size_t>(g)]);
-  for (const std::vector<int>& list : owned_by) {
-    plan.counts.push_back(static_cast<int>(list.size()));
-    plan.displs.push_back(static_cast<int>(plan.global.size()));
-    plan.global.insert(plan.global.end(), list.begin(), list.end());
-  }
-  return plan;
-}
-
 void pack_state(const State& s, size_t l, double* p) {
   for (int c = 0; c < 3; ++c) {
     p[c] = s.x[l][c];
@@ -58,7 +43,8 @@ std::vector<int> contact_region(const ModelMesh& mesh) {
 ReplicatedContact::ReplicatedContact(ContactModel& inner, const std::vector<int>& region,
                                      const Subdomain& subdomain, const std::vector<int>& owners,
                                      const ModelMesh& global_mesh,
-                                     const std::vector<int>& fixed_nodes, PhaseTimes& times)
+                                     const std::vector<int>& fixed_nodes, PhaseTimes& times,
+                                     const std::vector<int>& constrained_nodes)
     : ContactModel(inner.name(), inner.phases()),
       inner_(inner),
       times_(times),
@@ -80,8 +66,14 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, const std::vector<int>
   std::vector<int> rest;
   for (size_t g = 0; g < in_region.size(); ++g)
     if (!in_region[g]) rest.push_back(static_cast<int>(g));
-  region_ = make_plan(region, subdomain, owners, local_of_);
-  rest_ = make_plan(rest, subdomain, owners, local_of_);
+  region_ = make_gather_plan(region, subdomain, owners, local_of_);
+  std::vector<char> constrained(global_mesh.X.size(), 0);
+  for (int g : constrained_nodes) constrained[static_cast<size_t>(g)] = 1;
+  std::vector<int> constrained_region;
+  for (int g : region)
+    if (constrained[static_cast<size_t>(g)]) constrained_region.push_back(g);
+  constrained_ = make_gather_plan(constrained_region, subdomain, owners, local_of_);
+  rest_ = make_gather_plan(rest, subdomain, owners, local_of_);
   const size_t n = global_mesh.X.size();
   view_.X = global_mesh.X;
   view_.x = global_mesh.X;
@@ -98,17 +90,11 @@ void ReplicatedContact::allgather(const GatherPlan& plan, int width, Pack pack,
                                   Unpack unpack) const {
   const auto w = static_cast<size_t>(width);
   send_.resize(w * plan.owned_local.size());
-  receive_.resize(w * plan.global.size());
   for (size_t k = 0; k < plan.owned_local.size(); ++k)
     pack(static_cast<size_t>(plan.owned_local[k]), send_.data() + w * k);
   {
-    ScopedTimer timer(times_.communication), contact_timer(times_.contact_communication);
-    std::vector<int> counts(plan.counts), displs(plan.displs);
-    for (int& c : counts) c *= width;
-    for (int& d : displs) d *= width;
-    ++times_.collectives;
-    MPI_Allgatherv(send_.data(), static_cast<int>(send_.size()), MPI_DOUBLE, receive_.data(),
-                   counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+    ScopedTimer contact_timer(times_.contact_communication);
+    allgather_nodes(plan, width, send_, receive_, times_);
   }
   for (size_t k = 0; k < plan.global.size(); ++k)
     unpack(static_cast<size_t>(plan.global[k]), receive_.data() + w * k);
@@ -201,6 +187,16 @@ void ReplicatedContact::take_rigid_bodies(const State& local) const {
     view_.v[g] = local.v[l];
     view_.a[g] = local.a[l];
   }
+}
+
+// The integrator's joints (kinematic constraints) move their nodes after the contact correction
+// (step 4): the view's finish of those nodes is not the integrator's, so at the end of a step
+// their x, v, a come from their owners, whose state is then final.
+void ReplicatedContact::take_constrained(const State& local) const {
+  if (constrained_.global.empty()) return;
+  allgather(
+      constrained_, kStateWidth, [&](size_t l, double* p) { pack_state(local, l, p); },
+      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
 }
 
 void ReplicatedContact::copy_to_local(size_t g, State& local) const {
@@ -340,9 +336,9 @@ void ReplicatedContact::make_nodes_current(std::span<const int> nodes) {
 }
 
 // What the integrator does after the contact correction (engine/solver/explicit_integrator.cpp:
-// the fixed nodes, then v_{n+1} = v* + dt/2 a_{n+1}, eq. 2.31; a partitioned run has no kinematic
-// constraints), done on the region of the view with the same arithmetic: the view then holds the
-// state at t_{n+1} bit for bit.
+// the fixed nodes, then v_{n+1} = v* + dt/2 a_{n+1}, eq. 2.31), done on the region of the view
+// with the same arithmetic: the view then holds the state at t_{n+1} bit for bit, but at the
+// joints' nodes (taken from their owners after it, take_constrained).
 void ReplicatedContact::finish_node(size_t g, double half_dt) {
   if (fixed_[g]) {
     view_.x[g] = view_.X[g];
@@ -369,6 +365,7 @@ void ReplicatedContact::end_step(const State& state, double dt) {
     });
   }
   finished_ = false;
+  contact_time([&] { take_constrained(state); });
   take_rigid_bodies(state);
   contact_time([&] { inner_.end_step(view_, dt); });
   ledger_ = inner_.ledger();

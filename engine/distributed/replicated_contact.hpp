@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/contact/contact_model.hpp"
+#include "engine/distributed/node_gather.hpp"
 #include "engine/distributed/phase_times.hpp"
 #include "engine/distributed/subdomain.hpp"
 
@@ -26,21 +27,16 @@ namespace ccm::distributed {
 // Sorted global ids.
 std::vector<int> contact_region(const ModelMesh& mesh);
 
-// A set of nodes gathered from their owners onto every rank: this rank's part (local ids) and
-// every rank's, in rank order (global ids), with the counts and offsets per rank in nodes.
-struct GatherPlan {
-  std::vector<int> owned_local;
-  std::vector<int> global;
-  std::vector<int> counts, displs;
-};
-
 class ReplicatedContact final : public ContactModel, public ReplicaTeam {
  public:
   // inner: the model built on the global mesh (every rank has its own, identical one).
-  // fixed_nodes: the global model's.
+  // fixed_nodes: the global model's. constrained_nodes: the nodes the run's kinematic
+  // constraints (joints) move after the contact correction, in global ids; the view takes their
+  // end-of-step state from their owners instead of finishing them itself.
   ReplicatedContact(ContactModel& inner, const std::vector<int>& region, const Subdomain& subdomain,
                     const std::vector<int>& owners, const ModelMesh& global_mesh,
-                    const std::vector<int>& fixed_nodes, PhaseTimes& times);
+                    const std::vector<int>& fixed_nodes, PhaseTimes& times,
+                    const std::vector<int>& constrained_nodes = {});
 
   void begin_step(const State& state, double dt) override;
   void add_forces(State& state) override;
@@ -75,6 +71,7 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   void predict_node(size_t g, double dt, double half_dt) const;    // eq. 2.27-2.28 on node g
   void catch_up(double dt) const;                                  // replays the predictor when due
   void take_rigid_bodies(const State& local) const;  // rigid bodies' nodes and states from local
+  void take_constrained(const State& local) const;   // the joints' nodes, from their owners
   void copy_to_local(size_t g, State& local) const;  // x, v, a of g into its local copy, if any
   void scatter(std::span<const int> nodes, State& local) const;  // x, v, a into the local copies
   void finish_step(double dt);  // the integrator's fixed nodes and velocity correction
@@ -89,6 +86,7 @@ class ReplicatedContact final : public ContactModel, public ReplicaTeam {
   PhaseTimes& times_;
   int rank_ = 0, size_ = 1;
   GatherPlan region_, rest_;       // the contact region; every other node
+  GatherPlan constrained_;         // the region's nodes a joint moves
   std::vector<int> local_of_;      // per global node: its local id here, or -1
   std::vector<int> owner_;         // per global node: its owner rank
   std::vector<char> current_;      // per global node: in the region, or fetched in this correct()

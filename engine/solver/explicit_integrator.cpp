@@ -429,7 +429,10 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   const bool replicated_contact = opt_.contact && opt_.coupling;
   double w_ext = load_work_.work() + gravity_work() +
                  (opt_.contact && !replicated_contact ? opt_.contact->ledger().work : 0.0);
-  for (const KinematicConstraint* c : opt_.constraints) w_ext += c->work();
+  // A partitioned run's constraints are replicated (every rank holds the same work): added once,
+  // after the sums over domains.
+  if (!opt_.coupling)
+    for (const KinematicConstraint* c : opt_.constraints) w_ext += c->work();
   for (const StateLoad* load : opt_.loads) w_ext += load->work();
   double kinetic = leapfrog_kinetic_energy(s_, last_dt_, threads_, owned_nodes());
   if (opt_.coupling) {
@@ -442,7 +445,10 @@ std::optional<Instability> CentralDifference::check(bool energy_check) {
   }
   if (not_finite) return not_finite;
   if (replicated_contact) w_ext += opt_.contact->ledger().work;
-  if (opt_.coupling) w_ext += rigid_.gravity_work(model_.bcs.gravity);  // see gravity_work()
+  if (opt_.coupling) {
+    w_ext += rigid_.gravity_work(model_.bcs.gravity);  // see gravity_work()
+    for (const KinematicConstraint* c : opt_.constraints) w_ext += c->work();
+  }
   kinetic += rigid_.kinetic_energy();
   w_ext += rigid_.contact_work() + rigid_.joint_work();
   const double err = energy_.update(kinetic, total_internal_energy(), w_ext);
