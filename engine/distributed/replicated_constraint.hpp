@@ -26,7 +26,7 @@ class ReplicatedConstraint final : public KinematicConstraint {
   const std::vector<int>& nodes() const override { return inner_.nodes(); }
   void initialise(State& local) override;
   void apply(State& local, double dt) override;
-  // The same on every rank: a sum of works over the ranks counts it once per rank.
+  // The same on every rank: the integrator adds it once, after its sums over the domains.
   double work() const override { return inner_.work(); }
 
  private:

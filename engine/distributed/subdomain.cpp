@@ -152,10 +152,9 @@ Subdomain make_subdomain(const Model& global, const std::vector<int>& element_pa
   Subdomain d;
   d.rank = rank;
   d.n_ranks = n_ranks;
-  // Local nodes: owned (lowest touching rank is this one) first, then the copies; each group in
-  // ascending global id.
-  // A rigid body's nodes are rank 0's (partition.hpp); every other rank holds them as replicas,
-  // after its copies.
+  // Local nodes: owned (lowest touching rank is this one) first, then the copies, then (on ranks
+  // other than 0) a rigid body's replicas: its elements are all rank 0's (partition.hpp); each
+  // group in ascending global id.
   std::vector<int> owned, copies, replicas;
   for (size_t n = 0; n < mesh.X.size(); ++n) {
     const auto rs = ranks_of(n);
@@ -168,12 +167,12 @@ Subdomain make_subdomain(const Model& global, const std::vector<int>& element_pa
   d.owned_nodes = static_cast<int>(owned.size());
   d.global_node = owned;
   d.global_node.insert(d.global_node.end(), copies.begin(), copies.end());
-  const std::vector<char> rigid = rigid_elements(mesh);
-  if (rank != 0) d.global_node.insert(d.global_node.end(), replicas.begin(), replicas.end());
+  d.global_node.insert(d.global_node.end(), replicas.begin(), replicas.end());
   std::vector<int> local_of(mesh.X.size(), -1);
   for (size_t l = 0; l < d.global_node.size(); ++l)
     local_of[static_cast<size_t>(d.global_node[l])] = static_cast<int>(l);
 
+  const std::vector<char> rigid = rigid_elements(mesh);  // every rank keeps them
   std::vector<int> local_elements;
   for (size_t e = 0; e < element_part.size(); ++e)
     if (element_part[e] == rank || rigid[e]) local_elements.push_back(static_cast<int>(e));
