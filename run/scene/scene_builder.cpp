@@ -16,6 +16,7 @@
 #include "engine/contact/penalty/rigid_surface_penalty.hpp"
 #include "engine/contact/rigid_sphere_penalty.hpp"
 #include "engine/core/time_table.hpp"
+#include "engine/mesh/locality_order.hpp"
 #include "engine/mesh/readers/mesh_file.hpp"
 
 namespace ccm {
@@ -236,7 +237,7 @@ void apply_initial_velocities(const Scene& scene, Model& model) {
 Model build_model(const Scene& scene) {
   ModelMesh mesh;
   for (const BodySpec& body : scene.bodies) {
-    TetMesh geometry = mesh_body(scene, body);
+    TetMesh geometry = in_locality_order(mesh_body(scene, body));
     add_body(mesh, body.name, material_of(body, geometry), std::move(geometry));
     mesh.bodies.back().element = body.element;
   }
