@@ -1,8 +1,11 @@
 // engine/mesh/locality_order.hpp: the same mesh in spatial order.
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <random>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "engine/mesh/locality_order.hpp"
 #include "engine/mesh/structured_box.hpp"
