@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "engine/distributed/node_gather.hpp"
+
 namespace ccm::distributed {
 namespace {
 
 constexpr int kHaloTag = 17;
-constexpr int kSampleWidth = 10;  // x, v, a, m per node
+constexpr int kSampleWidth = kNodeStateWidth;  // x, v, a, m per node
 
 int communicator_size() {
   int n = 1;
@@ -65,16 +67,7 @@ HaloCoupling::HaloCoupling(const Subdomain& subdomain, const std::vector<int>& o
         kSampleWidth * static_cast<int>(gathered_global_.size());
     gathered_global_.insert(gathered_global_.end(), list.begin(), list.end());
   }
-  if (d_.rank == 0) {
-    const size_t n = global_mesh.X.size();
-    global_.X = global_mesh.X;
-    global_.x = global_mesh.X;
-    global_.v.assign(n, Vec3::Zero());
-    global_.a.assign(n, Vec3::Zero());
-    global_.f.assign(n, Vec3::Zero());
-    global_.m_lumped.assign(n, 0.0);
-    global_.inv_m.assign(n, 0.0);
-  }
+  if (d_.rank == 0) global_ = global_view(global_mesh);
 }
 
 // f_i = sum over the ranks touching i, in ascending rank, of their partial sums: every rank
@@ -153,15 +146,8 @@ void HaloCoupling::sample(const State& local, std::span<const double> body_inter
   }
   if (!samples_wanted_) return;
   std::vector<double> mine(kSampleWidth * static_cast<size_t>(d_.owned_nodes));
-  for (size_t l = 0; l < static_cast<size_t>(d_.owned_nodes); ++l) {
-    double* p = mine.data() + kSampleWidth * l;
-    for (int c = 0; c < 3; ++c) {
-      p[c] = local.x[l][c];
-      p[3 + c] = local.v[l][c];
-      p[6 + c] = local.a[l][c];
-    }
-    p[9] = local.m_lumped[l];
-  }
+  for (size_t l = 0; l < static_cast<size_t>(d_.owned_nodes); ++l)
+    pack_node_state(local, l, mine.data() + kSampleWidth * l);
   std::vector<double> all;
   {
     ScopedTimer timer(times_.communication);
@@ -171,15 +157,9 @@ void HaloCoupling::sample(const State& local, std::span<const double> body_inter
                 gather_counts_.data(), gather_displs_.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   }
   if (d_.rank != 0) return;
-  for (size_t k = 0; k < gathered_global_.size(); ++k) {
-    const auto n = static_cast<size_t>(gathered_global_[k]);
-    const double* p = all.data() + kSampleWidth * k;
-    global_.x[n] = Vec3(p[0], p[1], p[2]);
-    global_.v[n] = Vec3(p[3], p[4], p[5]);
-    global_.a[n] = Vec3(p[6], p[7], p[8]);
-    global_.m_lumped[n] = p[9];
-    global_.inv_m[n] = p[9] > 0.0 ? 1.0 / p[9] : 0.0;  // a rigid body's nodes: 0
-  }
+  for (size_t k = 0; k < gathered_global_.size(); ++k)
+    unpack_node_state(all.data() + kSampleWidth * k, static_cast<size_t>(gathered_global_[k]),
+                      global_);
   global_.t = local.t;
   global_.rigid = local.rigid;  // every rank steps the rigid bodies alike (subdomain.hpp)
   if (history_) history_->sample(global_, body_internal_energy);

@@ -19,6 +19,36 @@ GatherPlan make_gather_plan(const std::vector<int>& nodes, const Subdomain& d,
   return plan;
 }
 
+void pack_node_state(const State& s, size_t local, double* p) {
+  for (int c = 0; c < 3; ++c) {
+    p[c] = s.x[local][c];
+    p[3 + c] = s.v[local][c];
+    p[6 + c] = s.a[local][c];
+  }
+  p[9] = s.m_lumped[local];
+}
+
+void unpack_node_state(const double* p, size_t global, State& view) {
+  view.x[global] = Vec3(p[0], p[1], p[2]);
+  view.v[global] = Vec3(p[3], p[4], p[5]);
+  view.a[global] = Vec3(p[6], p[7], p[8]);
+  view.m_lumped[global] = p[9];
+  view.inv_m[global] = p[9] > 0.0 ? 1.0 / p[9] : 0.0;
+}
+
+State global_view(const ModelMesh& mesh) {
+  const size_t n = mesh.X.size();
+  State view;
+  view.X = mesh.X;
+  view.x = mesh.X;
+  view.v.assign(n, Vec3::Zero());
+  view.a.assign(n, Vec3::Zero());
+  view.f.assign(n, Vec3::Zero());
+  view.m_lumped.assign(n, 0.0);
+  view.inv_m.assign(n, 0.0);
+  return view;
+}
+
 void allgather_nodes(const GatherPlan& plan, int width, const std::vector<double>& send,
                      std::vector<double>& receive, PhaseTimes& times) {
   receive.resize(static_cast<size_t>(width) * plan.global.size());

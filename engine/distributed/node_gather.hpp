@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "engine/core/state.hpp"
 #include "engine/distributed/phase_times.hpp"
 #include "engine/distributed/subdomain.hpp"
 
@@ -22,6 +23,17 @@ struct GatherPlan {
 // The plan for `nodes` (global ids): each from its owner, in ascending order within a rank's share.
 GatherPlan make_gather_plan(const std::vector<int>& nodes, const Subdomain& d,
                             const std::vector<int>& owners, const std::vector<int>& local_of);
+
+// A node's state as gathered: x, v, a and the lumped mass, kNodeStateWidth doubles.
+constexpr int kNodeStateWidth = 10;
+void pack_node_state(const State& s, size_t local, double* p);
+// Into node `global` of a view; inv_m from the mass (0 for a rigid body's massless nodes, as the
+// integrator's).
+void unpack_node_state(const double* p, size_t global, State& view);
+
+// A state in global numbering at the reference positions, at rest, without masses: a view that
+// gathers fill in.
+State global_view(const ModelMesh& mesh);
 
 // Every rank's `send` (width doubles per node of plan.owned_local) joined into `receive` (width
 // doubles per node of plan.global), counted as one collective of communication.

@@ -7,25 +7,8 @@
 namespace ccm::distributed {
 namespace {
 
-constexpr int kStateWidth = 10;        // x, v, a, m per node: once at the start, and the rest
-constexpr int kAccelerationWidth = 3;  // a per node: every step
-
-void pack_state(const State& s, size_t l, double* p) {
-  for (int c = 0; c < 3; ++c) {
-    p[c] = s.x[l][c];
-    p[3 + c] = s.v[l][c];
-    p[6 + c] = s.a[l][c];
-  }
-  p[9] = s.m_lumped[l];
-}
-
-void unpack_state(const double* p, size_t g, State& s) {
-  s.x[g] = Vec3(p[0], p[1], p[2]);
-  s.v[g] = Vec3(p[3], p[4], p[5]);
-  s.a[g] = Vec3(p[6], p[7], p[8]);
-  s.m_lumped[g] = p[9];
-  s.inv_m[g] = p[9] > 0.0 ? 1.0 / p[9] : 0.0;  // a rigid body's nodes: 0, as the integrator's
-}
+constexpr int kStateWidth = kNodeStateWidth;  // x, v, a, m per node: at the start, and the rest
+constexpr int kAccelerationWidth = 3;         // a per node: every step
 
 }  // namespace
 
@@ -74,14 +57,7 @@ ReplicatedContact::ReplicatedContact(ContactModel& inner, const std::vector<int>
     if (constrained[static_cast<size_t>(g)]) constrained_region.push_back(g);
   constrained_ = make_gather_plan(constrained_region, subdomain, owners, local_of_);
   rest_ = make_gather_plan(rest, subdomain, owners, local_of_);
-  const size_t n = global_mesh.X.size();
-  view_.X = global_mesh.X;
-  view_.x = global_mesh.X;
-  view_.v.assign(n, Vec3::Zero());
-  view_.a.assign(n, Vec3::Zero());
-  view_.f.assign(n, Vec3::Zero());
-  view_.m_lumped.assign(n, 0.0);
-  view_.inv_m.assign(n, 0.0);
+  view_ = global_view(global_mesh);
   inner_.use_replica_team(*this);
 }
 
@@ -137,8 +113,8 @@ void ReplicatedContact::gather_state(const State& local) const {
   ++times_.region_gathers;
   for (const GatherPlan* plan : {&region_, &rest_})
     allgather(
-        *plan, kStateWidth, [&](size_t l, double* p) { pack_state(local, l, p); },
-        [&](size_t g, const double* p) { unpack_state(p, g, view_); });
+        *plan, kStateWidth, [&](size_t l, double* p) { pack_node_state(local, l, p); },
+        [&](size_t g, const double* p) { unpack_node_state(p, g, view_); });
 }
 
 // The region's a_{n+1} from their owners. When the predictor is still due, it is replayed in the
@@ -195,8 +171,8 @@ void ReplicatedContact::take_rigid_bodies(const State& local) const {
 void ReplicatedContact::take_constrained(const State& local) const {
   if (constrained_.global.empty()) return;
   allgather(
-      constrained_, kStateWidth, [&](size_t l, double* p) { pack_state(local, l, p); },
-      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
+      constrained_, kStateWidth, [&](size_t l, double* p) { pack_node_state(local, l, p); },
+      [&](size_t g, const double* p) { unpack_node_state(p, g, view_); });
 }
 
 void ReplicatedContact::copy_to_local(size_t g, State& local) const {
@@ -295,9 +271,9 @@ void ReplicatedContact::correct(State& state, double dt) {
 void ReplicatedContact::make_whole_bodies_current() {
   if (rest_current_ || local_ == nullptr) return;
   allgather(  // a node fetched before keeps what the model did to it since
-      rest_, kStateWidth, [&](size_t l, double* p) { pack_state(*local_, l, p); },
+      rest_, kStateWidth, [&](size_t l, double* p) { pack_node_state(*local_, l, p); },
       [&](size_t g, const double* p) {
-        if (!current_[g]) unpack_state(p, g, view_);
+        if (!current_[g]) unpack_node_state(p, g, view_);
       });
   rest_current_ = true;
 }
@@ -331,8 +307,8 @@ void ReplicatedContact::make_nodes_current(std::span<const int> nodes) {
     plan.global[static_cast<size_t>(next[q]++)] = g;
   }
   allgather(
-      plan, kStateWidth, [&](size_t l, double* p) { pack_state(*local_, l, p); },
-      [&](size_t g, const double* p) { unpack_state(p, g, view_); });
+      plan, kStateWidth, [&](size_t l, double* p) { pack_node_state(*local_, l, p); },
+      [&](size_t g, const double* p) { unpack_node_state(p, g, view_); });
 }
 
 // What the integrator does after the contact correction (engine/solver/explicit_integrator.cpp:

@@ -132,6 +132,17 @@ double summary_number(const fs::path& summary, const std::string& key) {
   return 0.0;
 }
 
+// The scene text with the lines from the table `from` (a line of its own, not a comment naming it)
+// up to the table `to` replaced by `with`.
+std::string replace_tables(const std::string& text, const std::string& from, const std::string& to,
+                           const std::string& with) {
+  const auto at = text.find("\n" + from) + 1;
+  const auto end = text.find("\n" + to) + 1;
+  REQUIRE(at > 0);
+  REQUIRE(end > at);
+  return text.substr(0, at) + with + text.substr(end);
+}
+
 // Returns the serial run's history.
 History require_same_run(const std::string& example, double end, double interval,
                          const SameRun& how = {}) {
@@ -240,18 +251,14 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: rigid sphere (penalty) on
 // analytic pebble on the penalty dropped on the plate's other corner.
 TEST_CASE("mpiexec -n 2 ccm run equals the serial run: DCR and penalty pairs in one scene",
           "[distributed][mpi][cli][contact]") {
-  const auto pairs = [](std::string text) {
-    const auto at = text.find("\n[contact]\n") + 1;  // the table, not a comment naming it
-    const auto end = text.find("\n[output]\n") + 1;
-    REQUIRE(at > 0);
-    REQUIRE(end > at);
-    return text.substr(0, at) +
-           "[[contact.pairs]]\nname = \"contact\"\nmodel = \"dcr\"\nsurfaces = [\"ball\", "
-           "\"plate\"]\n\n[[contact.pairs]]\nname = \"drop\"\nmodel = \"rigid_penalty\"\n"
-           "body = \"plate\"\npenalty = 1e4\n[contact.pairs.sphere]\nname = \"pebble\"\n"
-           "radius = 0.003\nmass = 0.001\ncenter = [0.01, 0.01, 0.0115]\n"
-           "velocity = [0.0, 0.0, -3.0]\n\n" +
-           text.substr(end);
+  const auto pairs = [](const std::string& text) {
+    return replace_tables(
+        text, "[contact]\n", "[output]\n",
+        "[[contact.pairs]]\nname = \"contact\"\nmodel = \"dcr\"\nsurfaces = [\"ball\", "
+        "\"plate\"]\n\n[[contact.pairs]]\nname = \"drop\"\nmodel = \"rigid_penalty\"\n"
+        "body = \"plate\"\npenalty = 1e4\n[contact.pairs.sphere]\nname = \"pebble\"\n"
+        "radius = 0.003\nmass = 0.001\ncenter = [0.01, 0.01, 0.0115]\n"
+        "velocity = [0.0, 0.0, -3.0]\n\n");
   };
   const History serial =
       require_same_run("ball_on_plate_dcr.toml", 6e-4, 5e-5, SameRun{}.with_edit(pairs));
@@ -316,15 +323,10 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: a free rigid ball (DCR) p
 TEST_CASE("mpiexec -n 2 ccm run equals the serial run: a free rigid ball on the penalty",
           "[distributed][mpi][cli][rigid]") {
   const auto penalty = [](std::string text) {
-    text = rigid_ball(std::move(text));
-    const auto at = text.find("\n[contact]\n") + 1;
-    const auto end = text.find("\n[output]\n") + 1;
-    REQUIRE(at > 0);
-    REQUIRE(end > at);
-    return text.substr(0, at) +
-           "[contact]\nmodel = \"rigid_penalty\"\nbody = \"plate\"\nrigid = \"ball\"\n"
-           "penalty = 2.0e4\ndamping = 0.1\n\n[gravity]\nacceleration = [0.0, 0.0, -9.81]\n\n" +
-           text.substr(end);
+    return replace_tables(
+        rigid_ball(std::move(text)), "[contact]\n", "[output]\n",
+        "[contact]\nmodel = \"rigid_penalty\"\nbody = \"plate\"\nrigid = \"ball\"\n"
+        "penalty = 2.0e4\ndamping = 0.1\n\n[gravity]\nacceleration = [0.0, 0.0, -9.81]\n\n");
   };
   require_same_run("ball_on_plate_dcr.toml", 6e-4, 5e-5,
                    SameRun{}.with_edit(penalty).comparing(
@@ -350,20 +352,16 @@ TEST_CASE("mpiexec -n 2 ccm run equals the serial run: pad on limb on a rigid ta
 // ball's nodes on a slide along z. Every rank gathers a joint's nodes and applies it alike; the
 // replicated contact takes the joints' nodes from their owners at the end of each step. The
 // flap swings within the window (its angle and rate are compared).
-std::string hinged(std::string text) {
-  const auto fixed = text.find("\n[[fixed]]") + 1;
-  const auto contact = text.find("\n[contact]\n") + 1;
-  REQUIRE(fixed > 0);
-  REQUIRE(contact > fixed);
-  return text.substr(0, fixed) +
-         "[[joints]]\nname = \"hinge\"\nkind = \"pin\"\nbody = \"plate\"\n"
-         "plane = { point = [0.0, 0.0, 0.0], normal = [1.0, 0.0, 0.0] }\n"
-         "point = [0.0, 0.03, 0.004]\naxis = [0.0, 1.0, 0.0]\nmu_s = 0.3\nmu_k = 0.2\n"
-         "stiffness = 20.0\ndamping = 0.002\n\n"
-         "[[joints]]\nname = \"track\"\nkind = \"slide\"\nbody = \"ball\"\n"
-         "box = { min = [0.0, 0.0, 0.0], max = [0.06, 0.06, 0.04] }\n"
-         "direction = [0.0, 0.0, 1.0]\n\n" +
-         text.substr(contact);
+std::string hinged(const std::string& text) {
+  return replace_tables(
+      text, "[[fixed]]", "[contact]\n",
+      "[[joints]]\nname = \"hinge\"\nkind = \"pin\"\nbody = \"plate\"\n"
+      "plane = { point = [0.0, 0.0, 0.0], normal = [1.0, 0.0, 0.0] }\n"
+      "point = [0.0, 0.03, 0.004]\naxis = [0.0, 1.0, 0.0]\nmu_s = 0.3\nmu_k = 0.2\n"
+      "stiffness = 20.0\ndamping = 0.002\n\n"
+      "[[joints]]\nname = \"track\"\nkind = \"slide\"\nbody = \"ball\"\n"
+      "box = { min = [0.0, 0.0, 0.0], max = [0.06, 0.06, 0.04] }\n"
+      "direction = [0.0, 0.0, 1.0]\n\n");
 }
 
 TEST_CASE("mpiexec -n 2 ccm run equals the serial run: a plate on a pin and a ball on a slide",
