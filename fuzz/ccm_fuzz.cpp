@@ -5,7 +5,6 @@
 // With CCM_FUZZ_MAKE_SEED=<path> in the environment, the two targets the repository holds no
 // seed files for write theirs and exit: fuzz_store_file a small valid store at <path>,
 // fuzz_msh_mesh .msh files made with Gmsh in the folder <path>.
-#include <gmsh.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -13,9 +12,12 @@
 #include <string>
 #include <string_view>
 
+#include "engine/mesh/gmsh_api.hpp"
 #include "fuzz/fuzz_readers.hpp"
 
 namespace {
+
+namespace gmsh = ccm::gmsh;
 
 const ccm::fuzz::Target* g_target = nullptr;
 

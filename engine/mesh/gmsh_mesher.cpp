@@ -1,7 +1,6 @@
 #include "engine/mesh/gmsh_mesher.hpp"
 
 #include <fmt/format.h>
-#include <gmsh.h>
 #include <stdlib.h>  // mkdtemp
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,6 +26,7 @@
 #include <vector>
 
 #include "engine/mesh/face_table.hpp"
+#include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/mesh_cache.hpp"
 #include "engine/mesh/mesh_defects.hpp"
 
@@ -93,8 +93,8 @@ void replace_all(std::string& s, const std::string& from, const std::string& to)
     s.replace(at, from.size(), to);
 }
 
-// Runs body() in a Gmsh session. Gmsh 4.8 throws its errors as std::string; they, and any other
-// exception, become a MeshError prefixed with `context`. Occurrences of `alias` in Gmsh's messages
+// Runs body() in a Gmsh session. Gmsh's errors, and any other exception, become a MeshError
+// prefixed with `context`. Occurrences of `alias` in Gmsh's messages
 // are replaced by `context` (read_msh_file hands Gmsh a link to the file, not its real path).
 template <class Body>
 auto with_gmsh(const std::string& context, Body&& body, const std::string& alias = {}) {
@@ -103,9 +103,10 @@ auto with_gmsh(const std::string& context, Body&& body, const std::string& alias
     return body();
   } catch (const MeshError&) {
     throw;
-  } catch (std::string& e) {
-    replace_all(e, alias, context);
-    throw MeshError(fmt::format("{}: Gmsh: {}", context, e));
+  } catch (const gmsh::GmshError& e) {
+    std::string message = e.what();
+    replace_all(message, alias, context);
+    throw MeshError(fmt::format("{}: Gmsh: {}", context, message));
   } catch (const std::exception& e) {
     throw MeshError(fmt::format("{}: {}", context, e.what()));
   }
@@ -654,6 +655,11 @@ std::string read_all(int fd) {
 // child, a crash becomes a MeshError naming the file instead of ending ccm. The mesh comes back in
 // the mesh cache's byte format, a MeshError or another exception as its message.
 TetMesh read_in_child(const std::string& where, const std::function<TetMesh()>& read) {
+  try {
+    gmsh::load();  // here, not in each child: a process reading many files loads Gmsh once
+  } catch (const gmsh::GmshError& e) {
+    throw MeshError(fmt::format("{}: {}", where, e.what()));
+  }
   int fds[2];
   if (::pipe(fds) != 0) throw MeshError(fmt::format("{}: cannot make a pipe to read it", where));
   std::fflush(nullptr);
@@ -712,7 +718,7 @@ std::string primitive_key(const PrimitiveSpec& s) {
   std::string key = fmt::format(
       "mesh_primitive; gmsh {}; mesher {}; kind {}; radius {:a}; inner_radius {:a}; length {:a}; "
       "size {:a} {:a} {:a}; centered {}; mesh_size {:a}",
-      GMSH_API_VERSION, CCM_MESHER_SOURCE_HASH, kind_name(s.kind), s.radius, s.inner_radius,
+      gmsh::api_version(), CCM_MESHER_SOURCE_HASH, kind_name(s.kind), s.radius, s.inner_radius,
       s.length, s.size.x(), s.size.y(), s.size.z(), s.centered, s.mesh_size);
   if (const auto& r = s.refinement)
     key += fmt::format("; refine {:a} {:a} {:a} radius {:a} mesh_size {:a} transition {:a}",

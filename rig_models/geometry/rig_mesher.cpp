@@ -1,13 +1,13 @@
 #include "rig_models/geometry/rig_mesher.hpp"
 
 #include <fmt/format.h>
-#include <gmsh.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
 
 namespace ccm::rig {

@@ -121,3 +121,22 @@ TEST_CASE("ccm mesh info: a sliver is named with its h_e and the stable step it 
   CHECK_THAT(bad.err, Contains("--material E,NU,RHO: nu"));
   CHECK(bad.out.empty());
 }
+
+// Gmsh's library is loaded on first use (engine/mesh/gmsh_api.hpp): the dynamic loader's own
+// report (LD_DEBUG=files, on stderr) names every library a process loads.
+TEST_CASE("ccm loads Gmsh only when a command uses it", "[mesh][cli][gmsh]") {
+  ccm::test::TempDir dir;
+  const auto loads_gmsh = [&](const std::string& file) {
+    const auto err = dir.path / "loader.txt";
+    const std::string command = fmt::format(
+        "LD_DEBUG=files '{}' mesh info '{}' > /dev/null 2> '{}'", CCM_BINARY, file, err.string());
+    const int status = std::system(command.c_str());
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 0);
+    const std::string loader = ccm::test::file_text(err);
+    REQUIRE_THAT(loader, Contains("calling init:"));  // the report is there
+    return loader.find("libgmsh") != std::string::npos;
+  };
+  CHECK_FALSE(loads_gmsh(ccm::test::mesh_data("elmer_box.unv").string()));
+  CHECK(loads_gmsh(ccm::test::mesh_data("gmsh_t16.geo").string()));
+}

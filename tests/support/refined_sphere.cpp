@@ -1,11 +1,11 @@
 #include "tests/support/refined_sphere.hpp"
 
-#include <gmsh.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <string>
 
+#include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
 
 namespace ccm::test {

@@ -1,8 +1,8 @@
 #include "engine/mesh/readers/geo_mesher.hpp"
 
 #include <fmt/format.h>
-#include <gmsh.h>
 
+#include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
 
 namespace ccm {

@@ -1,4 +1,3 @@
-#include <gmsh.h>
 #include <stdlib.h>  // mkdtemp
 
 #include <Eigen/Geometry>
@@ -13,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
 
 namespace fs = std::filesystem;
@@ -23,6 +23,7 @@ using ccm::PrimitiveKind;
 using ccm::PrimitiveSpec;
 using ccm::TetMesh;
 using ccm::Vec3;
+namespace gmsh = ccm::gmsh;
 
 namespace {
 

@@ -1,14 +1,15 @@
 // mesh_gmsh_model (engine/mesh/gmsh_mesher.hpp): a caller-built Gmsh model of two volumes
 // fragmented into one conforming mesh comes back with a region per tet and the named surfaces.
-#include <gmsh.h>
 
 #include <catch2/catch.hpp>
 #include <set>
 
+#include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
 
 using ccm::MeshError;
 using ccm::TetMesh;
+namespace gmsh = ccm::gmsh;
 
 namespace {
 
