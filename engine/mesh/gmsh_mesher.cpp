@@ -2,16 +2,12 @@
 
 #include <fmt/format.h>
 #include <stdlib.h>  // mkdtemp
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <clocale>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -25,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/mesh/child_reader.hpp"
 #include "engine/mesh/face_table.hpp"
 #include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/mesh_cache.hpp"
@@ -627,89 +624,6 @@ class PrivateLink {
   fs::path dir_, link_;
 };
 
-// Writes all of `bytes` to the descriptor (a pipe); false when it cannot.
-bool write_all(int fd, const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-std::string read_all(int fd) {
-  std::string bytes;
-  char buffer[65536];
-  for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return bytes;
-    bytes.append(buffer, static_cast<std::size_t>(n));
-  }
-}
-
-// Runs `read` in a child process and returns its mesh. Gmsh's own file reader crashes on some
-// malformed files (a segmentation fault inside GModel, found by the fuzz_msh_mesh target): in a
-// child, a crash becomes a MeshError naming the file instead of ending ccm. The mesh comes back in
-// the mesh cache's byte format, a MeshError or another exception as its message.
-TetMesh read_in_child(const std::string& where, const std::function<TetMesh()>& read) {
-  try {
-    gmsh::load();  // here, not in each child: a process reading many files loads Gmsh once
-  } catch (const gmsh::GmshError& e) {
-    throw MeshError(fmt::format("{}: {}", where, e.what()));
-  }
-  int fds[2];
-  if (::pipe(fds) != 0) throw MeshError(fmt::format("{}: cannot make a pipe to read it", where));
-  std::fflush(nullptr);
-  pid_t pid = -1;
-  {
-    // No other thread holds Gmsh's lock across the fork: the child would inherit it held.
-    const std::lock_guard<std::mutex> lock(gmsh_mutex());
-    pid = ::fork();
-  }
-  if (pid < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    throw MeshError(fmt::format("{}: cannot start a process to read it", where));
-  }
-  if (pid == 0) {
-    ::close(fds[0]);
-    // A crash ends the child by its signal, whatever handler the parent installed (a test
-    // framework's would report a failure from the child and print its own summary).
-    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(sig, SIG_DFL);
-    std::string reply;
-    try {
-      // (appended, not "M" + bytes: GCC 12 warns of a false memcpy overflow in operator+)
-      reply = "M";
-      reply += mesh_bytes(read());
-    } catch (const MeshError& e) {
-      reply = std::string("E") + e.what();
-    } catch (const std::exception& e) {
-      reply = std::string("X") + e.what();
-    }
-    _exit(write_all(fds[1], reply) ? 0 : 1);
-  }
-  ::close(fds[1]);
-  const std::string reply = read_all(fds[0]);
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFSIGNALED(status))
-    throw MeshError(fmt::format(
-        "{}: Gmsh's reader crashed on the file (signal {}, {}): it is malformed in a way Gmsh "
-        "does not check; write it again from the tool that made it",
-        where, WTERMSIG(status), strsignal(WTERMSIG(status))));
-  TetMesh mesh;
-  if (!reply.empty() && reply[0] == 'M' && read_mesh_bytes(reply.substr(1), mesh)) return mesh;
-  if (!reply.empty() && reply[0] == 'E') throw MeshError(reply.substr(1));
-  if (!reply.empty() && reply[0] == 'X') throw std::runtime_error(reply.substr(1));
-  throw MeshError(fmt::format("{}: the process reading it ended without an answer (exit {})", where,
-                              WIFEXITED(status) ? WEXITSTATUS(status) : -1));
-}
-
 }  // namespace
 
 // Everything a primitive's mesh depends on, exactly (hexadecimal floats): the mesh cache's key.
@@ -746,7 +660,15 @@ TetMesh mesh_primitive(const PrimitiveSpec& spec, const Placement& placement) {
 TetMesh read_msh_file(const std::filesystem::path& path) {
   const std::string where = path.string();
   check_msh_file(path, where);
-  return read_in_child(where, [&] {
+  try {
+    gmsh::load();  // here, not in each child: a process reading many files loads Gmsh once
+  } catch (const gmsh::GmshError& e) {
+    throw MeshError(fmt::format("{}: {}", where, e.what()));
+  }
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  const ChildReadSettings settings{reader_deadline(ec ? 0 : bytes), &gmsh_mutex()};
+  return read_in_child(where, settings, [&] {
     const PrivateLink link(path, where);
     return with_gmsh(
         where,
