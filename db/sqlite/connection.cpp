@@ -38,6 +38,18 @@ bool has_wal_file(const std::filesystem::path& file) {
   return std::filesystem::exists(file.string() + "-wal", ignored);
 }
 
+// A writer in SQLite's rollback-journal mode (a store being created or migrated, before it
+// switches to WAL) writes the main file only while its "-journal" file exists. A reader that
+// reads without locks (immutable=1, below) waits for it to go, up to the busy timeout: otherwise
+// it may read pages half written ("database disk image is malformed").
+void wait_for_rollback_writer(const std::filesystem::path& file, int timeout_ms) {
+  const std::filesystem::path journal = file.string() + "-journal";
+  std::error_code ignored;
+  for (int waited = 0; waited < timeout_ms && std::filesystem::exists(journal, ignored);
+       waited += 5)
+    ::usleep(5000);
+}
+
 // A store a command will write must be writable, and so must its folder (SQLite keeps its -wal
 // and -shm files, or a rollback journal, beside it): said before SQLite's "attempt to write a
 // readonly database" surfaces from the first statement that writes.
@@ -63,7 +75,9 @@ Connection::Connection(const std::filesystem::path& file, Access access, int bus
   std::string name = file.string();
   int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_FULLMUTEX;
   if (access == Access::read_only) {
-    name = read_only_uri(file, !has_wal_file(file));
+    const bool immutable = !has_wal_file(file);
+    if (immutable) wait_for_rollback_writer(file, busy_timeout_ms);
+    name = read_only_uri(file, immutable);
     flags = SQLITE_OPEN_READONLY | SQLITE_OPEN_URI | SQLITE_OPEN_FULLMUTEX;
   } else if (file != ":memory:") {
     require_writable(file);

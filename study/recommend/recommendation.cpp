@@ -105,7 +105,11 @@ struct Predictor {
     const auto [lo, hi] = std::minmax_element(
         f->fit.samples.begin(), f->fit.samples.end(),
         [](const SurfaceSample& a, const SurfaceSample& b) { return a.z < b.z; });
-    const double raw = f->fit.surface(x, y);
+    // Above the studied ER the impactor is rigid for every practical purpose: the rigid model's
+    // errors are those at the highest studied ER (docs/recommendation.md, "Toward the rigid
+    // limit"); the cost ratio keeps growing with the impactor's own step.
+    const double xe = metric == Metric::log10_runtime_ratio ? x : std::min(x, f->fit.x_max);
+    const double raw = f->fit.surface(xe, y);
     loo = std::max(loo, f->fit.loo_rmse);
     if (f->fit.samples.empty()) return raw;
     // An error is never negative (the measured minimum may be -1e-17 of rounding).
@@ -136,11 +140,17 @@ void warn_outside_grid(const StudyFits& fits, const AxisLevels& axes,
     const MetricFit* f = fits.find(Metric::log10_runtime_ratio, ke, axes);
     if (!f) continue;
     const SurfaceFit& s = f->fit;
-    if (x < s.x_min || x > s.x_max)
+    if (x < s.x_min)
       warn.push_back(
           fmt::format("log10 ER = {:.3g} lies outside the studied [{:.3g}, {:.3g}] at "
                       "KE = {} J: the surfaces are extrapolated",
                       x, s.x_min, s.x_max, ke));
+    if (x > s.x_max)
+      warn.push_back(fmt::format(
+          "log10 ER = {:.3g} lies above the studied [{:.3g}, {:.3g}] at KE = {} J: the rigid "
+          "model's errors are those at the highest ER (the rigid limit), the cost ratio is "
+          "extrapolated",
+          x, s.x_min, s.x_max, ke));
     if (y < s.y_min || y > s.y_max)
       warn.push_back(
           fmt::format("RLS = {:.3g} lies outside the studied [{:.3g}, {:.3g}] at "

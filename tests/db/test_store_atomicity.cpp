@@ -4,7 +4,11 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
 
 #include "db/store/point_key.hpp"
 #include "db/store/study_store.hpp"
@@ -145,4 +149,30 @@ TEST_CASE("two processes writing one store at once both succeed, without duplica
                          "SELECT count(*) FROM runs WHERE status = 'completed'") ==
         4 * kPointsPerWriter + 1);
   CHECK(test::count_rows(store.connection(), "SELECT count(DISTINCT pid) FROM runs") == 2);
+}
+
+// A reader of a store without a -wal file reads without locks (db/sqlite/connection.cpp); a
+// writer in rollback-journal mode (creating or migrating the store) writes the main file only
+// while its -journal exists, so the reader waits for the journal to go.
+TEST_CASE("a reader waits while a store's rollback journal is there", "[db]") {
+  test::ScratchDir dir("db-journal-reader");
+  const auto file = dir / "s.sqlite";
+  {
+    db::StudyStore store(file);
+    store.open_study("s", "g");
+  }
+  REQUIRE_FALSE(std::filesystem::exists(file.string() + "-wal"));
+  const std::filesystem::path journal = file.string() + "-journal";
+  std::ofstream(journal) << "";
+  std::thread writer([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    std::filesystem::remove(journal);
+  });
+  const auto t0 = std::chrono::steady_clock::now();
+  const db::StudyStore reader(file, db::Access::read_only);
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  writer.join();
+  CHECK(waited >= 0.25);
+  CHECK(reader.study_name() == "s");
 }

@@ -81,18 +81,42 @@ TEST_CASE("the cost decides too: accurate but not cheaper is CCM", "[recommend]"
 
 TEST_CASE("predictions outside the measured range are clamped to it, and say so", "[recommend]") {
   const auto points = closed_form_points();
-  const Recommendation r = recommend(fit_study(points), points, query(1e8, 2.0, 500.0));
+  const Recommendation r = recommend(fit_study(points), points, query(1e-2, 2.0, 500.0));
   CHECK(r.kinetic_energy_levels_used == std::vector<double>{100.0});
   CHECK(mentions(r.warnings, "KE = 500 J lies outside the studied levels [10, 100] J"));
-  CHECK(mentions(r.warnings, "log10 ER = 8 lies outside"));
+  CHECK(mentions(r.warnings, "log10 ER = -2 lies outside"));
   CHECK(mentions(r.warnings, "RLS = 2 lies outside"));
-  // The error surface gives 2 (0.3 - 0.05 x 8) = -0.2; the smallest measured at 100 J is 0.
-  CHECK(r.predicted.final_state.u_mean == Approx(0.0).margin(1e-12));
-  CHECK(r.predicted.final_state.u_mean >= 0.0);
-  // log10 RTR = 4 extrapolated; the largest measured is 10^3.
-  CHECK(r.predicted.runtime_ratio == Approx(1e3).epsilon(1e-9));
-  CHECK(mentions(r.clamped, "final_u_mean at KE 100 J: the surface gives -0.2"));
-  CHECK(mentions(r.clamped, "log10_rtr at KE 100 J: the surface gives 4"));
+  // The error surface gives 2 (0.3 + 0.05 x 2) = 0.8; the largest measured at 100 J is 0.6.
+  CHECK(r.predicted.final_state.u_mean == Approx(0.6).epsilon(1e-9));
+  // log10 RTR = -1 extrapolated; the smallest measured is 10^0.
+  CHECK(r.predicted.runtime_ratio == Approx(1.0).epsilon(1e-9));
+  CHECK(mentions(r.clamped, "final_u_mean at KE 100 J: the surface gives 0.8"));
+  CHECK(mentions(r.clamped, "log10_rtr at KE 100 J: the surface gives -1"));
+}
+
+TEST_CASE("above the studied ER the errors are the rigid limit's, those at the highest ER",
+          "[recommend]") {
+  const auto points = closed_form_points();
+  const StudyFits fits = fit_study(points);
+  const Recommendation top = recommend(fits, points, query(1e6, 1.0, 10.0));
+  const Recommendation above = recommend(fits, points, query(1e8, 1.0, 10.0));
+  // Extrapolated, the error surface would give 0.3 - 0.05 x 8 = -0.1 (clamped to 0); at the
+  // rigid limit it is the value at x = 6: 0.
+  CHECK(above.predicted.final_state.u_mean == Approx(top.predicted.final_state.u_mean));
+  CHECK(above.predicted.final_state.u_max == Approx(top.predicted.final_state.u_max));
+  CHECK(above.predicted.final_state.kinetic_energy ==
+        Approx(top.predicted.final_state.kinetic_energy));
+  CHECK_FALSE(mentions(above.clamped, "final_u_mean"));
+  CHECK(mentions(above.warnings,
+                 "log10 ER = 8 lies above the studied [0, 6] at KE = 10 J: the "
+                 "rigid model's errors are those at the highest ER"));
+  // The cost ratio keeps growing with ER (10^4 from the surface), within the measured range.
+  CHECK(above.predicted.runtime_ratio == Approx(1e3).epsilon(1e-9));
+  CHECK(mentions(above.clamped, "log10_rtr at KE 10 J: the surface gives 4"));
+  // Below the studied ER nothing is held: the impactor is softer than any studied one.
+  const Recommendation below = recommend(fits, points, query(1e-2, 1.0, 10.0));
+  CHECK(below.predicted.final_state.u_mean == Approx(0.3).epsilon(1e-9));  // clamped at 0.3
+  CHECK(mentions(below.clamped, "final_u_mean at KE 10 J: the surface gives 0.4"));
 }
 
 TEST_CASE("the nearest measured points are named with their measured answers", "[recommend]") {
