@@ -31,6 +31,27 @@ void check_value(const char* name, double value, double grid, std::vector<std::s
 
 }  // namespace
 
+std::string why_they_differ(const study::Recommendation& r, const ComparisonOutcome& measured,
+                            double max_error) {
+  const study::Decision& predicted = r.decision;
+  const study::Decision& found = measured.decision;
+  std::string why;
+  if (predicted.rigid_within_error != found.rigid_within_error)
+    why = fmt::format(
+        "on accuracy: the study predicts the rigid model's largest final-state error at {:.3g}, "
+        "this scene measured {:.3g} (max error {:.3g}); the sphere-on-plate grid's errors hold "
+        "for this design only as far as its groups do",
+        predicted.worst_error, found.worst_error, max_error);
+  if (predicted.rigid_cheaper != found.rigid_cheaper)
+    why += fmt::format(
+        "{}on cost: the study predicts RTR {:.3g}, this scene measured {:.3g}; a cost ratio "
+        "follows which body and which contact law set the step (the grid's rigid model is its "
+        "own penalty sphere, this scene's rigid variant keeps the scene's contact), so it does "
+        "not carry over from the grid",
+        why.empty() ? "" : "; and ", r.predicted.runtime_ratio, measured.cost_ratio);
+  return why.empty() ? why : "they differ " + why;
+}
+
 std::filesystem::path prediction_store(const std::filesystem::path& db,
                                        const std::filesystem::path& fallback) {
   if (!db.empty()) return db;
@@ -114,7 +135,10 @@ ComparePrediction predict_for_scene(const std::filesystem::path& db, GroupsOrRea
     p.note = fmt::format("the study cannot predict here: {}", e.what());
     return p;
   }
-  if (measured.unusable.empty()) p.agrees = p.recommendation->model == measured.decision.model;
+  if (measured.unusable.empty()) {
+    p.agrees = p.recommendation->model == measured.decision.model;
+    if (!*p.agrees) p.why_not = why_they_differ(*p.recommendation, measured, max_error);
+  }
   return p;
 }
 
@@ -146,6 +170,7 @@ void print_prediction(const std::filesystem::path& db, const ComparePrediction& 
   for (const std::string& w : r.warnings) fmt::print("    warning: {}\n", w);
   if (p.agrees)
     fmt::print("    {} the measured answer\n", *p.agrees ? "agrees with" : "DISAGREES with");
+  if (!p.why_not.empty()) fmt::print("    why: {}\n", p.why_not);
 }
 
 nlohmann::json prediction_json(const std::filesystem::path& db, const ComparePrediction& p) {
@@ -190,6 +215,7 @@ nlohmann::json prediction_json(const std::filesystem::path& db, const ComparePre
                      {"log10_runtime_ratio", r.predicted.uncertainty.log10_runtime_ratio}};
   }
   if (p.agrees) j["agrees_with_measured"] = *p.agrees;
+  if (!p.why_not.empty()) j["why_not"] = p.why_not;
   return j;
 }
 

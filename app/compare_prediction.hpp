@@ -26,6 +26,7 @@ struct ComparePrediction {
   std::vector<std::string> outside;   // each group outside the grid's range, with both
   std::optional<study::Recommendation> recommendation;
   std::optional<bool> agrees;  // the predicted model is the measured one
+  std::string why_not;         // when it is not: which half of the rule differs, with both values
   std::string note;            // why there is no prediction (no store, no groups, no fits)
 };
 
@@ -39,6 +40,12 @@ std::filesystem::path prediction_store(const std::filesystem::path& db,
 ComparePrediction predict_for_scene(const std::filesystem::path& db, GroupsOrReason groups,
                                     const ComparisonOutcome& measured, double max_error,
                                     bool whole_impact);
+
+// Which half of the rule (docs/recommendation.md) a prediction and the measured answer differ on,
+// with both values: the rigid model's accuracy (its largest final-state error against the max
+// error) or its cost (RTR against 1); empty when they do not differ.
+std::string why_they_differ(const study::Recommendation& predicted,
+                            const ComparisonOutcome& measured, double max_error);
 
 void print_prediction(const std::filesystem::path& db, const ComparePrediction& p);
 nlohmann::json prediction_json(const std::filesystem::path& db, const ComparePrediction& p);

@@ -10,11 +10,18 @@ study store's prediction at the scene's own groups, whether it held, and the gro
 study's grid.
 
     scripts/compare-designs.py [--ccm build/ccm] [--db results/default-study.sqlite]
-                               [--work out/compare-designs]
+                               [--work out/compare-designs] [--whole GUARD]
+
+With --whole GUARD each scene runs its whole impact instead: `end` becomes the guard (seconds)
+and `end_after_separation` ends a run a quarter of the scene's own `end` after the bodies
+separate (a contact that closes again within it goes on), as a store of whole impacts compares
+them (the reference store ccm ships: --db data/reference/whole-impacts.sqlite, or a copy of it,
+since compare records into its --db).
 """
 import argparse
 import json
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -36,12 +43,16 @@ CASES = [
 ]
 
 
-def variant(scene: pathlib.Path, edits: dict, out: pathlib.Path) -> pathlib.Path:
+def variant(scene: pathlib.Path, edits: dict, out: pathlib.Path, guard: float) -> pathlib.Path:
     text = scene.read_text()
     for old, new in edits.items():
         if text.count(old) != 1:
             sys.exit(f"{scene}: the line '{old}' is not there exactly once")
         text = text.replace(old, new)
+    if guard > 0:  # the whole impact: the guard as end, ended a quarter of the old end after
+        end = float(re.search(r"(?m)^end = ([0-9.eE+-]+)", text).group(1))  # the separation
+        text = re.sub(r"(?m)^end = [0-9.eE+-]+(.*)$",
+                      f"end = {guard}\nend_after_separation = {end / 4:g}", text, count=1)
     out.write_text(text)
     return out
 
@@ -67,14 +78,15 @@ def main() -> None:
     ap.add_argument("--ccm", default=str(ROOT / "build" / "ccm"))
     ap.add_argument("--db", default=str(ROOT / "results" / "default-study.sqlite"))
     ap.add_argument("--work", default=str(ROOT / "out" / "compare-designs"))
+    ap.add_argument("--whole", type=float, default=0.0, metavar="GUARD")
     args = ap.parse_args()
     work = pathlib.Path(args.work)
     work.mkdir(parents=True, exist_ok=True)
     print("| case | ER / RLS / KE* | worst final-state error | cost ratio | measured answer | "
-          "thesis study predicts | held | groups outside the study's grid |")
+          "the store predicts | held | groups outside the store's grid |")
     print("|---|---|---|---|---|---|---|---|")
     for k, (name, scene, rigid, edits) in enumerate(CASES):
-        path = variant(ROOT / scene, edits, work / f"case{k}.toml")
+        path = variant(ROOT / scene, edits, work / f"case{k}.toml", args.whole)
         r = subprocess.run([args.ccm, "compare", str(path), "--rigid", rigid, "--db", args.db,
                             "--out", str(work / f"case{k}"), "--json", "--quiet",
                             "--threads", "1"], capture_output=True, text=True)
