@@ -31,5 +31,8 @@ else
   "$ccm" study run "$grid" --db "$store" --jobs "$jobs"
 fi
 "$ccm" study refine --db "$store" --jobs "$jobs"
+# Shipped in rollback-journal mode: reading it then writes no -wal or -shm file beside it.
+python3 -c "import sqlite3, sys; sqlite3.connect(sys.argv[1]).execute('PRAGMA journal_mode=DELETE')" \
+  "$store"
 "$ccm" report --db "$store" --out "${store%.sqlite}-report"
 echo "reference store: $store (report: ${store%.sqlite}-report/index.html)"
