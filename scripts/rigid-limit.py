@@ -17,8 +17,8 @@ impactor's stiffness.
         [--jobs 2]
 
 On a machine shared with other work, give each run one thread (CCM_THREADS=1 in the
-environment): `--jobs 1` on 2 cores runs each with two, which wait on each other when the cores
-are taken.
+environment): `--jobs 1` on 2 cores runs each with two, and two-thread runs on a machine whose
+cores are taken read several times the CPU of one thread (docs/parallel.md).
 """
 import argparse
 import pathlib
