@@ -27,8 +27,9 @@ import sqlite3
 import subprocess
 import sys
 
+from whole_impact_grid import with_levels
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-GRID = ROOT / "scenes/grids/whole-impacts.toml"
 
 # (name, the CCM value's column, the rigid value's column): the designer's metrics.
 DESIGNER = (("peak force", "peak_force_ccm", "peak_force_rigid"),
@@ -39,10 +40,8 @@ DESIGNER = (("peak force", "peak_force_ccm", "peak_force_rigid"),
 FINAL = (("u_mean", "final_u_mean"), ("u_max", "final_u_max"), ("KE", "final_kinetic_energy"))
 
 
-def grid_text(base, er, rls, ke, density, scales):
-    text = re.sub(r'(?m)^title = .*$', 'title = "toward the rigid limit"', base)
-    for key, values in (("ER", er), ("RLS", rls), ("KE", ke), ("density_ratio", density)):
-        text = re.sub(rf'(?m)^{key} = \[.*$', f"{key} = [{values}]", text)
+def grid_text(er, rls, ke, density, scales):
+    text = with_levels("toward the rigid limit", er, rls, ke, density)
     return re.sub(r'(?m)^(density_ratio = \[.*)$', rf'\1\nmesh_scale = [{scales}]', text)
 
 
@@ -93,7 +92,7 @@ def main():
     work = pathlib.Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
     grid, store = work / "rigid-limit.toml", work / "rigid-limit.sqlite"
-    grid.write_text(grid_text(GRID.read_text(), a.er, a.rls, a.ke, a.density, a.scales))
+    grid.write_text(grid_text(a.er, a.rls, a.ke, a.density, a.scales))
     print(f"running {grid} ...", file=sys.stderr, flush=True)
     subprocess.run([a.ccm, "study", "run", str(grid), "--db", str(store), "--jobs", str(a.jobs),
                     "--quiet"], check=True)

@@ -22,14 +22,13 @@ import sqlite3
 import subprocess
 import sys
 
+from whole_impact_grid import with_levels
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-GRID = ROOT / "scenes/grids/whole-impacts.toml"
 
 
-def grid_text(base, title, er, rls, ke, density, whole):
-    text = re.sub(r'(?m)^title = .*$', f'title = "{title}"', base)
-    for key, values in (("ER", er), ("RLS", rls), ("KE", ke), ("density_ratio", density)):
-        text = re.sub(rf'(?m)^{key} = \[.*$', f"{key} = [{values}]", text)
+def grid_text(title, er, rls, ke, density, whole):
+    text = with_levels(title, er, rls, ke, density)
     if not whole:  # the thesis's window: t_f = 0.15 s, no separation criterion
         text = re.sub(r'(?m)^end = .*$', "end = 0.15", text)
         text = re.sub(r'(?m)^end_after_separation = .*\n', "", text)
@@ -67,14 +66,13 @@ def main():
     a = p.parse_args()
     work = pathlib.Path(a.work)
     work.mkdir(parents=True, exist_ok=True)
-    base = GRID.read_text()
     stores = {}
     for name, whole in (("window", False), ("whole", True)):
         if whole and a.whole_store:
             stores[name] = pathlib.Path(a.whole_store)
             continue
         grid = work / f"{name}.toml"
-        grid.write_text(grid_text(base, f"{name}", a.er, a.rls, a.ke, a.density, whole))
+        grid.write_text(grid_text(f"{name}", a.er, a.rls, a.ke, a.density, whole))
         stores[name] = work / f"{name}.sqlite"
         print(f"running {grid} ...", file=sys.stderr, flush=True)
         subprocess.run([a.ccm, "study", "run", str(grid), "--db", str(stores[name]), "--jobs",
