@@ -78,8 +78,9 @@ std::vector<bench::PreparedTrial> subset(const std::vector<bench::PreparedTrial>
 std::optional<double> mean_nrmse(const bench::BenchScores& scores) {
   double sum = 0.0;
   for (const bench::ChannelResult& c : scores.channels) {
-    if (!c.mean.nrmse) return std::nullopt;  // a constant measured curve has no nRMSE
-    sum += *c.mean.nrmse;
+    // a constant measured curve has no nRMSE; an event no trial has, no mean
+    if (!c.mean || !c.mean->nrmse) return std::nullopt;
+    sum += *c.mean->nrmse;
   }
   return sum / static_cast<double>(scores.channels.size());
 }
@@ -186,8 +187,9 @@ std::vector<Fold> cross_validate(Fitting& f, const std::vector<rig::SearchParame
     }
     for (const bench::ChannelSpec& c : f.data.mapping.channels) fold.channels.push_back(c.name);
     for (std::size_t k = 0; k < fold.channels.size(); ++k)
-      fold.ratings.push_back(s ? s->channels[k].mean.rating.overall
-                               : std::numeric_limits<double>::quiet_NaN());
+      fold.ratings.push_back(s && s->channels[k].mean && s->channels[k].mean->rating
+                                 ? s->channels[k].mean->rating->overall
+                                 : std::numeric_limits<double>::quiet_NaN());
     folds.push_back(std::move(fold));
   }
   return folds;

@@ -15,9 +15,10 @@
 namespace ccm {
 namespace {
 
+// A rated score (the store's rating table holds those; validation.json holds every score).
 db::ValidationScoreRow score_row(const std::string& channel, const bench::ChannelScore& s,
                                  bool left_out) {
-  const correlate::CurveRating& r = s.rating;
+  const correlate::CurveRating& r = *s.rating;
   return {channel,          s.against,
           left_out,         static_cast<long long>(s.samples),
           s.nrmse,          s.peak_measured,
@@ -47,8 +48,8 @@ db::ValidationRow validation_row(const ValidateArgs& args, const BenchData& data
   row.document = document.dump();
   for (const bench::ChannelResult& c : scores.channels) {
     for (const bench::ChannelScore& s : c.trials)
-      row.scores.push_back(score_row(c.channel, s, left_out.count(s.against) > 0));
-    row.scores.push_back(score_row(c.channel, c.mean, false));
+      if (s.rating) row.scores.push_back(score_row(c.channel, s, left_out.count(s.against) > 0));
+    if (c.mean && c.mean->rating) row.scores.push_back(score_row(c.channel, *c.mean, false));
     row.curves.push_back({c.channel,
                           std::string(bench::si_unit(data.mapping.channel(c.channel)->unit)),
                           channel_curves_csv(c.curves)});

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -78,18 +79,24 @@ std::array<double, 3> axis_of(const StrictTable& t) {
   return {v[0] / norm, v[1] / norm, v[2] / norm};
 }
 
-std::array<double, 2> window_of(const StrictTable& t) {
+// window = [start, end] in s, or the name of an event (checked against [[events]] later).
+void read_window(const StrictTable& t, ChannelSpec& c) {
+  if (!t.has("window")) return;
+  if (t.node("window")->is_string()) {
+    c.window_event = t.need_string("window");
+    return;
+  }
   const std::vector<double> w = t.number_array("window");
   if (w.size() != 2)
     t.fail("window", fmt::format("needs [start, end] in s, has {} numbers", w.size()));
   if (!(w[1] > w[0]))
     t.fail("window", fmt::format("end {} s must be after start {} s", w[1], w[0]));
-  return {w[0], w[1]};
+  c.window = std::array<double, 2>{w[0], w[1]};
 }
 
 ChannelSpec channel_of(const StrictTable& t) {
   t.allow_only({"name", "column", "unit", "observable", "axis", "derivative", "scale", "filter",
-                "cutoff", "deadband", "apply_to", "window"});
+                "cutoff", "deadband", "deadband_first", "apply_to", "window"});
   ChannelSpec c;
   c.line = t.line();
   c.name = t.need_string("name");
@@ -105,13 +112,52 @@ ChannelSpec channel_of(const StrictTable& t) {
   c.filter = filter_of(t);
   c.deadband = t.number_or("deadband", 0.0);
   if (c.deadband < 0.0) t.fail("deadband", fmt::format("{} must be >= 0", c.deadband));
+  c.deadband_first = t.get_or<bool>("deadband_first", false);
   const std::string apply_to = t.get_or<std::string>("apply_to", "both");
   if (apply_to != "both" && apply_to != "simulated")
     t.fail("apply_to",
            unknown_value_problem(apply_to, std::array<std::string_view, 2>{"both", "simulated"}));
   c.condition_measured = apply_to == "both";
-  if (t.has("window")) c.window = window_of(t);
+  read_window(t, c);
   return c;
+}
+
+std::vector<std::string_view> channel_names(const std::vector<ChannelSpec>& channels) {
+  std::vector<std::string_view> names;
+  for (const ChannelSpec& c : channels) names.push_back(c.name);
+  return names;
+}
+
+EventSpec event_of(const StrictTable& t, const std::vector<ChannelSpec>& channels) {
+  t.allow_only({"name", "channel", "threshold"});
+  EventSpec e;
+  e.line = t.line();
+  e.name = t.need_string("name");
+  check_name(t, "name", e.name);
+  e.channel = t.need_string("channel");
+  const std::vector<std::string_view> names = channel_names(channels);
+  if (std::find(names.begin(), names.end(), e.channel) == names.end())
+    t.fail("channel", unknown_value_problem(e.channel, names));
+  e.threshold = t.need_number("threshold");
+  if (!(e.threshold > 0.0))
+    t.fail("threshold",
+           fmt::format("{} must be > 0 (|value| at or above it is the event)", e.threshold));
+  return e;
+}
+
+// A channel's window = "<event>" names an event of the file.
+void check_event_windows(const std::vector<StrictTable>& tables, const BenchMapping& m) {
+  std::vector<std::string_view> names;
+  for (const EventSpec& e : m.events) names.push_back(e.name);
+  for (std::size_t i = 0; i < m.channels.size(); ++i) {
+    const ChannelSpec& c = m.channels[i];
+    if (c.window_event && !m.event(*c.window_event))
+      tables[i].fail("window", names.empty()
+                                   ? fmt::format("'{}' names no [[events]] entry (the file "
+                                                 "has none)",
+                                                 *c.window_event)
+                                   : unknown_value_problem(*c.window_event, names));
+  }
 }
 
 ClockAlignment alignment_of(const StrictTable& t, const std::vector<ChannelSpec>& channels) {
@@ -126,13 +172,9 @@ ClockAlignment alignment_of(const StrictTable& t, const std::vector<ChannelSpec>
     return a;
   }
   a.channel = t.need_string("channel");
-  bool known = false;
-  std::vector<std::string_view> names;
-  for (const ChannelSpec& c : channels) {
-    known = known || c.name == *a.channel;
-    names.push_back(c.name);
-  }
-  if (!known) t.fail("channel", unknown_value_problem(*a.channel, names));
+  const std::vector<std::string_view> names = channel_names(channels);
+  if (std::find(names.begin(), names.end(), *a.channel) == names.end())
+    t.fail("channel", unknown_value_problem(*a.channel, names));
   a.threshold = t.need_number("threshold");
   a.line = t.line_of_key("threshold");
   if (!(a.threshold > 0.0))
@@ -195,10 +237,16 @@ const ChannelSpec* BenchMapping::channel(const std::string& name) const {
   return nullptr;
 }
 
+const EventSpec* BenchMapping::event(const std::string& name) const {
+  for (const EventSpec& e : events)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
 BenchMapping parse_bench_mapping(const std::string& text, const std::filesystem::path& file) {
   const toml::table root = parse_toml(text, file);
   const StrictTable top(root, "", file);
-  top.allow_only({"trials", "align", "channels"});
+  top.allow_only({"trials", "align", "channels", "events"});
   BenchMapping m;
   m.file = file;
   const StrictTable trials = top.need_table("trials");
@@ -210,7 +258,8 @@ BenchMapping parse_bench_mapping(const std::string& text, const std::filesystem:
   read_clock(trials, m);
   read_layout(trials, m);
   std::set<std::string> names;
-  for (const StrictTable& t : top.need_tables("channels")) {
+  const std::vector<StrictTable> channel_tables = top.need_tables("channels");
+  for (const StrictTable& t : channel_tables) {
     ChannelSpec c = channel_of(t);
     if (!names.insert(c.name).second)
       t.fail("name", fmt::format("'{}' names an earlier channel too", c.name));
@@ -218,6 +267,13 @@ BenchMapping parse_bench_mapping(const std::string& text, const std::filesystem:
       t.fail("column", fmt::format("'{}' is the time column", c.column));
     m.channels.push_back(std::move(c));
   }
+  std::set<std::string> event_names;
+  for (const StrictTable& t : top.tables("events")) {
+    m.events.push_back(event_of(t, m.channels));
+    if (!event_names.insert(m.events.back().name).second)
+      t.fail("name", fmt::format("'{}' names an earlier event too", m.events.back().name));
+  }
+  check_event_windows(channel_tables, m);
   if (auto align = top.table("align")) m.align = alignment_of(*align, m.channels);
   return m;
 }

@@ -34,12 +34,17 @@ struct ChannelSpec {
   double scale = 1.0;     // multiplies the simulated observable (sign conventions)
   ChannelFilter filter;   // applied alike to the measured and the simulated curve
   double deadband = 0.0;  // SI; |value| below it reads 0, on both curves
+  // deadband_first = true: the deadband before the filter (a sensor's own threshold, filtered
+  // after it by the logger or the rig's post-processing); default after the filter.
+  bool deadband_first = false;
   // apply_to = "simulated": the filter and the deadband condition the simulated curve alone (the
   // logger filtered in hardware, the sensor's deadband is in the data already).
   bool condition_measured = true;
   std::optional<std::array<double, 2>> window;  // s, on the simulation's clock
-  int observable_line = 0;                      // of its observable key
-  int line = 0;  // of the channel's table in the mapping file, for messages
+  // window = "<event>": each trial's own measured window of that event (EventSpec), aligned.
+  std::optional<std::string> window_event;
+  int observable_line = 0;  // of its observable key
+  int line = 0;             // of the channel's table in the mapping file, for messages
 };
 
 struct ClockAlignment {
@@ -50,6 +55,17 @@ struct ClockAlignment {
   // Or given offsets [s], added to each trial's clock, one per trial in file-name order.
   std::vector<double> offsets;
   int line = 0;  // of the threshold or the offsets, for messages
+};
+
+// [[events]]: the first event of a channel in each trial and in the simulation, from the first
+// sample whose |value| (conditioned, SI) is at or above `threshold` to the first later sample
+// below it (a contact: its onset and duration); their errors are reported, and a channel may
+// be scored inside each trial's measured event alone (window = "<name>").
+struct EventSpec {
+  std::string name;
+  std::string channel;
+  double threshold = 0.0;  // SI, > 0
+  int line = 0;
 };
 
 struct BenchMapping {
@@ -69,8 +85,10 @@ struct BenchMapping {
   bool sparse = false;        // a channel's cell may be empty (sensors at their own rates)
   ClockAlignment align;
   std::vector<ChannelSpec> channels;
+  std::vector<EventSpec> events;
 
   const ChannelSpec* channel(const std::string& name) const;
+  const EventSpec* event(const std::string& name) const;
 };
 
 // Reads and checks `file`; throws ConfigError.

@@ -16,6 +16,7 @@
 #include "bench_test/bench_mapping.hpp"
 #include "bench_test/bench_trials.hpp"
 #include "correlate/iso18571_rating.hpp"
+#include "rig_models/compare/channel_metrics.hpp"
 #include "rig_models/signal/time_series.hpp"
 
 namespace ccm::bench {
@@ -37,12 +38,17 @@ std::vector<PreparedTrial> prepare_trials(const BenchMapping& mapping,
 struct ChannelScore {
   std::string against;  // a trial's file name, or "mean"
   std::size_t samples = 0;
+  double rmse = 0.0;            // SI
   std::optional<double> nrmse;  // none for a constant measured curve
   double peak_measured = 0.0, peak_simulated = 0.0;
   double peak_error = 0.0;       // simulated - measured
   double peak_time_error = 0.0;  // s
-  correlate::CurveRating rating;
+  // From kMinRatedSamples samples on (a channel scored inside each trial's event window may hold
+  // fewer: a contact of 20 ms sampled at 100 Hz), of a measured curve that is not zero everywhere.
+  std::optional<correlate::CurveRating> rating;
 };
+
+inline constexpr std::size_t kMinRatedSamples = 10;
 
 // The curves compared, on the mean's samples: for plots and CSV.
 struct ChannelCurves {
@@ -51,14 +57,24 @@ struct ChannelCurves {
 
 struct ChannelResult {
   std::string channel;
-  std::vector<ChannelScore> trials;  // in trial order
-  ChannelScore mean;
+  // In trial order; inside an event's windows, only the trials with the event and two samples in
+  // it.
+  std::vector<ChannelScore> trials;
+  std::optional<ChannelScore> mean;  // none inside an event that no trial has
   ChannelCurves curves;
+};
+
+// An event ([[events]]) in each trial and in the simulation sampled at the trial's instants.
+struct EventResult {
+  std::string event;
+  std::vector<std::string> trials;                // file names, in trial order
+  std::vector<rig::ContactComparison> per_trial;  // onset, duration and their errors
 };
 
 struct BenchScores {
   std::vector<double> clock_shifts;  // s, added to each trial's clock
   std::vector<ChannelResult> channels;
+  std::vector<EventResult> events;
 };
 
 // A simulation that cannot be scored against the trials (not bad input: the run decides it).
@@ -68,7 +84,8 @@ struct ScoringError : std::runtime_error {
 
 // The scores of `simulated` (one curve per channel, by name, on the simulation's clock). Throws
 // ScoringError when the simulated trigger channel never reaches the threshold, or when a
-// channel's window holds fewer than 10 measured samples inside the simulated span.
+// channel's window (of numbers, or the whole span) holds fewer than kMinRatedSamples measured
+// samples inside the simulated span.
 BenchScores score_bench_test(const BenchMapping& mapping, const std::vector<PreparedTrial>& trials,
                              const std::map<std::string, rig::TimeSeries>& simulated);
 

@@ -103,6 +103,44 @@ TEST_CASE("bench mapping: every defect is refused naming the file, line and key"
   }
 }
 
+TEST_CASE("bench mapping: events, a window of an event and the deadband's place are read",
+          "[bench_test]") {
+  const std::string text = with(kGood, "cutoff = 64\n",
+                                "cutoff = 64\nwindow = \"impact\"\ndeadband = 2\n"
+                                "deadband_first = true\n\n[[events]]\nname = \"impact\"\n"
+                                "channel = \"load\"\nthreshold = 100\n");
+  const BenchMapping m = parse_bench_mapping(text, "bench.toml");
+  REQUIRE(m.events.size() == 1);
+  CHECK(m.events[0].channel == "load");
+  CHECK(m.events[0].threshold == 100.0);
+  CHECK(*m.channels[1].window_event == "impact");
+  CHECK_FALSE(m.channels[1].window);
+  CHECK(m.channels[1].deadband_first);
+  CHECK_FALSE(m.channels[0].deadband_first);
+  CHECK(m.event("impact") == &m.events[0]);
+
+  struct Case {
+    std::string from, to, message;
+  };
+  const Case cases[] = {
+      {"window = \"impact\"", "window = \"impakt\"", "channels[1].window: must be one of"},
+      {"channel = \"load\"\nthreshold = 100", "channel = \"lode\"\nthreshold = 100",
+       "events[0].channel: must be one of"},
+      {"threshold = 100", "threshold = -1", "events[0].threshold: -1 must be > 0"},
+      {"threshold = 100", "threshold = 100\nduration = 3", "unknown key 'duration'"},
+      {"deadband_first = true", "deadband_first = 1", "channels[1].deadband_first"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.to);
+    CHECK_THROWS_WITH(parse_bench_mapping(with(text, c.from, c.to), "bench.toml"),
+                      Catch::Contains(c.message));
+  }
+  CHECK_THROWS_WITH(
+      parse_bench_mapping(with(kGood, "cutoff = 64\n", "cutoff = 64\nwindow = \"x\"\n"),
+                          "bench.toml"),
+      Catch::Contains("channels[1].window: 'x' names no [[events]] entry"));
+}
+
 TEST_CASE("bench mapping: the units convert to SI", "[bench_test]") {
   using ccm::bench::si_factor;
   CHECK(*si_factor("g") == 9.80665);
