@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "app/output_file.hpp"
+#include "bench_test/bench_scores.hpp"
+#include "bench_test/rig_case_scores.hpp"
 #include "records/provenance/version.hpp"
 #include "rig_models/calibrate/rig_objective.hpp"
 
@@ -83,16 +85,23 @@ std::string scored_trials_text(const RigInputs& in) {
 }
 
 void compare_with_trials(const RigInputs& in, RigRunOutcome& o) {
-  // A run that went unstable early may hold too few samples to compare (metrics need two
-  // measured samples inside the simulated span of every channel): then it is not compared.
-  // It is scored on in.scored; the trials' own spread is that of every trial.
-  const rig::RigChannels& ch = o.result.channels;
-  if (in.scored.empty()) return;
-  for (const rig::TimeSeries* s :
-       {&ch.impactor_velocity_mps, &ch.artifact_angle_deg, &ch.pressure_kpa})
-    if (s->t.size() < 2) return;
+  // A run that went unstable early may hold too few samples to compare: then it is not compared,
+  // and says why. It is scored on in.scored through the bench test's path (the case's mapping
+  // over the rig's CSV layout, bench_test/rig_case_scores.hpp); the trials' own spread is that
+  // of every trial.
+  const rig::RawHistories& raw = o.result.raw;
+  if (in.scored.empty() || raw.t.size() < 2) return;
   const double threshold = in.cases.rig.sensor_deadband.value;
-  o.comparison = rig::compare_case(in.scored, o.result.channels, threshold);
+  const rig::PressureSensor sensor{threshold, in.cases.rig.low_pass_cutoff.value};
+  try {
+    o.comparison = bench::score_rig_case(
+        in.rig_case->code, in.scored,
+        {{raw.t, raw.impactor_velocity}, {raw.t, raw.angle_deg}, {raw.t, raw.pressure_kpa}},
+        sensor);
+  } catch (const bench::ScoringError& e) {
+    fmt::print(stderr, "ccm: the run is not compared with the trials: {}\n", e.what());
+    return;
+  }
   o.measured = rig::measured_spread(in.trials, threshold);
   o.objective = rig::calibration_objective(*o.comparison);
 }

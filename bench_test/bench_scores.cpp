@@ -219,11 +219,11 @@ ScoringError too_few(const std::string& channel, const std::string& what, std::s
   return ScoringError(fmt::format(
       "channel '{}': {} holds {} samples inside the simulated span and the window [{:.6g}, "
       "{:.6g}] s; a score needs {}",
-      channel, what, n, w.t0, w.t1, kMinRatedSamples));
+      channel, what, n, w.t0, w.t1, kMinScoredSamples));
 }
 
 // A channel over its window of numbers or the whole simulated span: every trial and the mean
-// hold kMinRatedSamples samples or more in it.
+// hold kMinScoredSamples samples or more in it.
 ChannelResult score_in_window(const ChannelSpec& c, const std::vector<PreparedTrial>& trials,
                               const std::vector<double>& shifts,
                               const std::map<std::string, rig::TimeSeries>& simulated) {
@@ -242,16 +242,16 @@ ChannelResult score_in_window(const ChannelSpec& c, const std::vector<PreparedTr
     const Window wu = clipped(w, sim_u);
     aligned.push_back(shifted(trial.channels.at(c.name), shifts[i]));
     const rig::TimeSeries measured = within(aligned.back(), wu.t0, wu.t1);
-    if (measured.t.size() < kMinRatedSamples)
+    if (measured.t.size() < kMinScoredSamples)
       throw too_few(c.name, trial.name, measured.t.size(), w);
     result.trials.push_back(score(trial.name, measured, sim_u, step));
   }
   result.curves = mean_curves(aligned, w);
   result.curves.simulated = rig::sample_at(sim, result.curves.t).value;
-  if (result.curves.t.size() < kMinRatedSamples)
+  if (result.curves.t.size() < kMinScoredSamples)
     throw ScoringError(fmt::format(
         "channel '{}': the trials overlap in {} samples inside the window; a score needs {}",
-        c.name, result.curves.t.size(), kMinRatedSamples));
+        c.name, result.curves.t.size(), kMinScoredSamples));
   result.mean = score("mean", {result.curves.t, result.curves.mean}, sim, step0);
   return result;
 }
@@ -278,13 +278,13 @@ ChannelResult score_in_event(const ChannelSpec& c, const EventSpec& e,
     const Window wu = clipped(*windows[i], sim_u);
     all = all ? Window{std::min(all->t0, wu.t0), std::max(all->t1, wu.t1)} : wu;
     const rig::TimeSeries measured = within(aligned.back(), wu.t0, wu.t1);
-    if (measured.t.size() >= 2)
+    if (measured.t.size() >= kMinScoredSamples)
       result.trials.push_back(score(trials[i].name, measured, sim_u, step));
   }
   if (!all) return result;
   result.curves = mean_curves(aligned, *all);
   result.curves.simulated = rig::sample_at(sim, result.curves.t).value;
-  if (result.curves.t.size() >= 2)
+  if (result.curves.t.size() >= kMinScoredSamples)
     result.mean = score("mean", {result.curves.t, result.curves.mean}, sim, step0);
   return result;
 }

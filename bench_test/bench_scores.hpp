@@ -49,6 +49,7 @@ struct ChannelScore {
 };
 
 inline constexpr std::size_t kMinRatedSamples = 10;
+inline constexpr std::size_t kMinScoredSamples = 2;  // an RMSE and a range need two
 
 // The curves compared, on the mean's samples: for plots and CSV.
 struct ChannelCurves {
@@ -84,7 +85,7 @@ struct ScoringError : std::runtime_error {
 
 // The scores of `simulated` (one curve per channel, by name, on the simulation's clock). Throws
 // ScoringError when the simulated trigger channel never reaches the threshold, or when a
-// channel's window (of numbers, or the whole span) holds fewer than kMinRatedSamples measured
+// channel's window (of numbers, or the whole span) holds fewer than kMinScoredSamples measured
 // samples inside the simulated span.
 BenchScores score_bench_test(const BenchMapping& mapping, const std::vector<PreparedTrial>& trials,
                              const std::map<std::string, rig::TimeSeries>& simulated);

@@ -1,7 +1,8 @@
 // A simulated case against the measured trials it is scored on: each channel (V_i, theta_a, P)
 // with the metrics of channel_metrics.hpp per trial and their spread over the trials, V_i
 // again inside each trial's measured contact window alone, and the contact onset and duration
-// errors from the pressure.
+// errors from the pressure. Computed by the bench test's path (bench_test/rig_case_scores.hpp:
+// the case's mapping over the rig's CSV layout); the types are here, where the store reads them.
 //
 // Which trials score a run: every trial but the one that drove an open-loop run (unless asked
 // for). That trial's V_i is the run's input: F_in = M_i dV_i/dt of it, the start at its V_i and
@@ -48,10 +49,6 @@ struct CaseComparison {
   std::optional<Spread> onset_error;       // s, over the trials where both have contact
   std::optional<Spread> duration_error;    // s
 };
-
-// Throws std::invalid_argument when there is no trial or a channel does not overlap.
-CaseComparison compare_case(std::span<const MeasuredTrial> trials, const RigChannels& simulated,
-                            double contact_threshold_kpa);
 
 // The trials to score a run on: all of `trials` but the one numbered `left_out` (the trial
 // that drove an open-loop run), in their order.

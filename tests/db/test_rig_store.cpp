@@ -12,6 +12,7 @@
 #include "records/provenance/version.hpp"
 #include "tests/db/scratch_dir.hpp"
 #include "tests/db/store_queries.hpp"
+#include "tests/support/rig_comparison.hpp"
 
 using namespace ccm;
 
@@ -54,7 +55,7 @@ db::RigRunRecord record() {
   r.row.geometry_hash = "geometry01234567";
   r.row.started_at = r.row.ended_at = kStamp;
   r.trials = {1, 2};
-  r.comparison = rig::compare_case(trials, sim, 1.0);
+  r.comparison = test::rig_comparison(trials, sim);
   r.measured = rig::measured_spread(trials, 1.0);
   r.channels = sim;
   for (const rig::MeasuredTrial& m : trials)
@@ -80,7 +81,8 @@ TEST_CASE("rig store: a run is written whole and read back", "[db][rig-store]") 
   q.bind(1, id);
   REQUIRE(q.step());
   CHECK(q.column_double(0) == r.comparison->pressure.per_trial[1].rmse);
-  CHECK(q.column_double(1) == 15.0);
+  CHECK(q.column_double(1) == r.comparison->pressure.per_trial[1].peak_simulated);
+  CHECK(q.column_double(1) == Approx(15.0).epsilon(1e-3));  // 10 kPa x 1.5, low-passed
   CHECK(q.column_double(2) == Approx(11.0));
   db::Statement s(c,
                   "SELECT mean, std_dev, n FROM rig_channel_spread WHERE run_id = ?1 AND "
@@ -107,7 +109,7 @@ TEST_CASE("rig store: a run scored on some trials stores those by number, every 
   db::RigStore store(dir / "rig.sqlite");
   db::RigRunRecord r = record();
   const std::vector<rig::MeasuredTrial> scored{trial(1, 1.0)};
-  r.comparison = rig::compare_case(scored, r.channels, 1.0);
+  r.comparison = test::rig_comparison(scored, r.channels);
   REQUIRE(r.comparison->velocity_in_contact.rmse);
   const long long id = store.record_run(r);
   db::Connection& c = store.connection();

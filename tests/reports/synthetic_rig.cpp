@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "tests/support/rig_comparison.hpp"
+
 namespace ccm::test {
 namespace {
 
@@ -50,7 +52,7 @@ db::RigRunRecord synthetic_rig_record() {
     r.trials.push_back(m.trial);
     r.measured_channels.push_back({m.impactor_velocity_mps, m.artifact_angle_deg, m.pressure_kpa});
   }
-  r.comparison = rig::compare_case(trials, sim, 1.0);
+  r.comparison = test::rig_comparison(trials, sim);
   r.measured = rig::measured_spread(trials, 1.0);
   r.channels = sim;
   return r;
