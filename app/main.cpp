@@ -291,6 +291,19 @@ int main(int argc, char** argv) {
   rig_list->add_option("--cases", rig_list_args.cases, "Case file (TOML)")->capture_default_str();
   rig_list->add_flag("--json", rig_list_args.json, "Print the parameters and cases as JSON");
   rig_list->footer("Exit codes: 0 printed, 2 bad input (the case file missing or defective).");
+  ccm::RigMappingArgs rig_mapping_args;
+  CLI::App* rig_mapping = rig->add_subcommand(
+      "mapping",
+      "Print a case's bench-test mapping (bench.toml): the channels, sensor model and "
+      "contact event ccm rig run scores through (docs/bench-test.md)");
+  rig_mapping->add_option("CASE", rig_mapping_args.case_code, "Case code (RX025 ... FF100)")
+      ->required();
+  rig_mapping_args.cases = ccm::default_data_file("rig/cases.toml");
+  rig_mapping->add_option("--cases", rig_mapping_args.cases, "Case file (TOML)")
+      ->capture_default_str();
+  rig_mapping->add_option("--data", rig_mapping_args.data,
+                          "Trial folder whose rig.toml gives the sensor's deadband and low-pass");
+  rig_mapping->footer("Exit codes: 0 printed, 2 bad input (a file defective, an unknown case).");
   ccm::RigCommonArgs rig_run_args;
   CLI::App* rig_run = rig->add_subcommand(
       "run", "Simulate a case, compare it with its measured trials, store and print the result");
@@ -380,6 +393,7 @@ int main(int argc, char** argv) {
   if (*study_scene) return ccm::study_scene_command(study_scene_args);
   if (*recommend) return ccm::recommend_command(rec);
   if (*rig_list) return ccm::rig_list_command(rig_list_args);
+  if (*rig_mapping) return ccm::rig_mapping_command(rig_mapping_args);
   if (*rig_run) return ccm::rig_run_command(rig_run_args);
   if (*rig_calibrate) return ccm::rig_calibrate_command(rig_calibrate_args);
   if (*report) return ccm::report_command(report_args);

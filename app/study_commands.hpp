@@ -65,6 +65,12 @@ struct RigListArgs {
   bool json = false;
 };
 
+struct RigMappingArgs {
+  std::string case_code;
+  std::filesystem::path cases;                // default: rig/cases.toml of the data folder
+  std::optional<std::filesystem::path> data;  // a trial folder whose rig.toml sets the sensor
+};
+
 // Each returns the process exit code (app/run_command.hpp exit_code).
 int study_run_command(const StudyRunArgs& args);
 int study_status_command(const StudyStatusArgs& args);
@@ -72,6 +78,7 @@ int study_refine_command(const StudyRefineArgs& args);
 int study_scene_command(const StudySceneArgs& args);
 int recommend_command(const RecommendArgs& args);
 int rig_list_command(const RigListArgs& args);
+int rig_mapping_command(const RigMappingArgs& args);
 int report_command(const ReportArgs& args);
 
 }  // namespace ccm

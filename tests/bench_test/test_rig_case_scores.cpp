@@ -13,7 +13,9 @@
 #include "config/text_file.hpp"
 #include "rig_models/cases/case_file.hpp"
 #include "rig_models/measurement/trial_folder.hpp"
+#include "tests/app/cli_shell.hpp"
 #include "tests/bench_test/rig_case_rows.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace ccm;
@@ -95,4 +97,20 @@ TEST_CASE("rig as bench test: the 12 cases score as the rig's own comparison did
     REQUIRE(now.count(key) == 1);
     CHECK(std::abs(now.at(key) - value) <= 1e-12 * std::abs(value) + 1e-15);
   }
+}
+
+TEST_CASE("ccm rig mapping: prints the case's mapping, which reads the case's trials",
+          "[bench_test][cli]") {
+  test::TempDir dir;
+  const auto r = test::run_ccm("rig mapping FX050", dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out == bench::rig_case_mapping_text("FX050", default_sensor()));
+  // Beside the trials, as a user would put it: the mapping reads FX050's three trials.
+  const bench::BenchMapping m =
+      bench::parse_bench_mapping(r.out, kRoot / "tests/data/rig-dev/bench.toml");
+  CHECK(bench::read_bench_trials(m).size() == 3);
+  const auto bad = test::run_ccm("rig mapping FX051", dir);
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("'FX051' is not a case") != std::string::npos);
 }
