@@ -41,6 +41,9 @@ inline constexpr ParameterRange kDampingRange{0.0, std::numeric_limits<double>::
 // A pin's clamp (engine/bc/pin_joint.hpp, PJ.1): torsional stiffness and damping.
 inline constexpr ParameterRange kClampRange{0.0, std::numeric_limits<double>::infinity(), true,
                                             false};
+// A track's friction (engine/bc/track_friction.hpp): the normal force and the viscous damping.
+inline constexpr ParameterRange kNormalForceRange{0.0, std::numeric_limits<double>::infinity(),
+                                                  true, false};
 // Poisson's ratio of an isotropic solid.
 inline constexpr ParameterRange kPoissonRange{-1.0, 0.5, false, false};
 

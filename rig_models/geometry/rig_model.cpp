@@ -290,6 +290,9 @@ RigModel build_rig_model(const RigGeometry& geometry, const RigParameters& rig,
   std::map<std::string, std::vector<int>> part_nodes = imp.nodes_of;
   part_nodes.insert(art.nodes_of.begin(), art.nodes_of.end());
   name_nodes(geometry, rig, l, part_nodes, r);
+  r.model.mesh.node_sets[kPinBoreSet] = r.pin_nodes;
+  r.model.mesh.node_sets[kGuideSet] = r.guide_nodes;
+  r.model.mesh.node_sets[kImpactorSet] = r.impactor_nodes;
   r.model = make_model(std::move(r.model.mesh));
   r.model.bcs.gravity = Vec3(0.0, 0.0, -geometry.gravity.value);
   if (request.artifact == ArtifactKind::fixed) r.model.bcs.fix(r.pin_nodes);  // thesis 3.3.2

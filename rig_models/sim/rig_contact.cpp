@@ -3,42 +3,32 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <stdexcept>
+
+#include "rig_models/sim/rig_scene.hpp"
 
 namespace ccm::rig {
-namespace {
 
-// The DCR's sensor pressure column (engine/contact/dcr/contact_output.hpp, thesis eq. 3.8).
-constexpr const char* kSensorSurface = "envelope/sensor";
-
-}  // namespace
-
-RigContact::RigContact(const RigModel& rig, const RigGeometry& geometry, const RigParameters& table,
-                       const RunParameters& parameters)
+RigContact::RigContact(const RigModel& rig, const ModelMesh& mesh, const RigParameters& table,
+                       const RunParameters& parameters, const HistorySource* dcr)
     : sensor_area_(rig.sensor_mesh_area) {
   if (parameters.mat_stiffness > 0.0) {
     mat_ = std::make_unique<SensorMat>(
-        rig.model.mesh, rig.tip_face, rig.mat_footprint, rig.track,
+        mesh, rig.tip_face, rig.mat_footprint, rig.track,
         SensorMatLaw{parameters.mat_stiffness, table.mat_exponent.value, parameters.mat_damping});
     return;
   }
-  dcr::DcrSettings contact;
-  contact.surfaces = rig.contact_surfaces;
-  contact.friction = geometry.contact.friction.value;
-  contact.restitution = geometry.contact.restitution.value;
-  contact.output.force_axis = rig.track;
-  contact.output.sensors = {kSensorSurface};
-  dcr_ = std::make_unique<dcr::DcrContact>(rig.model.mesh, contact, rig.model.bcs.fixed_nodes);
+  if (!dcr) throw std::logic_error("rig contact: the exact contact needs the scene's DCR pair");
+  dcr_ = dcr;
   const std::vector<std::string> columns = dcr_->history_columns();
   const std::string pressure = fmt::format("contact.{}.pressure", kSensorSurface);
-  pressure_at_ =
-      static_cast<size_t>(std::find(columns.begin(), columns.end(), pressure) - columns.begin());
+  const auto it = std::find(columns.begin(), columns.end(), pressure);
+  if (it == columns.end()) throw std::logic_error("rig contact: no column " + pressure);
+  pressure_at_ = static_cast<size_t>(it - columns.begin());
 }
 
 void RigContact::attach(RunOptions& options) {
-  if (dcr_)
-    options.contact = dcr_.get();
-  else
-    options.loads.push_back(mat_.get());
+  if (mat_) options.loads.push_back(mat_.get());
 }
 
 double RigContact::sensor_pressure(const State& s) {

@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "engine/bc/pin_joint.hpp"
-#include "engine/bc/slide_constraint.hpp"
 #include "engine/bc/track_friction.hpp"
 #include "rig_models/drive/hanging_weight_drive.hpp"
 #include "rig_models/drive/open_loop_drive.hpp"
@@ -17,6 +17,8 @@
 #include "rig_models/post/rig_channels.hpp"
 #include "rig_models/signal/resample.hpp"
 #include "rig_models/sim/rig_contact.hpp"
+#include "rig_models/sim/rig_scene.hpp"
+#include "run/scene/scene_run.hpp"
 
 namespace ccm::rig {
 namespace {
@@ -30,19 +32,17 @@ HangingWeightSettings weight_settings(const RigCaseTable& t, double gravity) {
   return s;
 }
 
-// The track's friction on the impactor (engine/bc/track_friction.hpp) with its weight as the
-// normal force; a kinetic coefficient above the static one raises the static one to it. The
-// open-loop drive's measured motion carries the friction until the measured contact onset, so
-// there it acts from the onset (thesis 3.4.1: the drive does not carry it once contact starts).
-TrackFrictionSpec track_of(const RigCaseTable& t, const RunParameters& p, double gravity,
-                           std::vector<int> impactor_nodes, const Vec3& track, double active_from) {
-  return {std::move(impactor_nodes),
-          track,
+// The track's friction on the impactor as the window's run-up reckons it (the run's own is the
+// scene's "track" joint, rig_scene.hpp): its weight as the normal force, a kinetic coefficient
+// above the static one raising the static one to it.
+TrackFrictionSpec run_up_track(const RigCaseTable& t, const RunParameters& p, double gravity) {
+  return {{},
+          Vec3::UnitY(),
           t.rig.impactor_mass.value * gravity,
           std::max(p.track_static_friction, p.track_friction),
           p.track_friction,
           p.track_damping,
-          active_from};
+          0.0};
 }
 
 // F_in of the open-loop drive on the simulation's clock (t = 0 at the window's start).
@@ -60,10 +60,11 @@ struct Samples {
   std::vector<double> u_y, x_z, pressure_pa, pin_angle;
 };
 
-RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, const PinJointSpec& pin) {
+RigModelFacts facts_of(const RigModel& rig, const Model& model, const RigCaseTable& table,
+                       const JointSpec& pin) {
   RigModelFacts f;
-  f.n_nodes = rig.model.mesh.n_nodes();
-  f.n_elements = rig.model.mesh.n_elements();
+  f.n_nodes = model.mesh.n_nodes();
+  f.n_elements = model.mesh.n_elements();
   f.impactor_mass = rig.impactor_mass;
   f.artifact_mass = rig.artifact_mass;
   f.artifact_inertia = rig.artifact_inertia;
@@ -81,17 +82,19 @@ RigModelFacts facts_of(const RigModel& rig, const RigCaseTable& table, const Pin
   return f;
 }
 
-// The artifact's pin (3.3.2): a Free artifact turns on it against Coulomb friction (3.2-3.6); a
-// Fixed one is held by the screw's clamp, a torsional spring and damper (PJ.1), and has friction
-// only when it is given (3.4.1's frictional "fixed" pin).
-PinJointSpec pin_of(const RigModel& rig, const RigCase& c, const RunParameters& par) {
-  PinJointSpec s{rig.pin_nodes, rig.pin_point, rig.pin_axis, par.mu_s.value_or(0.0),
-                 par.mu_k.value_or(0.0)};
-  if (c.artifact == ArtifactKind::fixed) {
-    s.stiffness = par.clamp_stiffness;
-    s.damping = par.clamp_damping;
-  }
-  return s;
+// The scene's joint named `name` (rig_scene.hpp) and its constraint.
+template <typename Constraint>
+const Constraint& joint_named(const SceneRun& run, const std::string& name) {
+  for (size_t i = 0; i < run.scene.joints.size(); ++i)
+    if (run.scene.joints[i].name == name)
+      if (const auto* c = dynamic_cast<const Constraint*>(run.joints[i].get())) return *c;
+  throw std::logic_error("the rig's scene has no joint " + name);
+}
+
+const JointSpec& joint_spec(const Scene& scene, const std::string& name) {
+  for (const JointSpec& j : scene.joints)
+    if (j.name == name) return j;
+  throw std::logic_error("the rig's scene has no joint " + name);
 }
 
 // The raw channels (3.3.3): V_i of the two pearls, theta_a (3.7), and the DCR's sensor pressure
@@ -150,12 +153,11 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   const double gravity = setup.geometry.gravity.value;
   RigRunResult out;
   out.window = run_window(table, c, {req.drive, req.trial, req.start, req.end},
-                          weight_settings(table, gravity),
-                          track_of(table, par, gravity, {}, Vec3::UnitY(), 0.0));
+                          weight_settings(table, gravity), run_up_track(table, par, gravity));
   const RunWindow& w = out.window;
   RigModelRequest mr;
   mr.impactor = c.impactor;
-  mr.artifact = ArtifactKind::free;  // on the pin joint below: free, or Fixed on its clamp
+  mr.artifact = ArtifactKind::free;  // on the pin joint: free, or Fixed on its clamp
   mr.gap = w.gap;
   mr.mesh_scale = req.mesh_scale;
   mr.spring_stiffness = par.spring_stiffness;
@@ -163,35 +165,36 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   for (int n : rig.impactor_nodes)
     rig.model.initial_velocity[static_cast<size_t>(n)] = w.initial_velocity * rig.track;
 
+  // The run, by the scene path (run/scene/scene_run.hpp): joints and the DCR pair.
+  RigSceneRequest sr;
+  sr.end_time = w.end - w.start;
+  sr.output_interval = table.simulation.output_interval.value;
+  sr.gravity = gravity;
+  sr.friction_from =
+      req.drive == DriveKind::open_loop && w.measured_onset ? *w.measured_onset - w.start : 0.0;
+  sr.contact = !(par.mat_stiffness > 0.0);
+  Scene scene = rig_scene(rig, setup.geometry, table, c, par, sr, setup.geometry.source);
+  SceneRun run = assemble_scene_run(std::move(scene), std::move(rig.model));
+  Model& model = run.model;
+
   std::unique_ptr<HangingWeightDrive> weight;
   if (req.drive == DriveKind::open_loop) {
     const OpenLoopDrive d =
         open_loop_drive(*req.trial, rig.impactor_mass, table.drive.velocity_smoothing.value);
     out.open_loop_masked = d.masked_samples;
-    rig.model.bcs.loads.push_back(make_surface_load("drive", rig.model.mesh, rig.drive_surface,
-                                                    rig.track, shifted_force(d, w.start)));
+    model.bcs.loads.push_back(make_surface_load("drive", model.mesh, rig.drive_surface, rig.track,
+                                                shifted_force(d, w.start)));
   } else {
-    weight =
-        std::make_unique<HangingWeightDrive>(rig.model.mesh, rig.drive_surface, rig.impactor_nodes,
-                                             rig.track, weight_settings(table, gravity));
+    weight = std::make_unique<HangingWeightDrive>(model.mesh, rig.drive_surface, rig.impactor_nodes,
+                                                  rig.track, weight_settings(table, gravity));
   }
-  const double friction_from =
-      req.drive == DriveKind::open_loop && w.measured_onset ? *w.measured_onset - w.start : 0.0;
-  TrackFriction track_friction(
-      track_of(table, par, gravity, rig.impactor_nodes, rig.track, friction_from));
-  SlideConstraint guide(rig.guide_nodes, rig.track);
-  const PinJointSpec pin_spec = pin_of(rig, c, par);
-  PinJoint pin_joint(pin_spec, rig.model.mesh.X);
-  RigContact contact(rig, setup.geometry, table.rig, par);
+  const PinJoint& pin_joint = joint_named<PinJoint>(run, "pin");
+  RigContact contact(rig, model.mesh, table.rig, par,
+                     run.contact.histories.empty() ? nullptr : run.contact.histories.front());
 
   Samples s;
-  RunOptions opt;
-  opt.time.end_time = w.end - w.start;
-  opt.time.output_interval = table.simulation.output_interval.value;
+  RunOptions opt = scene_run_options(run, nullptr);
   contact.attach(opt);
-  opt.constraints.push_back(&guide);
-  opt.constraints.push_back(&pin_joint);
-  opt.constraints.push_back(&track_friction);
   if (weight) opt.loads.push_back(weight.get());
   opt.progress = req.progress;
   const auto angle = static_cast<size_t>(rig.angle_node);
@@ -204,9 +207,9 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
     s.pressure_pa.push_back(contact.sensor_pressure(st));
     s.pin_angle.push_back(pin_joint.angle());
   };
-  if (req.instrument) req.instrument(rig.model, opt);
-  out.summary = run_explicit(rig.model, opt);
-  out.model = facts_of(rig, table, pin_spec);
+  if (req.instrument) req.instrument(model, opt);
+  out.summary = run_explicit(model, opt);
+  out.model = facts_of(rig, model, table, joint_spec(run.scene, "pin"));
   out.raw = raw_histories(s, rig.track, rig.sensor_mesh_area);
   out.channels = sensed_channels(out.raw, table, req.trial);
   return out;

@@ -121,6 +121,7 @@ struct FixedSpec {
 enum class JointKind {
   pin,    // the nodes turn as one rigid ring about an axis, with Coulomb friction (pin_joint.hpp)
   slide,  // the nodes move only along one direction (slide_constraint.hpp)
+  track,  // Coulomb and viscous friction on the nodes along a track (track_friction.hpp)
 };
 
 struct JointSpec {
@@ -129,10 +130,12 @@ struct JointSpec {
   std::optional<std::string> body;  // restricts the selection to one body
   NodeSelection selection;
   Vec3 point = Vec3::Zero();      // pin: a point on the axis [m]
-  Vec3 axis = Vec3::UnitX();      // pin: the axis; slide: the direction of travel (non-zero)
-  double mu_s = 0.0, mu_k = 0.0;  // pin: static and kinetic friction coefficients
+  Vec3 axis = Vec3::UnitX();      // pin: the axis; slide, track: the direction (non-zero)
+  double mu_s = 0.0, mu_k = 0.0;  // pin, track: static and kinetic friction coefficients
   double stiffness = 0.0;         // pin: the clamp's torsional spring [N m/rad] (pin_joint.hpp)
-  double damping = 0.0;           // pin: its damper [N m s/rad]
+  double damping = 0.0;           // pin: its damper [N m s/rad]; track: viscous [N s/m]
+  double normal_force = 0.0;      // track: N [N] pressing the group on its track
+  double active_from = 0.0;       // track: the friction acts from this time on [s]
   SourceRef where;
 };
 

@@ -11,6 +11,7 @@
 #include "engine/bc/node_selection.hpp"
 #include "engine/bc/pin_joint.hpp"
 #include "engine/bc/slide_constraint.hpp"
+#include "engine/bc/track_friction.hpp"
 #include "engine/contact/contact_set.hpp"
 #include "engine/contact/dcr/dcr_contact.hpp"
 #include "engine/contact/penalty/rigid_surface_penalty.hpp"
@@ -505,8 +506,11 @@ std::vector<std::unique_ptr<KinematicConstraint>> build_joints(const Scene& scen
         joints.push_back(std::make_unique<PinJoint>(
             PinJointSpec{nodes, j.point, j.axis, j.mu_s, j.mu_k, j.stiffness, j.damping},
             model.mesh.X));
-      else
+      else if (j.kind == JointKind::slide)
         joints.push_back(std::make_unique<SlideConstraint>(nodes, j.axis));
+      else
+        joints.push_back(std::make_unique<TrackFriction>(TrackFrictionSpec{
+            nodes, j.axis, j.normal_force, j.mu_s, j.mu_k, j.damping, j.active_from}));
     } catch (const std::invalid_argument& e) {
       fail(scene, j.where, key, e.what());
     }

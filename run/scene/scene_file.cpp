@@ -536,8 +536,9 @@ double clamp_value(const Table& t, const char* key) {
 void check_column_prefix(const Table& t, std::string_view key, const std::string& name,
                          const Scene& scene);
 
-// [[joints]]: kind = "pin" (point, axis, mu_s, mu_k, the clamp's stiffness and damping) or
-// "slide" (direction) on selected nodes.
+// [[joints]]: kind = "pin" (point, axis, mu_s, mu_k, the clamp's stiffness and damping),
+// "slide" (direction) or "track" (direction, normal_force, mu_s, mu_k, damping, from) on selected
+// nodes.
 JointSpec parse_joint(const Table& t) {
   const std::string kind = t.need<std::string>("kind");
   JointSpec j;
@@ -553,8 +554,22 @@ JointSpec parse_joint(const Table& t) {
     t.allow_only({"name", "kind", "body", "node_set", "box", "plane", "direction"});
     j.kind = JointKind::slide;
     j.axis = non_zero(t, "direction", t.need<Vec3>("direction"));
+  } else if (kind == "track") {
+    t.allow_only({"name", "kind", "body", "node_set", "box", "plane", "direction", "normal_force",
+                  "mu_s", "mu_k", "damping", "from"});
+    j.kind = JointKind::track;
+    j.axis = non_zero(t, "direction", t.need<Vec3>("direction"));
+    j.normal_force = t.need<double>("normal_force");
+    if (!kNormalForceRange.contains(j.normal_force))
+      t.fail("normal_force", kNormalForceRange.problem(j.normal_force));
+    parse_pin_friction(t, j.mu_s, j.mu_k);
+    j.damping = t.get_or("damping", 0.0);
+    if (!kDampingRange.contains(j.damping)) t.fail("damping", kDampingRange.problem(j.damping));
+    j.active_from = t.get_or("from", 0.0);
+    if (!std::isfinite(j.active_from)) t.fail("from", "must be a finite time [s]");
   } else {
-    t.fail("kind", unknown_value_problem(kind, std::array<std::string_view, 2>{"pin", "slide"}));
+    t.fail("kind",
+           unknown_value_problem(kind, std::array<std::string_view, 3>{"pin", "slide", "track"}));
   }
   j.body = parse_body_ref(t);
   j.selection = parse_node_selection(t);

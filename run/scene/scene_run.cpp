@@ -8,15 +8,24 @@
 namespace ccm {
 
 SceneRun assemble_scene_run(Scene scene) {
+  Model model = build_model(scene);
+  return assemble_scene_run(std::move(scene), std::move(model));
+}
+
+SceneRun assemble_scene_run(Scene scene, Model model) {
   SceneRun r;
   r.scene = std::move(scene);
-  r.model = build_model(r.scene);
+  r.model = std::move(model);
   r.output = build_output_request(r.scene, r.model.mesh);
   r.contact = build_contact(r.scene, r.model);
   r.joints = build_joints(r.scene, r.model);
-  for (std::size_t i = 0; i < r.joints.size(); ++i)
+  for (std::size_t i = 0; i < r.joints.size(); ++i) {
+    const std::string& name = r.scene.joints[i].name;
     if (const auto* pin = dynamic_cast<const PinJoint*>(r.joints[i].get()))
-      r.joint_histories.push_back(std::make_unique<PinJointHistory>(r.scene.joints[i].name, *pin));
+      r.joint_histories.push_back(std::make_unique<PinJointHistory>(name, *pin));
+    else if (const auto* track = dynamic_cast<const TrackFriction*>(r.joints[i].get()))
+      r.joint_histories.push_back(std::make_unique<TrackFrictionHistory>(name, *track));
+  }
   return r;
 }
 

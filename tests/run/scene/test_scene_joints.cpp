@@ -5,10 +5,12 @@
 // built is refused with file, line and key.
 #include <fmt/format.h>
 
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "run/scene/scene_file.hpp"
 #include "run/scene/scene_run.hpp"
@@ -71,6 +73,60 @@ TEST_CASE("joints: nodes on a slide follow the closed-form parabola along it", "
   CHECK(last.x[0].x() - last.X[0].x() > 3e-6);
 }
 
+TEST_CASE("joints: a track's friction stops a sliding cube at the closed-form time and distance",
+          "[scene][joints]") {
+  // A 1 g cube launched at 1 m/s along x, every node on a track along x with N = 0.1 N and
+  // mu_k = 0.5 (no gravity): it decelerates at a = mu_k N / M = 50 m/s^2 (TF.3 takes mu_k N dt
+  // from its momentum every step: exact for the mean velocity to round-off), stops at v0 / a =
+  // 20 ms after v0^2 / (2 a) = 10 mm (within a dt^2 / 2 of the last step, 1e-7 m at dt < 6e-5 s),
+  // then sticks (TF.2) with no force.
+  const std::string text = test::kOneCubeScene;
+  std::string scene = text;
+  scene.replace(scene.find("end = 1e-3"), 10, "end = 0.03\noutput_interval = 1e-3");
+  scene.insert(scene.find("[bodies.material]"), "initial_velocity = [1.0, 0.0, 0.0]\n");
+  scene +=
+      "[[joints]]\nname = \"rails\"\nkind = \"track\"\nbody = \"cube\"\n"
+      "box = {min = [-1.0, -1.0, -1.0], max = [1.0, 1.0, 1.0]}\ndirection = [1.0, 0.0, 0.0]\n"
+      "normal_force = 0.1\nmu_s = 0.5\nmu_k = 0.5\n";
+  const SceneRun run = assemble_scene_run(parse_scene(scene, "s.toml"));
+  REQUIRE(run.joints.size() == 1);
+  CHECK(run.joints[0]->name() == "track_friction");
+  REQUIRE(run.joint_histories.size() == 1);
+  CHECK(run.joint_histories[0]->history_columns() ==
+        std::vector<std::string>{"rails.force", "rails.sticking"});
+  RunOptions opt = scene_run_options(run, nullptr);
+  double M = 0.0;
+  std::vector<std::array<double, 4>> samples;  // t, mean v_x, mean u_x, sticking
+  opt.on_sample = [&](const State& s) {
+    double p = 0.0, u = 0.0;
+    M = 0.0;
+    for (size_t i = 0; i < s.v.size(); ++i) {
+      M += s.m_lumped[i];
+      p += s.m_lumped[i] * s.v[i].x();
+      u += s.m_lumped[i] * (s.x[i].x() - s.X[i].x());
+    }
+    std::vector<double> row;
+    run.joint_histories[0]->append_history(s, row);
+    samples.push_back({s.t, p / M, u / M, row[1]});
+  };
+  const RunSummary summary = run_explicit(run.model, opt);
+  REQUIRE(summary.verdict == Verdict::completed);
+  REQUIRE(M == Approx(1e-3).epsilon(1e-12));
+  const double a = 0.5 * 0.1 / M;
+  for (const auto& [t, v, u, sticking] : samples) {
+    INFO("t = " << t);
+    if (t < 0.019) {
+      CHECK(std::abs(v - (1.0 - a * t)) < 1e-12);
+      CHECK(sticking == 0.0);
+    } else if (t > 0.021) {
+      CHECK(std::abs(v) < 1e-15);
+      CHECK(std::abs(u - 1.0 / (2.0 * a)) < 1e-7);
+      CHECK(sticking == 1.0);
+    }
+  }
+  CHECK(samples.back()[0] == Approx(0.03));
+}
+
 TEST_CASE("joints: a stiff bar on a pin swings with the compound pendulum's period",
           "[scene][joints][heavy]") {
   // The bar, turned by 3 degrees and released, on a pin along y through its top 10 mm (the
@@ -124,7 +180,18 @@ TEST_CASE("joints: a stiff bar on a pin swings with the compound pendulum's peri
 TEST_CASE("joints: what cannot be a joint is refused with file, line and key", "[scene][joints]") {
   const std::string cube = test::kOneCubeScene;  // lines 1-12
   CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"hinge\"\n"),
-             Contains("s.toml:14: joints[0].kind") && Contains("\"pin\", \"slide\""));
+             Contains("s.toml:14: joints[0].kind") && Contains("\"pin\", \"slide\", \"track\""));
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"track\"\ndirection = [1.0, 0.0, "
+                                            "0.0]\nnode_set = \"cube/boundary\"\nnormal_force = "
+                                            "-1.0\n"),
+             Contains("s.toml:17: joints[0].normal_force") && Contains(">= 0 (got -1)"));
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"track\"\ndirection = [1.0, 0.0, "
+                                            "0.0]\nnode_set = \"cube/boundary\"\n"),
+             Contains("joints[0].normal_force") && Contains("required"));
+  CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"track\"\ndirection = [1.0, 0.0, "
+                                            "0.0]\nnode_set = \"cube/boundary\"\nnormal_force = "
+                                            "1.0\nmu_s = 0.1\nmu_k = 0.3\n"),
+             Contains("joints[0].mu_k") && Contains("at most mu_s"));
   CHECK_THAT(test::assembly_error_of(cube + "[[joints]]\nkind = \"slide\"\ndirection = [1.0, 0.0, "
                                             "0.0]\nbox = {min = [5.0, 5.0, 5.0], max = [6.0, 6.0, "
                                             "6.0]}\n"),

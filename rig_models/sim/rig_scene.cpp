@@ -1,0 +1,77 @@
+#include "rig_models/sim/rig_scene.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace ccm::rig {
+namespace {
+
+JointSpec on_set(std::string name, JointKind kind, const char* node_set) {
+  JointSpec j;
+  j.name = std::move(name);
+  j.kind = kind;
+  j.selection = NodeSetRef{node_set};
+  return j;
+}
+
+// The artifact's pin (3.3.2): a Free artifact turns on it against Coulomb friction (3.2-3.6); a
+// Fixed one is held by the screw's clamp, a torsional spring and damper (PJ.1), and has friction
+// only when it is given (3.4.1's frictional "fixed" pin).
+JointSpec pin_of(const RigModel& rig, const RigCase& c, const RunParameters& par) {
+  JointSpec j = on_set("pin", JointKind::pin, kPinBoreSet);
+  j.point = rig.pin_point;
+  j.axis = rig.pin_axis;
+  j.mu_s = par.mu_s.value_or(0.0);
+  j.mu_k = par.mu_k.value_or(0.0);
+  if (c.artifact == ArtifactKind::fixed) {
+    j.stiffness = par.clamp_stiffness;
+    j.damping = par.clamp_damping;
+  }
+  return j;
+}
+
+// The track's friction on the impactor with its weight as the normal force; a kinetic
+// coefficient above the static one raises the static one to it. The open-loop drive's measured
+// motion carries the friction until the measured contact onset, so there it acts from the onset
+// (thesis 3.4.1: the drive does not carry it once contact starts).
+JointSpec track_of(const RigModel& rig, const RigCaseTable& t, const RunParameters& p,
+                   const RigSceneRequest& r) {
+  JointSpec j = on_set("track", JointKind::track, kImpactorSet);
+  j.axis = rig.track;
+  j.normal_force = t.rig.impactor_mass.value * r.gravity;
+  j.mu_s = std::max(p.track_static_friction, p.track_friction);
+  j.mu_k = p.track_friction;
+  j.damping = p.track_damping;
+  j.active_from = r.friction_from;
+  return j;
+}
+
+ContactSpec contact_of(const RigModel& rig, const RigGeometry& g) {
+  ContactSpec c;
+  c.kind = ContactKind::dcr;
+  c.surfaces = rig.contact_surfaces;
+  c.friction = g.contact.friction.value;
+  c.restitution = g.contact.restitution.value;
+  c.force_axis = rig.track;
+  c.sensors = {kSensorSurface};
+  return c;
+}
+
+}  // namespace
+
+Scene rig_scene(const RigModel& rig, const RigGeometry& geometry, const RigCaseTable& table,
+                const RigCase& c, const RunParameters& parameters, const RigSceneRequest& request,
+                const std::filesystem::path& source) {
+  Scene s;
+  s.source = source;
+  s.title = "rig " + c.code;
+  s.time.end = request.end_time;
+  s.time.output_interval = request.output_interval;
+  JointSpec guide = on_set("guide", JointKind::slide, kGuideSet);
+  guide.axis = rig.track;
+  s.joints = {guide, pin_of(rig, c, parameters), track_of(rig, table, parameters, request)};
+  if (request.contact) s.contacts.push_back(contact_of(rig, geometry));
+  return s;
+}
+
+}  // namespace ccm::rig

@@ -1,0 +1,40 @@
+// The rig's run as a scene (docs/rig-models.md, "One assembly path"): the joints and the contact
+// of a case over the rig model's named node sets and surfaces, which run/'s one assembly path
+// (run/scene/scene_run.hpp) builds as it builds any scene's:
+//   [[joints]] "guide"  slide   the carriage's (and a flexible rod's) guide nodes along the track
+//                                (thesis Fig. 3-18);
+//              "pin"    pin     the artifact's bore on its pin (3.3.2): Coulomb friction on a Free
+//                                artifact, the screw's clamp (spring, damper) on a Fixed one;
+//              "track"  track   the impactor on its rails: Coulomb and viscous friction under its
+//                                weight (3.4.1), from the measured onset under the open-loop drive;
+//   [contact]  the DCR between the rod's tip and the envelope's contact zone, its output on the
+//              sensor patch (eq. 3.8), unless the sensor mat (a load of its own) takes the pair.
+// The model comes meshed and tuned from rig_models/geometry/ (build_rig_model).
+#pragma once
+
+#include <filesystem>
+
+#include "rig_models/cases/rig_case.hpp"
+#include "rig_models/geometry/rig_geometry.hpp"
+#include "rig_models/geometry/rig_model.hpp"
+#include "rig_models/sim/run_parameters.hpp"
+#include "run/scene/scene.hpp"
+
+namespace ccm::rig {
+
+// The sensor patch whose pressure the DCR's output reports (eq. 3.8).
+inline constexpr const char* kSensorSurface = "envelope/sensor";
+
+struct RigSceneRequest {
+  double end_time = 0.0;         // s, on the simulation's clock (0 at the window's start)
+  double output_interval = 0.0;  // s
+  double gravity = 9.81;         // m/s^2, the impactor's weight on its track
+  double friction_from = 0.0;    // s, the track's friction acts from here (simulation clock)
+  bool contact = true;           // the DCR pair (false: the sensor mat takes it)
+};
+
+Scene rig_scene(const RigModel& rig, const RigGeometry& geometry, const RigCaseTable& table,
+                const RigCase& c, const RunParameters& parameters, const RigSceneRequest& request,
+                const std::filesystem::path& source);
+
+}  // namespace ccm::rig
