@@ -18,9 +18,10 @@ namespace ccm::rig {
 
 // The model's node sets a run's joints select (rig_models/sim/rig_scene.hpp), beside each part's
 // ("<part>", "<part>/boundary") and the named surfaces' ("envelope/sensor", ...).
-inline constexpr const char* kPinBoreSet = "rig/pin_bore";   // pin_nodes
-inline constexpr const char* kGuideSet = "rig/guide";        // guide_nodes
-inline constexpr const char* kImpactorSet = "rig/impactor";  // impactor_nodes
+inline constexpr const char* kPinBoreSet = "rig/pin_bore";      // pin_nodes
+inline constexpr const char* kGuideSet = "rig/guide";           // guide_nodes
+inline constexpr const char* kImpactorSet = "rig/impactor";     // impactor_nodes
+inline constexpr const char* kDriveSurface = "carriage/drive";  // drive_surface
 
 struct RigModelRequest {
   ImpactorKind impactor = ImpactorKind::rigid;

@@ -46,11 +46,11 @@ TrackFrictionSpec run_up_track(const RigCaseTable& t, const RunParameters& p, do
 }
 
 // F_in of the open-loop drive on the simulation's clock (t = 0 at the window's start).
-TimeTable shifted_force(const OpenLoopDrive& d, double start) {
+std::vector<std::pair<double, double>> shifted_force(const OpenLoopDrive& d, double start) {
   std::vector<std::pair<double, double>> points;
   for (size_t k = 0; k < d.force_n.t.size(); ++k)
     points.emplace_back(d.force_n.t[k] - start, d.force_n.value[k]);
-  return TimeTable(std::move(points));
+  return points;
 }
 
 // What the sampler keeps at every output sample.
@@ -173,18 +173,18 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   sr.friction_from =
       req.drive == DriveKind::open_loop && w.measured_onset ? *w.measured_onset - w.start : 0.0;
   sr.contact = !(par.mat_stiffness > 0.0);
+  if (req.drive == DriveKind::open_loop) {
+    const OpenLoopDrive d =
+        open_loop_drive(*req.trial, rig.impactor_mass, table.drive.velocity_smoothing.value);
+    out.open_loop_masked = d.masked_samples;
+    sr.drive_force = shifted_force(d, w.start);
+  }
   Scene scene = rig_scene(rig, setup.geometry, table, c, par, sr, setup.geometry.source);
   SceneRun run = assemble_scene_run(std::move(scene), std::move(rig.model));
   Model& model = run.model;
 
   std::unique_ptr<HangingWeightDrive> weight;
-  if (req.drive == DriveKind::open_loop) {
-    const OpenLoopDrive d =
-        open_loop_drive(*req.trial, rig.impactor_mass, table.drive.velocity_smoothing.value);
-    out.open_loop_masked = d.masked_samples;
-    model.bcs.loads.push_back(make_surface_load("drive", model.mesh, rig.drive_surface, rig.track,
-                                                shifted_force(d, w.start)));
-  } else {
+  if (req.drive == DriveKind::physical) {
     weight = std::make_unique<HangingWeightDrive>(model.mesh, rig.drive_surface, rig.impactor_nodes,
                                                   rig.track, weight_settings(table, gravity));
   }

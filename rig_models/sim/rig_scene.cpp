@@ -71,6 +71,14 @@ Scene rig_scene(const RigModel& rig, const RigGeometry& geometry, const RigCaseT
   guide.axis = rig.track;
   s.joints = {guide, pin_of(rig, c, parameters), track_of(rig, table, parameters, request)};
   if (request.contact) s.contacts.push_back(contact_of(rig, geometry));
+  if (!request.drive_force.empty()) {
+    SurfaceLoadSpec drive;
+    drive.name = "drive";
+    drive.surface = SurfaceRef{kDriveSurface};
+    drive.direction = rig.track;
+    drive.force = request.drive_force;
+    s.surface_loads.push_back(std::move(drive));
+  }
   return s;
 }
 

@@ -7,12 +7,15 @@
 //                                artifact, the screw's clamp (spring, damper) on a Fixed one;
 //              "track"  track   the impactor on its rails: Coulomb and viscous friction under its
 //                                weight (3.4.1), from the measured onset under the open-loop drive;
+//   [[surface_loads]] "drive"  the open-loop drive's measured force on the carriage (3.3.2);
 //   [contact]  the DCR between the rod's tip and the envelope's contact zone, its output on the
 //              sensor patch (eq. 3.8), unless the sensor mat (a load of its own) takes the pair.
 // The model comes meshed and tuned from rig_models/geometry/ (build_rig_model).
 #pragma once
 
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "rig_models/cases/rig_case.hpp"
 #include "rig_models/geometry/rig_geometry.hpp"
@@ -31,6 +34,9 @@ struct RigSceneRequest {
   double gravity = 9.81;         // m/s^2, the impactor's weight on its track
   double friction_from = 0.0;    // s, the track's friction acts from here (simulation clock)
   bool contact = true;           // the DCR pair (false: the sensor mat takes it)
+  // The open-loop drive's force on the carriage's front face ("carriage/drive") along the track,
+  // (t [s] on the simulation's clock, F [N]); empty: the physical drive (a load of the rig's own).
+  std::vector<std::pair<double, double>> drive_force;
 };
 
 Scene rig_scene(const RigModel& rig, const RigGeometry& geometry, const RigCaseTable& table,

@@ -167,7 +167,7 @@ std::vector<Triangle> select_surface(const Scene& scene, const ModelMesh& mesh,
   return out;
 }
 
-void apply_loads(const Scene& scene, Model& model) {
+void apply_loads_of(const Scene& scene, Model& model) {
   for (const SurfaceLoadSpec& s : scene.surface_loads) {
     const std::vector<Triangle> surface = select_surface(scene, model.mesh, s);
     const std::string_view key = s.surface.index() == 0 ? "surface" : "plane";
@@ -235,6 +235,8 @@ void apply_initial_velocities(const Scene& scene, Model& model) {
 
 }  // namespace
 
+void apply_surface_loads(const Scene& scene, Model& model) { apply_loads_of(scene, model); }
+
 Model build_model(const Scene& scene) {
   ModelMesh mesh;
   for (const BodySpec& body : scene.bodies) {
@@ -246,7 +248,7 @@ Model build_model(const Scene& scene) {
   Model model = make_model(std::move(mesh));
   model.rigid_bodies = std::move(rigid);
   apply_fixed(scene, model);
-  apply_loads(scene, model);
+  apply_surface_loads(scene, model);
   apply_initial_velocities(scene, model);
   model.bcs.gravity = scene.gravity;
   return model;

@@ -21,6 +21,10 @@ namespace ccm {
 // node or a load surface has no area.
 Model build_model(const Scene& scene);
 
+// The scene's [[surface_loads]] on `model` (build_model's; a model built elsewhere gets them from
+// assemble_scene_run). Throws ConfigError as build_model does.
+void apply_surface_loads(const Scene& scene, Model& model);
+
 // The histories the scene asks for; tracked points become the nearest node of their body.
 // Throws ConfigError for an unknown body name.
 OutputRequest build_output_request(const Scene& scene, const ModelMesh& mesh);

@@ -6,13 +6,10 @@
 #include "engine/observe/joint_history.hpp"
 
 namespace ccm {
+namespace {
 
-SceneRun assemble_scene_run(Scene scene) {
-  Model model = build_model(scene);
-  return assemble_scene_run(std::move(scene), std::move(model));
-}
-
-SceneRun assemble_scene_run(Scene scene, Model model) {
+// The output request, contact and joints of a scene whose model is built (with its loads).
+SceneRun assemble_built(Scene scene, Model model) {
   SceneRun r;
   r.scene = std::move(scene);
   r.model = std::move(model);
@@ -27,6 +24,18 @@ SceneRun assemble_scene_run(Scene scene, Model model) {
       r.joint_histories.push_back(std::make_unique<TrackFrictionHistory>(name, *track));
   }
   return r;
+}
+
+}  // namespace
+
+SceneRun assemble_scene_run(Scene scene) {
+  Model model = build_model(scene);  // its surface loads too
+  return assemble_built(std::move(scene), std::move(model));
+}
+
+SceneRun assemble_scene_run(Scene scene, Model model) {
+  apply_surface_loads(scene, model);
+  return assemble_built(std::move(scene), std::move(model));
 }
 
 RunOptions scene_run_options(const SceneRun& run, HistoryRecorder* history) {

@@ -30,8 +30,8 @@ struct SceneRun {
 SceneRun assemble_scene_run(Scene scene);
 
 // The same with the model built elsewhere (the rig's parts, meshed and tuned by its own mesher:
-// rig_models/sim/rig_scene.hpp): the scene's contact, joints and output over the model's named
-// node sets and surfaces; its bodies are not read.
+// rig_models/sim/rig_scene.hpp): the scene's surface loads, contact, joints and output over the
+// model's named node sets and surfaces; its bodies are not read.
 SceneRun assemble_scene_run(Scene scene, Model model);
 
 // The options of its run: time, monitor, contact, joints; with a history recorder, the recorder
