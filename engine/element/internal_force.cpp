@@ -316,7 +316,10 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
   {
     update_nodal_pressures(elements, xp);
     for (const std::vector<int>& phase : schedule.phases) {
-#pragma omp for schedule(dynamic, 1)
+      // Static: each thread takes the same contiguous run of a phase's slabs at every step, so
+      // the nodal forces it writes stay in its own core's cache (a dynamic assignment moved them
+      // between the cores at every step: docs/parallel.md, "The slow mode").
+#pragma omp for schedule(static)
       for (size_t k = 0; k < phase.size(); ++k) {
         const auto s = static_cast<size_t>(phase[k]);
         const Slab& slab = schedule.slabs[s];
