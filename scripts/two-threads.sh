@@ -4,7 +4,10 @@
 # pair alternates too), each run's ns per element-step from its summary.toml, and each pair's
 # efficiency t1 / (2 t2). With --contact, the scene with DCR contact.
 # The first run of each scene only fills the mesh cache and is not counted. Compare figures from
-# one sitting on an otherwise idle machine.
+# one sitting on an otherwise idle machine. Before each pair, the round trip of a cache line
+# between CPUs 0 and 1 (build/bench_core_latency, median of 3): 80-100 ns when the host has the
+# two vCPUs near each other, 340-400 ns when it has them apart, the two-thread slow mode
+# (docs/parallel.md, "The slow mode").
 # Usage: scripts/two-threads.sh [--contact] [PAIRS] [build-dir]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,9 +31,12 @@ run() {  # threads, out folder
   ns_of "$2"
 }
 run 1 "$work/warm" > /dev/null  # meshes once into the mesh cache
-echo "pair  1 thread [ns/elem-step]  2 threads  efficiency"
+probe="$build/bench_core_latency"
+[[ -x "$probe" ]] || { echo "two-threads.sh: no $probe (build first)" >&2; exit 1; }
+echo "pair  1 thread [ns/elem-step]  2 threads  efficiency  line round trip [ns]"
 efficiencies=()
 for ((i = 1; i <= pairs; i++)); do
+  rt=$("$probe" --repeat 3 | awk '{print $10}')
   if ((i % 2)); then
     t1=$(run 1 "$work/a") t2=$(run 2 "$work/b")
   else
@@ -38,7 +44,7 @@ for ((i = 1; i <= pairs; i++)); do
   fi
   e=$(python3 -c "print(f'{$t1 / (2 * $t2):.3f}')")
   efficiencies+=("$e")
-  printf "%4d  %22.2f  %9.2f  %10s\n" "$i" "$t1" "$t2" "$e"
+  printf "%4d  %22.2f  %9.2f  %10s  %20s\n" "$i" "$t1" "$t2" "$e" "$rt"
 done
 python3 - "${efficiencies[@]}" <<'PY'
 import statistics, sys
