@@ -5,8 +5,10 @@
 // momentum of sphere and artifact kept to round-off ([heavy]: 16 s under the sanitizers, whose
 // pass runs the same model in tests/run/scene/test_scene_rigid.cpp).
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "engine/body/rigid_body_model.hpp"
@@ -96,6 +98,66 @@ TEST_CASE("surface distance: a hint leaves every answer unchanged", "[rigid-body
   }
   CHECK(inside > 500);
   CHECK(neighbour_hints > 500);
+}
+
+namespace {
+
+// The distance from p to triangle (a, b, c), written apart from the library's (Eberly's
+// parametrisation: the minimum of the squared distance over the triangle, by its regions).
+double triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  // The closest point on each edge, and the projection when it lies inside.
+  auto segment = [&](const Vec3& u, const Vec3& v) {
+    const double t = std::clamp((p - u).dot(v - u) / (v - u).squaredNorm(), 0.0, 1.0);
+    return (p - (u + t * (v - u))).norm();
+  };
+  double best = std::min({segment(a, b), segment(b, c), segment(c, a)});
+  const Vec3 n = (b - a).cross(c - a).normalized();
+  const Vec3 q = p - n.dot(p - a) * n;
+  const bool in = n.dot((b - a).cross(q - a)) >= 0.0 && n.dot((c - b).cross(q - b)) >= 0.0 &&
+                  n.dot((a - c).cross(q - c)) >= 0.0;
+  if (in) best = std::min(best, std::abs(n.dot(p - a)));
+  return best;
+}
+
+}  // namespace
+
+// The grid's search against every triangle: points near the surface of a meshed sphere (the
+// common query: a resting point just inside), and anywhere in its box. The depth is the nearest
+// triangle's distance (to 1e-12 m on a unit sphere: two closest-point formulas' round-off); the
+// triangle is the brute force's unless two lie within that of each other (a shared edge or
+// vertex).
+TEST_CASE("surface distance: the nearest triangle is the brute force's", "[rigid-body][penalty]") {
+  const TetMesh ball = test::gmsh_sphere(1.0, 0.2, Vec3::Zero());
+  const std::vector<Triangle> tris = extract_boundary(ball.tets);
+  const SurfaceDistance d(ball.nodes, tris);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> u(-1.05, 1.05), depth(-0.03, 0.01);
+  int inside = 0, shallow = 0;
+  for (int i = 0; i < 4000; ++i) {
+    Vec3 p(u(rng), u(rng), u(rng));
+    if (i % 2 == 0) {  // near the surface
+      const Vec3 dir = Vec3(g(rng), g(rng), g(rng)).normalized();
+      p = (1.0 + depth(rng)) * dir;
+    }
+    SurfacePoint hit;
+    if (d.query(p, hit) == SurfaceDistance::Side::outside) continue;
+    ++inside;
+    if (hit.depth < 0.01) ++shallow;
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<double> dist(tris.size());
+    for (size_t t = 0; t < tris.size(); ++t) {
+      dist[t] = triangle_distance(p, ball.nodes[static_cast<size_t>(tris[t][0])],
+                                  ball.nodes[static_cast<size_t>(tris[t][1])],
+                                  ball.nodes[static_cast<size_t>(tris[t][2])]);
+      best = std::min(best, dist[t]);
+    }
+    INFO("point " << p.transpose());
+    CHECK(std::abs(hit.depth - best) < 1e-12);
+    CHECK(dist[static_cast<size_t>(hit.triangle)] < best + 1e-12);
+  }
+  CHECK(inside > 1500);
+  CHECK(shallow > 400);
 }
 
 TEST_CASE("surface distance: an open surface is refused", "[rigid-body][penalty]") {
