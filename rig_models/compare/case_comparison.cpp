@@ -1,7 +1,5 @@
 #include "rig_models/compare/case_comparison.hpp"
 
-#include <stdexcept>
-
 namespace ccm::rig {
 
 std::vector<MeasuredTrial> scored_trials(std::span<const MeasuredTrial> trials,

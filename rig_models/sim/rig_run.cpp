@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -30,19 +30,6 @@ HangingWeightSettings weight_settings(const RigCaseTable& t, double gravity) {
   s.string_stiffness = t.drive.string_stiffness.value;
   s.string_damping = t.drive.string_damping.value;
   return s;
-}
-
-// The track's friction on the impactor as the window's run-up reckons it (the run's own is the
-// scene's "track" joint, rig_scene.hpp): its weight as the normal force, a kinetic coefficient
-// above the static one raising the static one to it.
-TrackFrictionSpec run_up_track(const RigCaseTable& t, const RunParameters& p, double gravity) {
-  return {{},
-          Vec3::UnitY(),
-          t.rig.impactor_mass.value * gravity,
-          std::max(p.track_static_friction, p.track_friction),
-          p.track_friction,
-          p.track_damping,
-          0.0};
 }
 
 // F_in of the open-loop drive on the simulation's clock (t = 0 at the window's start).
@@ -82,19 +69,11 @@ RigModelFacts facts_of(const RigModel& rig, const Model& model, const RigCaseTab
   return f;
 }
 
-// The scene's joint named `name` (rig_scene.hpp) and its constraint.
-template <typename Constraint>
-const Constraint& joint_named(const SceneRun& run, const std::string& name) {
+// Where the rig's scene (rig_scene.hpp) put its joint `name`: run.scene.joints and run.joints.
+size_t joint_index(const SceneRun& run, std::string_view name) {
   for (size_t i = 0; i < run.scene.joints.size(); ++i)
-    if (run.scene.joints[i].name == name)
-      if (const auto* c = dynamic_cast<const Constraint*>(run.joints[i].get())) return *c;
-  throw std::logic_error("the rig's scene has no joint " + name);
-}
-
-const JointSpec& joint_spec(const Scene& scene, const std::string& name) {
-  for (const JointSpec& j : scene.joints)
-    if (j.name == name) return j;
-  throw std::logic_error("the rig's scene has no joint " + name);
+    if (run.scene.joints[i].name == name) return i;
+  throw std::logic_error("the rig's scene has no joint " + std::string(name));
 }
 
 // The raw channels (3.3.3): V_i of the two pearls, theta_a (3.7), and the DCR's sensor pressure
@@ -153,7 +132,7 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   const double gravity = setup.geometry.gravity.value;
   RigRunResult out;
   out.window = run_window(table, c, {req.drive, req.trial, req.start, req.end},
-                          weight_settings(table, gravity), run_up_track(table, par, gravity));
+                          weight_settings(table, gravity), track_friction_of(table, par, gravity));
   const RunWindow& w = out.window;
   RigModelRequest mr;
   mr.impactor = c.impactor;
@@ -188,7 +167,8 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
     weight = std::make_unique<HangingWeightDrive>(model.mesh, rig.drive_surface, rig.impactor_nodes,
                                                   rig.track, weight_settings(table, gravity));
   }
-  const PinJoint& pin_joint = joint_named<PinJoint>(run, "pin");
+  const size_t pin = joint_index(run, kPinJoint);
+  const auto& pin_joint = dynamic_cast<const PinJoint&>(*run.joints[pin]);
   RigContact contact(rig, model.mesh, table.rig, par,
                      run.contact.histories.empty() ? nullptr : run.contact.histories.front());
 
@@ -209,7 +189,7 @@ RigRunResult run_rig(const RigSetup& setup, const RigCase& c, const RigRunReques
   };
   if (req.instrument) req.instrument(model, opt);
   out.summary = run_explicit(model, opt);
-  out.model = facts_of(rig, model, table, joint_spec(run.scene, "pin"));
+  out.model = facts_of(rig, model, table, run.scene.joints[pin]);
   out.raw = raw_histories(s, rig.track, rig.sensor_mesh_area);
   out.channels = sensed_channels(out.raw, table, req.trial);
   return out;

@@ -18,7 +18,7 @@ JointSpec on_set(std::string name, JointKind kind, const char* node_set) {
 // Fixed one is held by the screw's clamp, a torsional spring and damper (PJ.1), and has friction
 // only when it is given (3.4.1's frictional "fixed" pin).
 JointSpec pin_of(const RigModel& rig, const RigCase& c, const RunParameters& par) {
-  JointSpec j = on_set("pin", JointKind::pin, kPinBoreSet);
+  JointSpec j = on_set(kPinJoint, JointKind::pin, kPinBoreSet);
   j.point = rig.pin_point;
   j.axis = rig.pin_axis;
   j.mu_s = par.mu_s.value_or(0.0);
@@ -30,18 +30,18 @@ JointSpec pin_of(const RigModel& rig, const RigCase& c, const RunParameters& par
   return j;
 }
 
-// The track's friction on the impactor with its weight as the normal force; a kinetic
-// coefficient above the static one raises the static one to it. The open-loop drive's measured
-// motion carries the friction until the measured contact onset, so there it acts from the onset
-// (thesis 3.4.1: the drive does not carry it once contact starts).
+// The track's friction (track_friction_of) on the impactor's nodes. The open-loop drive's
+// measured motion carries the friction until the measured contact onset, so there it acts from
+// the onset (thesis 3.4.1: the drive does not carry it once contact starts).
 JointSpec track_of(const RigModel& rig, const RigCaseTable& t, const RunParameters& p,
                    const RigSceneRequest& r) {
-  JointSpec j = on_set("track", JointKind::track, kImpactorSet);
+  const TrackFrictionSpec f = track_friction_of(t, p, r.gravity);
+  JointSpec j = on_set(kTrackJoint, JointKind::track, kImpactorSet);
   j.axis = rig.track;
-  j.normal_force = t.rig.impactor_mass.value * r.gravity;
-  j.mu_s = std::max(p.track_static_friction, p.track_friction);
-  j.mu_k = p.track_friction;
-  j.damping = p.track_damping;
+  j.normal_force = f.normal_force;
+  j.mu_s = f.mu_s;
+  j.mu_k = f.mu_k;
+  j.damping = f.damping;
   j.active_from = r.friction_from;
   return j;
 }
@@ -59,6 +59,16 @@ ContactSpec contact_of(const RigModel& rig, const RigGeometry& g) {
 
 }  // namespace
 
+TrackFrictionSpec track_friction_of(const RigCaseTable& t, const RunParameters& p, double gravity) {
+  return {{},
+          Vec3::UnitY(),
+          t.rig.impactor_mass.value * gravity,
+          std::max(p.track_static_friction, p.track_friction),
+          p.track_friction,
+          p.track_damping,
+          0.0};
+}
+
 Scene rig_scene(const RigModel& rig, const RigGeometry& geometry, const RigCaseTable& table,
                 const RigCase& c, const RunParameters& parameters, const RigSceneRequest& request,
                 const std::filesystem::path& source) {
@@ -67,7 +77,7 @@ Scene rig_scene(const RigModel& rig, const RigGeometry& geometry, const RigCaseT
   s.title = "rig " + c.code;
   s.time.end = request.end_time;
   s.time.output_interval = request.output_interval;
-  JointSpec guide = on_set("guide", JointKind::slide, kGuideSet);
+  JointSpec guide = on_set(kGuideJoint, JointKind::slide, kGuideSet);
   guide.axis = rig.track;
   s.joints = {guide, pin_of(rig, c, parameters), track_of(rig, table, parameters, request)};
   if (request.contact) s.contacts.push_back(contact_of(rig, geometry));

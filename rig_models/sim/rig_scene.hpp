@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/bc/track_friction.hpp"
 #include "rig_models/cases/rig_case.hpp"
 #include "rig_models/geometry/rig_geometry.hpp"
 #include "rig_models/geometry/rig_model.hpp"
@@ -25,6 +26,10 @@
 
 namespace ccm::rig {
 
+// The joints' names (their history columns, and how the rig finds them in the assembled run).
+inline constexpr const char* kGuideJoint = "guide";
+inline constexpr const char* kPinJoint = "pin";
+inline constexpr const char* kTrackJoint = "track";
 // The sensor patch whose pressure the DCR's output reports (eq. 3.8).
 inline constexpr const char* kSensorSurface = "envelope/sensor";
 
@@ -38,6 +43,12 @@ struct RigSceneRequest {
   // (t [s] on the simulation's clock, F [N]); empty: the physical drive (a load of the rig's own).
   std::vector<std::pair<double, double>> drive_force;
 };
+
+// The track's friction on the impactor (engine/bc/track_friction.hpp), without its nodes: its
+// weight as the normal force; a kinetic coefficient above the static one raises the static one
+// to it. The run's "track" joint and the window's run-up (run_window.hpp) both take it.
+TrackFrictionSpec track_friction_of(const RigCaseTable& table, const RunParameters& parameters,
+                                    double gravity);
 
 Scene rig_scene(const RigModel& rig, const RigGeometry& geometry, const RigCaseTable& table,
                 const RigCase& c, const RunParameters& parameters, const RigSceneRequest& request,
