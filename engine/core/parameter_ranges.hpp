@@ -38,6 +38,8 @@ inline constexpr ParameterRange kFrictionRange{0.0, std::numeric_limits<double>:
                                                false};
 inline constexpr ParameterRange kDampingRange{0.0, std::numeric_limits<double>::infinity(), true,
                                               false};
+// A smoothed rigid surface's crease angle [degrees] (engine/contact/penalty/curved_surface.hpp).
+inline constexpr ParameterRange kCreaseAngleRange{0.0, 180.0, true, false};
 // A pin's clamp (engine/bc/pin_joint.hpp, PJ.1): torsional stiffness and damping.
 inline constexpr ParameterRange kClampRange{0.0, std::numeric_limits<double>::infinity(), true,
                                             false};

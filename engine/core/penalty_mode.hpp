@@ -36,4 +36,10 @@ inline constexpr double kDefaultElementPenaltyScale = 0.1;
 // K_P [N/m] per quadrature point of the per-point mode: the thesis's value (thesis 2.8).
 inline constexpr double kDefaultPointPenalty = 1e6;
 
+// A meshed rigid surface's crease angle [degrees] (engine/contact/penalty/curved_surface.hpp):
+// edges whose faces turn by less are smoothed over, the rest stay sharp. 0 keeps every facet flat
+// (the default: the surface as meshed, at the flat surface's cost); 45 smooths a sphere or
+// cylinder meshed with 8 or more edges around and keeps a cube's edges.
+inline constexpr double kDefaultCreaseAngle = 0.0;
+
 }  // namespace ccm

@@ -195,6 +195,7 @@ struct ContactSpec {
   RigidSphereSpec sphere;
   // rigid_penalty against a meshed rigid body (kind = "rigid") instead of the sphere:
   std::optional<std::string> rigid;
+  double crease_angle = kDefaultCreaseAngle;  // [degrees] its sharper edges stay sharp
   // dcr:
   std::vector<std::string> surfaces;  // as given; a name without '/' means "<name>/boundary"
   bool self_contact = false;

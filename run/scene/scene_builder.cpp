@@ -361,6 +361,7 @@ ContactSetup build_rigid_surface_penalty(const Scene& scene, const ContactSpec& 
   p.name = c.name;
   p.penalty = c.penalty;
   p.damping = c.damping;
+  p.crease_angle = c.crease_angle;
   std::unique_ptr<RigidSurfacePenalty> penalty;
   try {
     penalty = std::make_unique<RigidSurfacePenalty>(model.mesh, surface, rigid, p);
@@ -370,10 +371,11 @@ ContactSetup build_rigid_surface_penalty(const Scene& scene, const ContactSpec& 
   ContactSetup setup;
   setup.model_name = "rigid_penalty";
   setup.description = fmt::format(
-      "rigid_penalty: rigid body '{}' ({} triangles) on '{}' ({} triangles), K_P {:.4g} N/m per "
-      "point, damping {:.4g} of critical",
-      *c.rigid, model.mesh.bodies[static_cast<size_t>(rigid)].boundary.size(), surface_name,
-      surface.size(), p.penalty, p.damping);
+      "rigid_penalty: rigid body '{}' ({} triangles, smoothed where its edges turn by less than "
+      "{:.4g} degrees) on '{}' ({} triangles), K_P {:.4g} N/m per point, damping {:.4g} of "
+      "critical",
+      *c.rigid, model.mesh.bodies[static_cast<size_t>(rigid)].boundary.size(), p.crease_angle,
+      surface_name, surface.size(), p.penalty, p.damping);
   setup.histories = {penalty.get()};
   setup.model = std::move(penalty);
   return setup;

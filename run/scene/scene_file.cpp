@@ -757,8 +757,8 @@ std::vector<std::string> surface_names(const Table& t, const std::string& key) {
 const std::vector<std::string_view> kDcrKeys = {
     "model", "surfaces", "self_contact", "restitution", "friction", "force_axis", "sensors"};
 const std::vector<std::string_view> kPenaltyKeys = {
-    "model",         "body",    "surface",    "penalty_mode", "penalty",
-    "penalty_scale", "damping", "force_axis", "sphere",       "rigid"};
+    "model",   "body",       "surface", "penalty_mode", "penalty",     "penalty_scale",
+    "damping", "force_axis", "sphere",  "rigid",        "crease_angle"};
 
 std::vector<std::string_view> with_name_key(std::vector<std::string_view> keys, bool pair) {
   if (pair) keys.emplace_back("name");
@@ -823,8 +823,13 @@ void parse_rigid_penalty(const Table& t, ContactSpec& c, const Scene& scene, boo
       t.fail("force_axis",
              "applies to the analytic sphere only (a rigid body's history has its "
              "contact force)");
+    c.crease_angle = t.get_or("crease_angle", c.crease_angle);
+    if (!kCreaseAngleRange.contains(c.crease_angle))
+      t.fail("crease_angle", kCreaseAngleRange.problem(c.crease_angle));
     return;
   }
+  if (t.has("crease_angle"))
+    t.fail("crease_angle", "applies only to a meshed rigid body (rigid = \"<body>\")");
   if (t.has("force_axis")) c.force_axis = non_zero(t, "force_axis", t.need<Vec3>("force_axis"));
   const Table sphere = t.need_table("sphere");
   c.sphere = parse_sphere(sphere, scene);

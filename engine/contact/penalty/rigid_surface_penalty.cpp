@@ -26,6 +26,12 @@ SurfaceDistance rigid_surface(const ModelMesh& mesh, int body, std::vector<Trian
   return SurfaceDistance(std::move(vertices), std::move(local));
 }
 
+double checked_crease(double degrees) {
+  if (!kCreaseAngleRange.contains(degrees))
+    throw std::invalid_argument("penalty: the crease angle " + kCreaseAngleRange.problem(degrees));
+  return degrees;
+}
+
 int local_index(const std::vector<int>& sorted, int global) {
   return static_cast<int>(std::lower_bound(sorted.begin(), sorted.end(), global) - sorted.begin());
 }
@@ -38,7 +44,10 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
       params_(std::move(params)),
       rigid_body_(rigid_body),
       tris_(std::move(surface)),
-      distance_(rigid_surface(mesh, rigid_body, rigid_tris_)) {
+      distance_(rigid_surface(mesh, rigid_body, rigid_tris_)),
+      smooth_(distance_.vertices(), distance_.triangles(), checked_crease(params_.crease_angle)) {
+  if (!smooth_.all_flat()) distance_.set_allowance(smooth_.allowances());
+  reach_ = distance_.largest_allowance();
   if (tris_.empty()) throw std::invalid_argument("penalty: the deformable surface is empty");
   if (!mesh.bodies.at(static_cast<size_t>(rigid_body)).rigid)
     throw std::invalid_argument(
@@ -66,6 +75,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
       rigid_node_[static_cast<size_t>(rigid_local_.back())] = 1;
     }
   hint_.assign(3 * tris_.size(), -1);
+  clear_.assign(3 * tris_.size(), Clearance{});
   for (size_t i = 0; i < nodes_.size(); ++i)
     if (!rigid_node_[i]) deformable_local_.push_back(static_cast<int>(i));
   f_now_.assign(nodes_.size(), Vec3::Zero());
@@ -80,6 +90,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
   const Vec3 c0 = tet_mass_properties(tets, mesh.X, 1.0).center;
   for (int n = rb.first_node; n < rb.first_node + rb.n_nodes; ++n)
     bound2_ = std::max(bound2_, (mesh.X[static_cast<size_t>(n)] - c0).squaredNorm());
+  bound2_ = std::pow(std::sqrt(bound2_) + reach_, 2);
 }
 
 const RigidState* RigidSurfacePenalty::pose(const State& s) const {
@@ -181,7 +192,7 @@ void RigidSurfacePenalty::add_forces(State& s) {
   n_active_ = 0;
   const double K = params_.penalty;
   const Frame frame(*r);
-  for (int candidate : candidates(s, frame, rounding_margin())) {
+  for (int candidate : candidates(s, frame, reach_ + rounding_margin())) {
     const auto t = static_cast<size_t>(candidate);
     const Triangle& T = tris_[t];
     for (int k = 0; k < 3; ++k) {
@@ -191,10 +202,18 @@ void RigidSurfacePenalty::add_forces(State& s) {
         x += N[static_cast<size_t>(a)] * s.x[static_cast<size_t>(T[static_cast<size_t>(a)])];
       // Beyond the body's bounding sphere a point is outside: no query.
       if ((x - r->center).squaredNorm() > bound2_) continue;
-      SurfacePoint hit;
-      const SurfaceDistance::Side side =
-          distance_.query(frame.to_reference(x), hit, &hint_[3 * t + static_cast<size_t>(k)]);
-      if (side == SurfaceDistance::Side::outside) continue;
+      SurfacePoint flat, hit;
+      const Vec3 X = frame.to_reference(x);
+      const size_t point = 3 * t + static_cast<size_t>(k);
+      if ((X - clear_[point].at).squaredNorm() < clear_[point].radius * clear_[point].radius)
+        continue;  // CL.1
+      flat.depth = 0.0;
+      const SurfaceDistance::Side side = distance_.query(X, flat, &hint_[point], reach_ > 0.0);
+      if (side == SurfaceDistance::Side::outside) {
+        remember_clearance(point, X, flat);
+        continue;
+      }
+      clear_[point].radius = 0.0;
       if (side == SurfaceDistance::Side::deep) {
         if (failure_.empty())
           failure_ = fmt::format(
@@ -203,6 +222,8 @@ void RigidSurfacePenalty::add_forces(State& s) {
               distance_.deep_depth());
         continue;
       }
+      smooth_.evaluate(X, flat, hit);  // NG.3
+      if (!(hit.depth > 0.0)) continue;
       ++n_active_;
       penetration_max_ = std::max(penetration_max_, hit.depth);
       Vec3 v = Vec3::Zero();
@@ -256,6 +277,31 @@ void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
   ledger_ = {.work = work_, .injected_energy = 0.0, .touching = n_active_ > 0, .failure = failure_};
 }
 
+// CL.1: a point found outside at distance d from the nearest facet stays outside while it moves
+// (in the body's frame) by less than min(d / 2, d - A) from there, A the largest allowance of the
+// triangles within 2 d: it is then farther than d - delta > A from every facet, and its nearest
+// facet lies within d + 2 delta < 2 d of the place remembered, so its allowance is at most A.
+// Outside decided by cells alone (no distance) is not remembered. The radius keeps a margin for
+// the rounding between the two frame maps (Frame).
+void RigidSurfacePenalty::remember_clearance(size_t point, const Vec3& X,
+                                             const SurfacePoint& outside) {
+  const double d = -outside.depth;
+  double radius = 0.0;
+  if (d > 0.0)
+    radius = std::min(0.5 * d, d - distance_.allowance_within(X, 2.0 * d)) - rounding_margin();
+  clear_[point] = {X, std::max(radius, 0.0)};
+}
+
+// Whether x (body frame) lies inside the curved surface or within d of it (NG.3): the cells'
+// test above counts every point within a coarse facet's allowance, which on a coarsely meshed
+// sphere is centimetres.
+bool RigidSurfacePenalty::curved_within(const Vec3& x, double d, int hint) const {
+  SurfacePoint flat, hit;
+  if (distance_.query(x, flat, &hint, true) == SurfaceDistance::Side::outside) return false;
+  smooth_.evaluate(x, flat, hit);
+  return hit.depth >= -d;
+}
+
 ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling) const {
   const RigidState* r = pose(s);
   if (!r) return {};
@@ -266,7 +312,7 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
     v_max = std::max(v_max, s.v[static_cast<size_t>(nodes_[static_cast<size_t>(i)])].norm());
   const double v_rel = v_max + r->velocity.norm() + r->angular_velocity.norm() * reach;
   const double travel = 2.0 * v_rel * std::min(ceiling, 1e300);  // safety factor 2
-  const double band = reach + travel;
+  const double band = reach + travel;  // (the sphere includes the smoothed surface's reach_)
   // The points that can touch the body within the step (within the band): their springs load
   // their nodes (kappa_a / m_a) and the body (n_near K_P / m).
   const double K = params_.penalty;
@@ -274,7 +320,7 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   int near = 0;
   auto& self = const_cast<RigidSurfacePenalty&>(*this);  // the candidates are scratch
   const Frame frame(*r);
-  for (int candidate : self.candidates(s, frame, travel + rounding_margin())) {
+  for (int candidate : self.candidates(s, frame, travel + reach_ + rounding_margin())) {
     const auto t = static_cast<size_t>(candidate);
     for (int k = 0; k < 3; ++k) {
       // The point in the body's frame from its nodes' (the map is affine): a bound needs no
@@ -285,8 +331,13 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
         x += N[static_cast<size_t>(a)] *
              x_ref_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
       if ((x - r->reference_center).norm() > band) continue;
+      // A point still within its clearance by more than the travel cannot reach it (CL.1).
+      const Clearance& c = clear_[3 * t + static_cast<size_t>(k)];
+      if ((x - c.at).norm() + travel < c.radius) continue;
       // Only a point that can reach the surface within the step loads a spring in it (DS.2).
       if (!distance_.inside_or_within(x, travel)) continue;
+      if (reach_ > 0.0 && !curved_within(x, travel, hint_[3 * t + static_cast<size_t>(k)]))
+        continue;
       ++near;
       for (int a = 0; a < 3; ++a) {
         const auto local = static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)]);

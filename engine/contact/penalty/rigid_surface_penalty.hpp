@@ -4,13 +4,15 @@
 //
 // The deformable surface carries the symmetric 3-point rule of rigid_sphere_penalty.hpp. A
 // quadrature point x_q inside the rigid body, by depth delta below its surface (closest point p,
-// outward normal n; surface_distance.hpp, in the body's reference frame), takes
+// outward normal n of the smoothed surface, curved_surface.hpp; the nearest flat triangle from
+// surface_distance.hpp, in the body's reference frame), takes
 //   f_q = max(0, K_P delta - c_q u_n) n,   u_n = n . (v_q - v_B(x_q)),
 //   c_q = 2 zeta sqrt(K_P m_q)                                         (PS.1)
-// handed to the triangle's nodes by its shape functions, and -f_q goes to the rigid body at p,
-// handed to the closest rigid triangle's nodes by p's barycentric weights: the rigid body gathers
-// them as a force and a moment (engine/body/rigid_bodies.hpp). The two forces act along the line
-// through x_q and p (x_q - p = -delta n), so momentum and angular momentum are exchanged exactly.
+// handed to the triangle's nodes by its shape functions, and -f_q goes to the rigid body where the
+// line through x_q along n meets the closest rigid triangle's plane, handed to that triangle's
+// nodes by the point's barycentric weights: the rigid body gathers them as a force and a moment
+// (engine/body/rigid_bodies.hpp). The two forces act along one line, so momentum and angular
+// momentum are exchanged exactly.
 // K_P is per point (the thesis's per_point mode; the element mode is the sphere model's alone).
 //
 // Work: trapezoidal over each step on the nodes that take forces, deformable and (for a free body)
@@ -26,6 +28,7 @@
 #include <vector>
 
 #include "engine/contact/contact_model.hpp"
+#include "engine/contact/penalty/curved_surface.hpp"
 #include "engine/contact/penalty/surface_distance.hpp"
 #include "engine/core/penalty_mode.hpp"
 #include "engine/mesh/model_mesh.hpp"
@@ -34,16 +37,18 @@
 namespace ccm {
 
 struct RigidSurfacePenaltyParams {
-  std::string name = "penalty";           // history column prefix
-  double penalty = kDefaultPointPenalty;  // K_P [N/m] per quadrature point
-  double damping = 0.0;                   // zeta >= 0, fraction of critical per point
+  std::string name = "penalty";               // history column prefix
+  double penalty = kDefaultPointPenalty;      // K_P [N/m] per quadrature point
+  double damping = 0.0;                       // zeta >= 0, fraction of critical per point
+  double crease_angle = kDefaultCreaseAngle;  // [degrees] sharper edges stay sharp (NG.1)
 };
 
 class RigidSurfacePenalty : public ContactModel, public HistorySource {
  public:
   // surface: the deformable body's triangles (global ids); rigid_body: the mesh body (marked
   // rigid) whose boundary is the rigid surface. Throws std::invalid_argument for an empty
-  // surface, a body that is not rigid, a rigid surface that is not closed, K_P <= 0 or zeta < 0.
+  // surface, a body that is not rigid, a rigid surface that is not closed, K_P <= 0, zeta < 0 or
+  // a crease angle outside [0, 180).
   RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Triangle> surface, int rigid_body,
                       RigidSurfacePenaltyParams params);
 
@@ -79,21 +84,32 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   };
   const std::vector<int>& candidates(const State& s, const Frame& frame, double margin);
   double rounding_margin() const;
+  bool curved_within(const Vec3& x, double d, int hint) const;
   void load_rigid(int triangle, const std::array<double, 3>& weights, const Vec3& f);
 
   RigidSurfacePenaltyParams params_;
   int rigid_body_ = 0;
-  bool free_body_ = false;             // set at the first step, from the state
-  std::vector<Triangle> tris_;         // the deformable surface (global ids)
-  std::vector<Triangle> rigid_tris_;   // the rigid surface (global ids)
-  SurfaceDistance distance_;           // of the rigid surface, reference frame
-  std::vector<int> nodes_;             // every node that can take a force, sorted
-  std::vector<int> tri_local_;         // per deformable triangle corner: index into nodes_
-  std::vector<int> rigid_local_;       // per rigid triangle corner: index into nodes_
-  std::vector<char> rigid_node_;       // per entry of nodes_: a rigid body's node
-  std::vector<double> triangles_at_;   // per entry of nodes_: the deformable triangles at it
-  std::vector<int> hint_;              // per quadrature point: its last nearest rigid triangle
-  std::vector<int> deformable_local_;  // the entries of nodes_ on the deformable surface
+  bool free_body_ = false;            // set at the first step, from the state
+  std::vector<Triangle> tris_;        // the deformable surface (global ids)
+  std::vector<Triangle> rigid_tris_;  // the rigid surface (global ids)
+  SurfaceDistance distance_;          // of the rigid surface, reference frame
+  CurvedSurface smooth_;              // the same surface smoothed (NG.1)
+  double reach_ = 0.0;                // how far outside the flat surface a point can touch
+  std::vector<int> nodes_;            // every node that can take a force, sorted
+  std::vector<int> tri_local_;        // per deformable triangle corner: index into nodes_
+  std::vector<int> rigid_local_;      // per rigid triangle corner: index into nodes_
+  std::vector<char> rigid_node_;      // per entry of nodes_: a rigid body's node
+  std::vector<double> triangles_at_;  // per entry of nodes_: the deformable triangles at it
+  std::vector<int> hint_;             // per quadrature point: its last nearest rigid triangle
+  // Per quadrature point, a place in the body's frame and a radius: while the point stays within
+  // it, it is outside the rigid surface (CL.1, rigid_surface_penalty.cpp); radius 0: unknown.
+  struct Clearance {
+    Vec3 at = Vec3::Zero();
+    double radius = 0.0;
+  };
+  std::vector<Clearance> clear_;
+  void remember_clearance(size_t point, const Vec3& X, const SurfacePoint& outside);
+  std::vector<int> deformable_local_;        // the entries of nodes_ on the deformable surface
   std::vector<int> rigid_now_, rigid_prev_;  // rigid entries with a force, now and at the start
   std::vector<char> rigid_touched_;          // per entry: in rigid_now_
   bool has_pose_prev_ = false;               // the body's pose at the step's start:
@@ -104,7 +120,7 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   std::vector<int> candidates_;         // deformable triangles near the body (scratch)
   std::vector<Vec3> f_now_, f_prev_, x_prev_;
   double work_ = 0.0, penetration_max_ = 0.0, damping_factor_ = 1.0;
-  double bound2_ = 0.0;  // squared radius of the body's bounding sphere about its centre of mass
+  double bound2_ = 0.0;  // squared radius about the centre of mass within which a point can touch
   int n_active_ = 0;
   std::string failure_;
 };

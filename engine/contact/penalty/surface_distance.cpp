@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "engine/contact/penalty/corner_angle.hpp"
+
 namespace ccm {
 namespace {
 
@@ -42,11 +44,6 @@ std::array<double, 3> closest_weights(const Vec3& p, const Vec3& a, const Vec3& 
   return {1.0 - v - w, v, w};
 }
 
-double angle_at(const Vec3& corner, const Vec3& p, const Vec3& q) {
-  const Vec3 u = (p - corner).normalized(), v = (q - corner).normalized();
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
 }  // namespace
 
 SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangle> triangles)
@@ -72,8 +69,8 @@ SurfaceDistance::SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangl
       max_edge = std::max(max_edge, length);
       lengths.push_back(length);
       vertex_normal_[static_cast<size_t>(i)] +=
-          angle_at(vertices_[static_cast<size_t>(i)], vertices_[static_cast<size_t>(j)],
-                   vertices_[static_cast<size_t>(l)]) *
+          corner_angle(vertices_[static_cast<size_t>(i)], vertices_[static_cast<size_t>(j)],
+                       vertices_[static_cast<size_t>(l)]) *
           face_normal_.back();
     }
   }
@@ -144,11 +141,20 @@ void SurfaceDistance::build_grid() {
       a = a.cwiseMin(vertices_[static_cast<size_t>(k)]);
       b = b.cwiseMax(vertices_[static_cast<size_t>(k)]);
     }
+    // The cells of the triangle's box that its plane crosses (a box meets the plane when its
+    // centre lies within sum_d |n_d| h / 2 of it): a coarse tilted triangle's box holds many
+    // cells its plane misses, and a point there would test it for nothing.
+    const Vec3& n = face_normal_[t];
+    const Vec3& v0 = vertices_[static_cast<size_t>(triangles_[t][0])];
+    const double slab = 0.5 * h_ * n.cwiseAbs().sum() * (1.0 + 1e-9) + 1e-12 * h_;
     const auto c0 = cell_of(a), c1 = cell_of(b);
     for (int z = c0[2]; z <= c1[2]; ++z)
       for (int y = c0[1]; y <= c1[1]; ++y)
-        for (int x = c0[0]; x <= c1[0]; ++x)
+        for (int x = c0[0]; x <= c1[0]; ++x) {
+          const Vec3 centre = origin_ + h_ * Vec3(x + 0.5, y + 0.5, z + 0.5);
+          if (std::abs(n.dot(centre - v0)) > slab) continue;
           lists[static_cast<size_t>(cell_index({x, y, z}))].push_back(static_cast<int>(t));
+        }
   }
   cell_start_.assign(static_cast<size_t>(n_cells) + 1, 0);
   for (long c = 0; c < n_cells; ++c)
@@ -229,7 +235,7 @@ void SurfaceDistance::consider_cell(long cell, const Vec3& p, Nearest& best) con
 // By cells alone (DS.2): a point within d of the surface has the cell of its closest surface point
 // within the box [p - d, p + d], and that cell holds a triangle; a point inside lies in a cell
 // that holds one or in an empty cell the flood fill did not reach. Neither: outside by more than d.
-bool SurfaceDistance::inside_or_within(const Vec3& p, double d) const {
+bool SurfaceDistance::any_cell_within(const Vec3& p, double d) const {
   const auto lo = cell_of(p - Vec3::Constant(d)), hi = cell_of(p + Vec3::Constant(d));
   for (int z = std::max(lo[2], 0); z <= std::min(hi[2], dims_[2] - 1); ++z)
     for (int y = std::max(lo[1], 0); y <= std::min(hi[1], dims_[1] - 1); ++y)
@@ -240,13 +246,71 @@ bool SurfaceDistance::inside_or_within(const Vec3& p, double d) const {
   return false;
 }
 
-SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, int* hint) const {
-  const auto c = cell_of(p);
+// With allowances: a cell holding triangles counts within d plus its own allowance (a point within
+// d of the lifted surface of a triangle is within d + allowance of its facet, which that cell or
+// another within the same distance holds); an inside empty cell within d, as above.
+bool SurfaceDistance::inside_or_within(const Vec3& p, double d) const {
+  if (largest_allowance_ == 0.0) return any_cell_within(p, d);
+  const double widest = d + largest_allowance_;
+  const auto lo = cell_of(p - Vec3::Constant(widest)), hi = cell_of(p + Vec3::Constant(widest));
+  for (int z = std::max(lo[2], 0); z <= std::min(hi[2], dims_[2] - 1); ++z)
+    for (int y = std::max(lo[1], 0); y <= std::min(hi[1], dims_[1] - 1); ++y)
+      for (int x = std::max(lo[0], 0); x <= std::min(hi[0], dims_[0] - 1); ++x) {
+        const std::array<int, 3> cell{x, y, z};
+        const auto i = static_cast<size_t>(cell_index(cell));
+        const double reach = d + (cell_start_[i] != cell_start_[i + 1] ? cell_allowance_[i] : 0.0);
+        if ((cell_start_[i] != cell_start_[i + 1] || !outside_[i]) &&
+            box_distance2(p, cell) <= reach * reach)
+          return true;
+      }
+  return false;
+}
+
+double SurfaceDistance::allowance_within(const Vec3& p, double radius) const {
+  if (largest_allowance_ == 0.0) return 0.0;
+  const auto lo = cell_of(p - Vec3::Constant(radius)), hi = cell_of(p + Vec3::Constant(radius));
+  double largest = 0.0;
+  for (int z = std::max(lo[2], 0); z <= std::min(hi[2], dims_[2] - 1); ++z)
+    for (int y = std::max(lo[1], 0); y <= std::min(hi[1], dims_[1] - 1); ++y)
+      for (int x = std::max(lo[0], 0); x <= std::min(hi[0], dims_[0] - 1); ++x)
+        largest = std::max(largest, cell_allowance_[static_cast<size_t>(cell_index({x, y, z}))]);
+  return largest;
+}
+
+void SurfaceDistance::set_allowance(std::vector<double> per_triangle) {
+  if (per_triangle.size() != triangles_.size())
+    throw std::invalid_argument("surface distance: one allowance per triangle");
+  allowance_ = std::move(per_triangle);
+  largest_allowance_ = *std::max_element(allowance_.begin(), allowance_.end());
+  cell_allowance_.assign(cell_start_.size() - 1, 0.0);
+  for (size_t c = 0; c + 1 < cell_start_.size(); ++c)
+    for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k)
+      cell_allowance_[c] = std::max(
+          cell_allowance_[c], allowance_[static_cast<size_t>(cell_items_[static_cast<size_t>(k)])]);
+}
+
+// Outside, and farther than `reach` from the surface, by p's cell alone: beyond the grid (which
+// spans the surface's box) and farther than reach from the box, or in an empty outside cell with
+// no surface within reach (DS.2).
+bool SurfaceDistance::surely_outside(const Vec3& p, const std::array<int, 3>& c,
+                                     double reach) const {
   const long own = cell_index(c);
-  if (own < 0) return Side::outside;  // beyond the grid: beyond the surface's box
+  if (own < 0) {
+    if (reach <= 0.0) return true;
+    const Vec3 out = (box_[0] - p).cwiseMax(p - box_[1]).cwiseMax(0.0);
+    return out.squaredNorm() > reach * reach;
+  }
   const bool empty =
       cell_start_[static_cast<size_t>(own)] == cell_start_[static_cast<size_t>(own) + 1];
-  if (empty && outside_[static_cast<size_t>(own)]) return Side::outside;
+  if (!empty || !outside_[static_cast<size_t>(own)]) return false;
+  return reach <= 0.0 || !inside_or_within(p, 0.0);
+}
+
+SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, int* hint,
+                                             bool with_allowance) const {
+  const double reach = with_allowance ? largest_allowance_ : 0.0;
+  const auto c = cell_of(p);
+  if (surely_outside(p, c, reach)) return Side::outside;
   Nearest best;
   // A hint (any triangle) as the first candidate leaves the answer unchanged: the search below
   // stops only once every triangle nearer than the best has been considered, and prunes the
@@ -255,12 +319,15 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, i
     std::array<double, 3> w{};
     best = {closest(*hint, p, w), *hint, w};
   }
-  consider_cell(own, p, best);
+  const long own = cell_index(c);
+  if (own >= 0) consider_cell(own, p, best);
   // Ring k: the cells k steps from the own cell. After rings 0..k every triangle within k h of
   // p has been considered (its closest point lies within k cells of p's on each axis), so the
   // best is the nearest once it is within k h. Only the cells that overlap the cube of half-side
   // `best` about p can hold a nearer triangle: usually none beyond the own cell.
-  const int widest = std::max({dims_[0], dims_[1], dims_[2]});
+  // (A point beyond the grid lies within reach of it: its rings reach the far side by then.)
+  const int widest = std::max({dims_[0], dims_[1], dims_[2]}) +
+                     static_cast<int>(std::ceil(reach * inverse_h_)) + 1;
   for (int k = 1; k <= widest; ++k) {
     std::array<int, 3> lo{c[0] - k, c[1] - k, c[2] - k}, hi{c[0] + k, c[1] + k, c[2] + k};
     if (std::isfinite(best.d2)) {
@@ -284,7 +351,7 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, i
     if (best.d2 <= k * k * h_ * h_) break;
   }
   if (hint) *hint = best.triangle;
-  return finish(p, best, hit);
+  return finish(p, best, hit, with_allowance);
 }
 
 // The side of p by the pseudo-normal of the feature its nearest point (best) is on.
@@ -311,16 +378,26 @@ void SurfaceDistance::feature(const Nearest& best, Vec3& q, Vec3& normal) const 
   }
 }
 
-SurfaceDistance::Side SurfaceDistance::finish(const Vec3& p, const Nearest& best,
-                                              SurfacePoint& hit) const {
+SurfaceDistance::Side SurfaceDistance::finish(const Vec3& p, const Nearest& best, SurfacePoint& hit,
+                                              bool with_allowance) const {
   Vec3 q, normal;
   feature(best, q, normal);
-  if ((p - q).dot(normal) >= 0.0) return Side::outside;
-  hit.depth = std::sqrt(best.d2);
+  const bool outside = (p - q).dot(normal) >= 0.0;
+  if (outside) {
+    const double allowance =
+        with_allowance && !allowance_.empty() ? allowance_within(p, std::sqrt(best.d2)) : 0.0;
+    if (!(best.d2 <= allowance * allowance)) {
+      hit.depth = -std::sqrt(best.d2);
+      hit.triangle = best.triangle;
+      return Side::outside;
+    }
+  }
+  hit.depth = outside ? -std::sqrt(best.d2) : std::sqrt(best.d2);
   hit.point = q;
   hit.normal = normal;
   hit.triangle = best.triangle;
   hit.weights = best.weights;
+  if (outside) return Side::near;
   return hit.depth > deep_ ? Side::deep : Side::inside;
 }
 

@@ -39,23 +39,36 @@ class SurfaceDistance {
   // triangles (not closed, or not manifold).
   SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangle> triangles);
 
-  enum class Side { outside, inside, deep };
-  // outside: `hit` untouched. inside: `hit` filled. deep: filled, inside by more than
-  // deep_depth() (the longest edge). `hint` (optional, in and out): a triangle likely nearest,
-  // such as this point's last answer; it changes the cost, never the result, and is set to the
-  // nearest triangle whenever the search reaches one.
-  Side query(const Vec3& p, SurfacePoint& hit, int* hint = nullptr) const;
+  enum class Side { outside, near, inside, deep };
+  // outside: `hit` untouched when p's cells alone decide it; after a search, hit.depth is minus
+  // the distance to the nearest triangle, hit.triangle that triangle (the rest untouched).
+  // near (only with with_allowance): outside by no more than the
+  // largest allowance of the triangles within that distance, `hit` filled with depth = -distance.
+  // inside: `hit` filled. deep: filled, inside by more than deep_depth() (the longest edge). `hint`
+  // (optional, in and out): a triangle likely nearest, such as this point's last answer; it changes
+  // the cost, never the result, and is set to the nearest triangle whenever the search reaches one.
+  Side query(const Vec3& p, SurfacePoint& hit, int* hint = nullptr,
+             bool with_allowance = false) const;
 
-  // Whether p lies inside the surface or possibly within d of it: true for every point within d
-  // and every point inside (and for some points up to a cell farther), false for the rest. What a
-  // step bound counts as "can reach" (DS.2).
+  // Whether p lies inside the surface or possibly within d (plus the allowance of the triangles
+  // there) of it: true for every such point (and for some points up to a cell farther), false for
+  // the rest. What a step bound counts as "can reach" (DS.2).
   bool inside_or_within(const Vec3& p, double d) const;
+
+  // How far outside each triangle a point may lie and still count as near it: a curved surface's
+  // lift above its facets (curved_surface.hpp). Zero for every triangle unless set.
+  void set_allowance(std::vector<double> per_triangle);
+  double largest_allowance() const { return largest_allowance_; }
+  // The largest allowance of the triangles listed in the cells within `radius` of p (and a few
+  // more): every triangle with a point within radius of p is among them.
+  double allowance_within(const Vec3& p, double radius) const;
 
   // The surface's bounding box (min, max corners): every point inside lies in it.
   const std::array<Vec3, 2>& box() const { return box_; }
   double cell_size() const { return h_; }
   double deep_depth() const { return deep_; }
   const std::vector<Triangle>& triangles() const { return triangles_; }
+  const std::vector<Vec3>& vertices() const { return vertices_; }
 
  private:
   struct Nearest {
@@ -67,9 +80,11 @@ class SurfaceDistance {
   void consider(int t, const Vec3& p, Nearest& best) const;
   void consider_cell(long cell, const Vec3& p, Nearest& best) const;
   double box_distance2(const Vec3& p, const std::array<int, 3>& c) const;
+  bool surely_outside(const Vec3& p, const std::array<int, 3>& c, double reach) const;
+  bool any_cell_within(const Vec3& p, double d) const;
   void feature(const Nearest& best, Vec3& q, Vec3& normal) const;
   Side side_of(const Vec3& p, const Nearest& best) const;
-  Side finish(const Vec3& p, const Nearest& best, SurfacePoint& hit) const;
+  Side finish(const Vec3& p, const Nearest& best, SurfacePoint& hit, bool with_allowance) const;
   long cell_index(const std::array<int, 3>& c) const;
   std::array<int, 3> cell_of(const Vec3& p) const;
   void build_grid();
@@ -88,7 +103,10 @@ class SurfaceDistance {
   std::array<int, 3> dims_{};
   std::vector<int> cell_start_;  // CSR: triangles of cell c are cell_items_[start[c], start[c+1])
   std::vector<int> cell_items_;
-  std::vector<char> outside_;  // per empty cell: reachable from the border through empty cells
+  std::vector<char> outside_;      // per empty cell: reachable from the border through empty cells
+  std::vector<double> allowance_;  // per triangle (empty: none)
+  std::vector<double> cell_allowance_;  // per cell: the largest of its triangles'
+  double largest_allowance_ = 0.0;
 };
 
 }  // namespace ccm

@@ -154,6 +154,18 @@ TEST_CASE(
                                      "[contact.sphere]\nradius = 0.01\nmass = 0.1\n"
                                      "center = [0.0, 0.0, 0.1]\n"),
              Contains("give only one of: sphere, rigid"));
+  // The crease angle: read for a meshed rigid body, in [0, 180) degrees, refused elsewhere.
+  CHECK(
+      parse_scene(base + contact + "crease_angle = 30.0\n", "s.toml").contacts.at(0).crease_angle ==
+      30.0);
+  CHECK(parse_scene(base + contact, "s.toml").contacts.at(0).crease_angle == kDefaultCreaseAngle);
+  CHECK_THAT(test::assembly_error_of(base + contact + "crease_angle = 180.0\n"),
+             Contains("s.toml") && Contains("crease_angle") && Contains("[0, 180)"));
+  CHECK_THAT(
+      test::assembly_error_of(
+          base + "[contact]\nmodel = \"rigid_penalty\"\nbody = \"cube\"\ncrease_angle = 30.0\n"
+                 "[contact.sphere]\nradius = 0.01\nmass = 0.1\ncenter = [0.0, 0.0, 0.1]\n"),
+      Contains("crease_angle") && Contains("applies only to a meshed rigid body"));
 }
 
 TEST_CASE("scene: a pinned rigid body reads its pin, turns about it, and refuses what does not fit",

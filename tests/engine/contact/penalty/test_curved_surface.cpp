@@ -1,0 +1,130 @@
+// Evidence for the smoothed rigid surface (engine/contact/penalty/curved_surface.hpp, NG.1-NG.4):
+// on a coarse meshed sphere the smoothed depth is the sphere's closed form R - |x| far closer than
+// the flat facets' depth; a box keeps its facets (crease angle below 90 degrees); every smoothed
+// point lies within NG.4's reach of the flat surface; the force line meets the facet's plane.
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "engine/contact/penalty/curved_surface.hpp"
+#include "engine/contact/penalty/surface_distance.hpp"
+#include "engine/core/penalty_mode.hpp"
+#include "engine/mesh/boundary_surface.hpp"
+#include "tests/support/contact_scenes.hpp"
+#include "tests/support/models.hpp"
+
+using namespace ccm;
+
+namespace {
+
+struct Depths {
+  double flat_error = 0.0, smooth_error = 0.0;  // largest |depth - (R - |x|)|
+  double outside_error = 0.0;   // largest R - |x| of a point found outside every allowance
+  int points = 0, outside = 0;  // points evaluated; points outside every allowance
+};
+
+// Points within `shell` of a sphere of radius R (inside and out), their depth below the flat
+// facets and below the smoothed surface against R - |x|.
+Depths sphere_depths(double R, double edge, double shell, int samples) {
+  const TetMesh ball = test::gmsh_sphere(R, edge, Vec3::Zero());
+  const auto triangles = extract_boundary(ball.tets);
+  SurfaceDistance d(ball.nodes, triangles);
+  const CurvedSurface smooth(d.vertices(), d.triangles(), 45.0);
+  d.set_allowance(smooth.allowances());
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u(-shell, shell);
+  Depths out;
+  for (int i = 0; i < samples; ++i) {
+    const Vec3 x = Vec3(g(rng), g(rng), g(rng)).normalized() * (R + u(rng));
+    SurfacePoint flat, hit;
+    const auto side = d.query(x, flat, nullptr, true);
+    const double exact = R - x.norm();
+    if (side == SurfaceDistance::Side::outside) {
+      // Beyond every allowance: outside the curved surface. Its error: how deep it is in truth.
+      out.smooth_error = std::max(out.smooth_error, exact);
+      out.outside_error = std::max(out.outside_error, exact);
+      ++out.outside;
+      continue;
+    }
+    smooth.evaluate(x, flat, hit);
+    out.flat_error = std::max(out.flat_error, std::abs(flat.depth - exact));
+    out.smooth_error = std::max(out.smooth_error, std::abs(hit.depth - exact));
+    // The force line x + tau n meets the facet's plane at hit.point, weights summing to 1.
+    const auto& T = d.triangles()[static_cast<size_t>(hit.triangle)];
+    Vec3 q = Vec3::Zero();
+    for (int a = 0; a < 3; ++a)
+      q += hit.weights[static_cast<size_t>(a)] *
+           d.vertices()[static_cast<size_t>(T[static_cast<size_t>(a)])];
+    CHECK((q - hit.point).norm() < 1e-9 * R);
+    CHECK((hit.point - x).cross(hit.normal).norm() < 1e-9 * R);
+    ++out.points;
+  }
+  return out;
+}
+
+}  // namespace
+
+// The sag of a facet of edge h on a sphere of radius R is about h^2 / 8R (2.5 % of R at the
+// coarse mesh's h = 0.45 R); NG.1 reproduces the sphere to second order, so its error is a small
+// fraction of that. Points within a tenth of the edge of the sphere.
+TEST_CASE("smoothed surface: a coarse meshed sphere's depth against R - |x|",
+          "[rigid-body][penalty][phong]") {
+  for (const double edge : {0.4, 0.2}) {
+    const Depths d = sphere_depths(1.0, edge, 0.1 * edge, 2000);
+    INFO("edge " << edge << ": flat " << d.flat_error << ", smoothed " << d.smooth_error
+                 << ", outside " << d.outside << " (" << d.outside_error << ")");
+    CHECK(d.points + d.outside == 2000);
+    CHECK(d.points > 1000);
+    CHECK(d.smooth_error < 0.25 * d.flat_error);
+  }
+}
+
+TEST_CASE("smoothed surface: a box keeps its flat faces and sharp edges",
+          "[rigid-body][penalty][phong]") {
+  const TetMesh box = structured_box(Vec3(0.2, 0.3, 0.4), 4, 6, 8);
+  const auto triangles = extract_boundary(box.tets);
+  const SurfaceDistance d(box.nodes, triangles);
+  for (const double crease : {0.0, 45.0, 89.0}) {
+    const CurvedSurface smooth(d.vertices(), d.triangles(), crease);
+    CHECK(smooth.all_flat());
+    for (const double a : smooth.allowances()) CHECK(a == 0.0);
+  }
+  // At 91 degrees the edges are smoothed: the corners' facets are no longer flat.
+  const CurvedSurface rounded(d.vertices(), d.triangles(), 91.0);
+  CHECK_FALSE(rounded.all_flat());
+}
+
+// CL.1 (rigid_surface_penalty.cpp): a point found outside at distance d from the nearest facet,
+// A the largest allowance within 2 d, stays outside (beyond every allowance) anywhere within
+// min(d / 2, d - A) of that place. Random places around a coarse curved sphere and random moves
+// up to the radius, in every direction.
+TEST_CASE("smoothed surface: a point within its clearance stays outside",
+          "[rigid-body][penalty][phong]") {
+  const TetMesh ball = test::gmsh_sphere(1.0, 0.3, Vec3::Zero());
+  SurfaceDistance d(ball.nodes, extract_boundary(ball.tets));
+  const CurvedSurface smooth(d.vertices(), d.triangles(), 45.0);
+  d.set_allowance(smooth.allowances());
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int cleared = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 X0 = Vec3(g(rng), g(rng), g(rng)).normalized() * (1.0 + 0.2 * u(rng));
+    SurfacePoint hit;
+    if (d.query(X0, hit, nullptr, true) != SurfaceDistance::Side::outside) continue;
+    if (!(hit.depth < 0.0)) continue;  // decided by cells alone: no distance
+    const double dist = -hit.depth;
+    const double radius = std::min(0.5 * dist, dist - d.allowance_within(X0, 2.0 * dist));
+    if (!(radius > 0.0)) continue;
+    ++cleared;
+    for (int j = 0; j < 5; ++j) {
+      const Vec3 X = X0 + Vec3(g(rng), g(rng), g(rng)).normalized() * radius * u(rng);
+      SurfacePoint at;
+      CHECK(d.query(X, at, nullptr, true) == SurfaceDistance::Side::outside);
+    }
+  }
+  CHECK(cleared > 300);
+}
