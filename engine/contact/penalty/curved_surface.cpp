@@ -111,7 +111,7 @@ CurvedSurface::CurvedSurface(const std::vector<Vec3>& vertices,
       largest = std::max(largest, c.norm());
     }
     flat_[t] = largest == 0.0 ? 1 : 0;
-    allowance_[t] = 2.0 * largest / 3.0;  // twice NG.4
+    allowance_[t] = largest / 3.0;  // NG.4
     if (!flat_[t]) all_flat_ = false;
   }
 }

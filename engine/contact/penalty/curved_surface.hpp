@@ -45,9 +45,8 @@ class CurvedSurface {
   // Whether triangle t is its flat facet (every c_ij zero).
   bool flat(int t) const { return flat_[static_cast<size_t>(t)] != 0; }
   bool all_flat() const { return all_flat_; }
-  // Per triangle, how far outside its facet a point can lie and still be below its patch: twice
-  // NG.4's bound (a point's offset from its flat foot is measured along n, within the crease
-  // angle of the face normals around it). Zero on a flat facet.
+  // Per triangle, how far its patch can lie from its facet (NG.4): a point farther than that
+  // from the facet is not below the patch. Zero on a flat facet.
   const std::vector<double>& allowances() const { return allowance_; }
 
   // NG.3 for x whose nearest flat point lies on triangle `flat_hit.triangle` at weights

@@ -76,6 +76,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
     }
   hint_.assign(3 * tris_.size(), -1);
   clear_.assign(3 * tris_.size(), Clearance{});
+  evaluated_.assign(3 * tris_.size(), Evaluated{});
   for (size_t i = 0; i < nodes_.size(); ++i)
     if (!rigid_node_[i]) deformable_local_.push_back(static_cast<int>(i));
   f_now_.assign(nodes_.size(), Vec3::Zero());
@@ -205,12 +206,14 @@ void RigidSurfacePenalty::add_forces(State& s) {
       SurfacePoint flat, hit;
       const Vec3 X = frame.to_reference(x);
       const size_t point = 3 * t + static_cast<size_t>(k);
+      evaluated_[point].valid = false;
       if ((X - clear_[point].at).squaredNorm() < clear_[point].radius * clear_[point].radius)
         continue;  // CL.1
       flat.depth = 0.0;
       const SurfaceDistance::Side side = distance_.query(X, flat, &hint_[point], reach_ > 0.0);
       if (side == SurfaceDistance::Side::outside) {
         remember_clearance(point, X, flat);
+        if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true};  // minus its clearance
         continue;
       }
       clear_[point].radius = 0.0;
@@ -223,6 +226,7 @@ void RigidSurfacePenalty::add_forces(State& s) {
         continue;
       }
       smooth_.evaluate(X, flat, hit);  // NG.3
+      evaluated_[point] = {X, hit.depth, true};
       if (!(hit.depth > 0.0)) continue;
       ++n_active_;
       penetration_max_ = std::max(penetration_max_, hit.depth);
@@ -277,31 +281,43 @@ void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
   ledger_ = {.work = work_, .injected_energy = 0.0, .touching = n_active_ > 0, .failure = failure_};
 }
 
-// CL.1: a point found outside at distance d from the nearest facet stays outside while it moves
-// (in the body's frame) by less than min(d / 2, d - A) from there, A the largest allowance of the
-// triangles within 2 d: it is then farther than d - delta > A from every facet, and its nearest
-// facet lies within d + 2 delta < 2 d of the place remembered, so its allowance is at most A.
-// Outside decided by cells alone (no distance) is not remembered. The radius keeps a margin for
-// the rounding between the two frame maps (Frame).
+// CL.1: a point found outside with clearance g (LC.1, surface_distance.hpp: no point of the
+// surface or of its allowances nearer) stays outside while it moves by less than g in the body's
+// frame. Outside decided by cells alone (no clearance) is not remembered. The radius keeps a
+// margin for the rounding between the two frame maps (Frame).
 void RigidSurfacePenalty::remember_clearance(size_t point, const Vec3& X,
                                              const SurfacePoint& outside) {
-  const double d = -outside.depth;
-  double radius = 0.0;
-  if (d > 0.0)
-    radius = std::min(0.5 * d, d - distance_.allowance_within(X, 2.0 * d)) - rounding_margin();
-  clear_[point] = {X, std::max(radius, 0.0)};
+  clear_[point] = {X, std::max(-outside.depth - rounding_margin(), 0.0)};
 }
 
-// Whether x (body frame) lies inside the curved surface or within d of it (NG.3): the cells'
-// test above counts every point within a coarse facet's allowance, which on a coarsely meshed
-// sphere is centimetres.
-bool RigidSurfacePenalty::curved_within(const Vec3& x, double d, int hint) const {
+// A lower bound of how far point `point` (x, body frame) lies outside the surface, <= 0 inside it:
+// from its clearance (CL.1) or from its last evaluation when either is at hand (the body has moved
+// since by a step: a clearance is 1-Lipschitz, the patch depth to first order in the move, held
+// to a tenth of a cell); else infinity when its cells show it farther than `beyond` (DS.2), else
+// by a query (LC.1, NG.3).
+double RigidSurfacePenalty::gap_of(size_t point, const Vec3& x, double beyond) const {
+  const Clearance& c = clear_[point];
+  const double remaining = c.radius - (x - c.at).norm();
+  if (c.radius > 0.0 && remaining >= 0.0) return remaining;
+  const Evaluated& e = evaluated_[point];
+  if (e.valid) {
+    const double moved = (x - e.at).norm();
+    if (moved <= 0.1 * distance_.cell_size()) return -e.depth - moved - rounding_margin();
+  }
+  if (!distance_.inside_or_within(x, beyond)) return std::numeric_limits<double>::infinity();
   SurfacePoint flat, hit;
-  if (distance_.query(x, flat, &hint, true) == SurfaceDistance::Side::outside) return false;
+  flat.depth = 0.0;
+  int hint = hint_[point];
+  const auto side = distance_.query(x, flat, &hint, reach_ > 0.0);
+  if (side == SurfaceDistance::Side::outside)  // cells alone: a clearance above one cell
+    return flat.depth < 0.0 ? -flat.depth : (reach_ > 0.0 ? distance_.cell_size() : 0.0);
   smooth_.evaluate(x, flat, hit);
-  return hit.depth >= -d;
+  return -hit.depth;
 }
 
+// The springs that act within the step load their nodes (kappa_a / m_a) and the body (n K_P / m):
+// omega^2 from the points inside the surface first; then those that can reach it within the step
+// that limit allows (twice the fastest approach times it) join, which can only shorten it.
 ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling) const {
   const RigidState* r = pose(s);
   if (!r) return {};
@@ -312,54 +328,82 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
     v_max = std::max(v_max, s.v[static_cast<size_t>(nodes_[static_cast<size_t>(i)])].norm());
   const double v_rel = v_max + r->velocity.norm() + r->angular_velocity.norm() * reach;
   const double travel = 2.0 * v_rel * std::min(ceiling, 1e300);  // safety factor 2
-  const double band = reach + travel;  // (the sphere includes the smoothed surface's reach_)
-  // The points that can touch the body within the step (within the band): their springs load
-  // their nodes (kappa_a / m_a) and the body (n_near K_P / m).
-  const double K = params_.penalty;
-  double omega2 = 0.0;
-  int near = 0;
-  auto& self = const_cast<RigidSurfacePenalty&>(*this);  // the candidates are scratch
+  const double band = reach + travel;  // (the sphere includes the curved surface's reach_)
+  auto& self = const_cast<RigidSurfacePenalty&>(*this);  // the candidates and gaps are scratch
+  self.gaps_.clear();
   const Frame frame(*r);
   for (int candidate : self.candidates(s, frame, travel + reach_ + rounding_margin())) {
     const auto t = static_cast<size_t>(candidate);
     for (int k = 0; k < 3; ++k) {
-      // The point in the body's frame from its nodes' (the map is affine): a bound needs no
-      // more than that point's cells.
+      // The point in the body's frame from its nodes' (the map is affine).
       const auto N = surface_point_weights(k);
       Vec3 x = Vec3::Zero();
       for (int a = 0; a < 3; ++a)
         x += N[static_cast<size_t>(a)] *
              x_ref_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
       if ((x - r->reference_center).norm() > band) continue;
-      // A point still within its clearance by more than the travel cannot reach it (CL.1).
-      const Clearance& c = clear_[3 * t + static_cast<size_t>(k)];
-      if ((x - c.at).norm() + travel < c.radius) continue;
-      // Only a point that can reach the surface within the step loads a spring in it (DS.2).
-      if (!distance_.inside_or_within(x, travel)) continue;
-      if (reach_ > 0.0 && !curved_within(x, travel, hint_[3 * t + static_cast<size_t>(k)]))
-        continue;
-      ++near;
-      for (int a = 0; a < 3; ++a) {
-        const auto local = static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)]);
-        const double m = s.m_lumped[static_cast<size_t>(nodes_[local])];
-        if (m > 0.0) omega2 = std::max(omega2, K * triangles_at_[local] / m);
-      }
+      const double gap = gap_of(3 * t + static_cast<size_t>(k), x, travel);
+      if (gap <= travel) self.gaps_.emplace_back(gap, static_cast<int>(t));
     }
   }
-  if (near == 0) return {};
-  omega2 += K * near * r->inverse_mass;
-  // A pinned body answers by turning: its springs at up to `reach` from the axis load 1/J r^2.
-  if (r->inverse_mass == 0.0 && r->mobile()) {
-    double lever = 0.0;
-    for (size_t i = 0; i < nodes_.size(); ++i)
-      if (rigid_node_[i])
-        lever = std::max(lever, (s.x[static_cast<size_t>(nodes_[i])] - r->pivot).norm());
-    omega2 += K * near * lever * lever * r->inverse_inertia.norm();
+  const double K = params_.penalty;
+  double omega2 = 0.0;
+  int near = 0;
+  auto add = [&](int t) {
+    ++near;
+    for (int a = 0; a < 3; ++a) {
+      const auto local =
+          static_cast<size_t>(tri_local_[3 * static_cast<size_t>(t) + static_cast<size_t>(a)]);
+      const double m = s.m_lumped[static_cast<size_t>(nodes_[local])];
+      if (m > 0.0) omega2 = std::max(omega2, K * triangles_at_[local] / m);
+    }
+  };
+  auto limit = [&] {
+    double w2 = omega2 + K * near * r->inverse_mass;
+    // A pinned body answers by turning: its springs at up to `lever` from the axis load 1/J r^2.
+    if (r->inverse_mass == 0.0 && r->mobile())
+      w2 += K * near * pin_lever(s, *r) * r->inverse_inertia.norm();
+    return 2.0 / std::sqrt(w2) * damping_factor_;
+  };
+  for (const auto& [gap, t] : gaps_)
+    if (gap <= 0.0) add(t);
+  // Then the others in the order they can arrive (tau = gap / 2 v_rel, the safety factor 2), each
+  // while it can arrive within the step the springs so far allow; one that would cut the step
+  // below its own arrival ends the step there instead (the sphere's rule,
+  // rigid_sphere_penalty.cpp).
+  const double infinite = std::numeric_limits<double>::infinity();
+  double L = near > 0 ? limit() : infinite, kinematic = infinite;
+  std::sort(self.gaps_.begin(), self.gaps_.end());
+  for (const auto& [gap, t] : gaps_) {
+    if (gap <= 0.0) continue;
+    const double tau = v_rel > 0.0 ? gap / (2.0 * v_rel) : infinite;
+    if (tau >= L) break;
+    const int before = near;
+    const double omega2_before = omega2;
+    add(t);
+    const double L_with = limit();
+    if (L_with <= tau) {  // the step ends before this point can arrive
+      near = before;
+      omega2 = omega2_before;
+      kinematic = tau;
+      break;
+    }
+    L = L_with;
   }
   ContactStepBound b;
-  b.stiffness_dt = 2.0 / std::sqrt(omega2) * damping_factor_;
-  if (v_rel > 0.0) b.kinematic_dt = 0.5 * distance_.deep_depth() / v_rel;
+  if (near > 0) b.stiffness_dt = L;
+  if (v_rel > 0.0) b.kinematic_dt = std::min(kinematic, 0.5 * distance_.deep_depth() / v_rel);
+  if (near == 0 && !std::isfinite(kinematic)) return {};
   return b;
+}
+
+// The farthest rigid node from a pinned body's axis point, squared [m^2].
+double RigidSurfacePenalty::pin_lever(const State& s, const RigidState& r) const {
+  double lever = 0.0;
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    if (rigid_node_[i])
+      lever = std::max(lever, (s.x[static_cast<size_t>(nodes_[i])] - r.pivot).squaredNorm());
+  return lever;
 }
 
 std::vector<std::string> RigidSurfacePenalty::history_columns() const {

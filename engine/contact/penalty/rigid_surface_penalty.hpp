@@ -84,7 +84,8 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   };
   const std::vector<int>& candidates(const State& s, const Frame& frame, double margin);
   double rounding_margin() const;
-  bool curved_within(const Vec3& x, double d, int hint) const;
+  double gap_of(size_t point, const Vec3& x, double beyond) const;
+  double pin_lever(const State& s, const RigidState& r) const;
   void load_rigid(int triangle, const std::array<double, 3>& weights, const Vec3& f);
 
   RigidSurfacePenaltyParams params_;
@@ -108,6 +109,16 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
     double radius = 0.0;
   };
   std::vector<Clearance> clear_;
+  // Per quadrature point, where add_forces() last evaluated it (body frame) and its depth there
+  // (NG.3; outside, minus its clearance): the step bound that follows, at the same positions,
+  // reads it.
+  struct Evaluated {
+    Vec3 at = Vec3::Zero();
+    double depth = 0.0;
+    bool valid = false;
+  };
+  std::vector<Evaluated> evaluated_;
+  std::vector<std::pair<double, int>> gaps_;  // step_bound's scratch: (gap, triangle) per point
   void remember_clearance(size_t point, const Vec3& X, const SurfacePoint& outside);
   std::vector<int> deformable_local_;        // the entries of nodes_ on the deformable surface
   std::vector<int> rigid_now_, rigid_prev_;  // rigid entries with a force, now and at the start

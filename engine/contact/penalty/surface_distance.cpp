@@ -266,15 +266,40 @@ bool SurfaceDistance::inside_or_within(const Vec3& p, double d) const {
   return false;
 }
 
-double SurfaceDistance::allowance_within(const Vec3& p, double radius) const {
-  if (largest_allowance_ == 0.0) return 0.0;
+// LC.1: the clearance of a point outside the surface, min over triangles t of (distance to t -
+// allowance_t): no point of any triangle's lift lies nearer. Only its sign is needed once it is
+// not positive: the search returns the first value <= 0 it finds. `bound`, the nearest triangle's
+// value, bounds it from above; a triangle can only do better when it lies within bound plus the
+// largest allowance, so the cells of that box are searched, skipping a triangle whose box or
+// plane is already too far.
+double SurfaceDistance::lens_clearance(const Vec3& p, double bound) const {
+  double best = bound;
+  const double radius = bound + largest_allowance_;
+  if (!(best > 0.0)) return best;  // within a lift already: its exact value is not needed
   const auto lo = cell_of(p - Vec3::Constant(radius)), hi = cell_of(p + Vec3::Constant(radius));
-  double largest = 0.0;
   for (int z = std::max(lo[2], 0); z <= std::min(hi[2], dims_[2] - 1); ++z)
     for (int y = std::max(lo[1], 0); y <= std::min(hi[1], dims_[1] - 1); ++y)
-      for (int x = std::max(lo[0], 0); x <= std::min(hi[0], dims_[0] - 1); ++x)
-        largest = std::max(largest, cell_allowance_[static_cast<size_t>(cell_index({x, y, z}))]);
-  return largest;
+      for (int x = std::max(lo[0], 0); x <= std::min(hi[0], dims_[0] - 1); ++x) {
+        const auto i = static_cast<size_t>(cell_index({x, y, z}));
+        if (cell_start_[i] == cell_start_[i + 1]) continue;
+        const double reach = best + cell_allowance_[i];
+        if (reach <= 0.0 || box_distance2(p, {x, y, z}) >= reach * reach) continue;
+        for (int k = cell_start_[i]; k < cell_start_[i + 1]; ++k) {
+          const int t = cell_items_[static_cast<size_t>(k)];
+          const double limit = best + allowance_[static_cast<size_t>(t)];
+          if (limit <= 0.0) continue;
+          const auto& box = triangle_box_[static_cast<size_t>(t)];
+          const Vec3 out = (box[0] - p).cwiseMax(p - box[1]).cwiseMax(0.0);
+          if (out.squaredNorm() >= limit * limit) continue;
+          const double plane = face_normal_[static_cast<size_t>(t)].dot(
+              p - vertices_[static_cast<size_t>(triangles_[static_cast<size_t>(t)][0])]);
+          if (plane * plane >= limit * limit) continue;
+          std::array<double, 3> w{};
+          best = std::min(best, std::sqrt(closest(t, p, w)) - allowance_[static_cast<size_t>(t)]);
+          if (!(best > 0.0)) return best;
+        }
+      }
+  return best;
 }
 
 void SurfaceDistance::set_allowance(std::vector<double> per_triangle) {
@@ -303,12 +328,13 @@ bool SurfaceDistance::surely_outside(const Vec3& p, const std::array<int, 3>& c,
   const bool empty =
       cell_start_[static_cast<size_t>(own)] == cell_start_[static_cast<size_t>(own) + 1];
   if (!empty || !outside_[static_cast<size_t>(own)]) return false;
-  return reach <= 0.0 || !inside_or_within(p, 0.0);
+  return reach <= 0.0 || !any_cell_within(p, reach);
 }
 
 SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, int* hint,
                                              bool with_allowance) const {
-  const double reach = with_allowance ? largest_allowance_ : 0.0;
+  // With allowances, a point decided by its cells alone has a clearance above one cell.
+  const double reach = with_allowance && largest_allowance_ > 0.0 ? largest_allowance_ + h_ : 0.0;
   const auto c = cell_of(p);
   if (surely_outside(p, c, reach)) return Side::outside;
   Nearest best;
@@ -384,10 +410,13 @@ SurfaceDistance::Side SurfaceDistance::finish(const Vec3& p, const Nearest& best
   feature(best, q, normal);
   const bool outside = (p - q).dot(normal) >= 0.0;
   if (outside) {
-    const double allowance =
-        with_allowance && !allowance_.empty() ? allowance_within(p, std::sqrt(best.d2)) : 0.0;
-    if (!(best.d2 <= allowance * allowance)) {
-      hit.depth = -std::sqrt(best.d2);
+    const double d = std::sqrt(best.d2);
+    const double clearance =
+        with_allowance && !allowance_.empty()
+            ? lens_clearance(p, d - allowance_[static_cast<size_t>(best.triangle)])
+            : d;
+    if (clearance > 0.0) {
+      hit.depth = -clearance;
       hit.triangle = best.triangle;
       return Side::outside;
     }

@@ -40,13 +40,16 @@ class SurfaceDistance {
   SurfaceDistance(std::vector<Vec3> vertices, std::vector<Triangle> triangles);
 
   enum class Side { outside, near, inside, deep };
-  // outside: `hit` untouched when p's cells alone decide it; after a search, hit.depth is minus
-  // the distance to the nearest triangle, hit.triangle that triangle (the rest untouched).
-  // near (only with with_allowance): outside by no more than the
-  // largest allowance of the triangles within that distance, `hit` filled with depth = -distance.
-  // inside: `hit` filled. deep: filled, inside by more than deep_depth() (the longest edge). `hint`
-  // (optional, in and out): a triangle likely nearest, such as this point's last answer; it changes
-  // the cost, never the result, and is set to the nearest triangle whenever the search reaches one.
+  // outside: `hit` untouched when p's cells alone decide it (with allowances, its clearance then
+  // exceeds cell_size()); after a search, hit.depth is minus
+  // p's clearance (LC.1: no point of the surface, or of any triangle's allowance above it, lies
+  // nearer; the distance to the nearest triangle without allowances) and hit.triangle the nearest
+  // triangle (the rest untouched). near (only with with_allowance): outside the triangles but
+  // within some triangle's allowance, `hit` filled with depth = -distance to the nearest.
+  // inside: `hit` filled. deep: filled, inside by more than deep_depth() (the longest edge).
+  // `hint` (optional, in and out): a triangle likely nearest, such as this point's last answer;
+  // it changes the cost, never the result, and is set to the nearest triangle whenever the search
+  // reaches one.
   Side query(const Vec3& p, SurfacePoint& hit, int* hint = nullptr,
              bool with_allowance = false) const;
 
@@ -59,9 +62,6 @@ class SurfaceDistance {
   // lift above its facets (curved_surface.hpp). Zero for every triangle unless set.
   void set_allowance(std::vector<double> per_triangle);
   double largest_allowance() const { return largest_allowance_; }
-  // The largest allowance of the triangles listed in the cells within `radius` of p (and a few
-  // more): every triangle with a point within radius of p is among them.
-  double allowance_within(const Vec3& p, double radius) const;
 
   // The surface's bounding box (min, max corners): every point inside lies in it.
   const std::array<Vec3, 2>& box() const { return box_; }
@@ -82,6 +82,7 @@ class SurfaceDistance {
   double box_distance2(const Vec3& p, const std::array<int, 3>& c) const;
   bool surely_outside(const Vec3& p, const std::array<int, 3>& c, double reach) const;
   bool any_cell_within(const Vec3& p, double d) const;
+  double lens_clearance(const Vec3& p, double bound) const;
   void feature(const Nearest& best, Vec3& q, Vec3& normal) const;
   Side side_of(const Vec3& p, const Nearest& best) const;
   Side finish(const Vec3& p, const Nearest& best, SurfacePoint& hit, bool with_allowance) const;

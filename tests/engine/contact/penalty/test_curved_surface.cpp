@@ -97,10 +97,9 @@ TEST_CASE("smoothed surface: a box keeps its flat faces and sharp edges",
   CHECK_FALSE(rounded.all_flat());
 }
 
-// CL.1 (rigid_surface_penalty.cpp): a point found outside at distance d from the nearest facet,
-// A the largest allowance within 2 d, stays outside (beyond every allowance) anywhere within
-// min(d / 2, d - A) of that place. Random places around a coarse curved sphere and random moves
-// up to the radius, in every direction.
+// CL.1 and LC.1 (rigid_surface_penalty.cpp, surface_distance.cpp): a point found outside with
+// clearance g stays outside anywhere within g of that place. Random places around a coarse curved
+// sphere and random moves up to the clearance, in every direction.
 TEST_CASE("smoothed surface: a point within its clearance stays outside",
           "[rigid-body][penalty][phong]") {
   const TetMesh ball = test::gmsh_sphere(1.0, 0.3, Vec3::Zero());
@@ -116,9 +115,7 @@ TEST_CASE("smoothed surface: a point within its clearance stays outside",
     SurfacePoint hit;
     if (d.query(X0, hit, nullptr, true) != SurfaceDistance::Side::outside) continue;
     if (!(hit.depth < 0.0)) continue;  // decided by cells alone: no distance
-    const double dist = -hit.depth;
-    const double radius = std::min(0.5 * dist, dist - d.allowance_within(X0, 2.0 * dist));
-    if (!(radius > 0.0)) continue;
+    const double radius = -hit.depth;
     ++cleared;
     for (int j = 0; j < 5; ++j) {
       const Vec3 X = X0 + Vec3(g(rng), g(rng), g(rng)).normalized() * radius * u(rng);
