@@ -75,6 +75,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
       rigid_node_[static_cast<size_t>(rigid_local_.back())] = 1;
     }
   hint_.assign(3 * tris_.size(), -1);
+  lens_hint_.assign(3 * tris_.size(), -1);
   clear_.assign(3 * tris_.size(), Clearance{});
   evaluated_.assign(3 * tris_.size(), Evaluated{});
   for (size_t i = 0; i < nodes_.size(); ++i)
@@ -210,7 +211,8 @@ void RigidSurfacePenalty::add_forces(State& s) {
       if ((X - clear_[point].at).squaredNorm() < clear_[point].radius * clear_[point].radius)
         continue;  // CL.1
       flat.depth = 0.0;
-      const SurfaceDistance::Side side = distance_.query(X, flat, &hint_[point], reach_ > 0.0);
+      const SurfaceDistance::Side side =
+          distance_.query(X, flat, &hint_[point], reach_ > 0.0, &lens_hint_[point]);
       if (side == SurfaceDistance::Side::outside) {
         remember_clearance(point, X, flat);
         if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true};  // minus its clearance
@@ -227,7 +229,12 @@ void RigidSurfacePenalty::add_forces(State& s) {
       }
       smooth_.evaluate(X, flat, hit);  // NG.3
       evaluated_[point] = {X, hit.depth, true};
-      if (!(hit.depth > 0.0)) continue;
+      if (!(hit.depth > 0.0)) {
+        // Below a lift but above its patch: half its height above the patch as its clearance
+        // (CL.2: NG.3's depth is the distance to the patch to first order).
+        clear_[point] = {X, std::max(-0.5 * hit.depth - rounding_margin(), 0.0)};
+        continue;
+      }
       ++n_active_;
       penetration_max_ = std::max(penetration_max_, hit.depth);
       Vec3 v = Vec3::Zero();
@@ -281,6 +288,7 @@ void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
   ledger_ = {.work = work_, .injected_energy = 0.0, .touching = n_active_ > 0, .failure = failure_};
 }
 
+// CL.2 (add_forces): a point evaluated above a patch by h keeps h / 2 as its clearance.
 // CL.1: a point found outside with clearance g (LC.1, surface_distance.hpp: no point of the
 // surface or of its allowances nearer) stays outside while it moves by less than g in the body's
 // frame. Outside decided by cells alone (no clearance) is not remembered. The radius keeps a
@@ -291,24 +299,24 @@ void RigidSurfacePenalty::remember_clearance(size_t point, const Vec3& X,
 }
 
 // A lower bound of how far point `point` (x, body frame) lies outside the surface, <= 0 inside it:
-// from its clearance (CL.1) or from its last evaluation when either is at hand (the body has moved
+// from its last evaluation or its clearance (CL.1, CL.2) when either is at hand (the body has moved
 // since by a step: a clearance is 1-Lipschitz, the patch depth to first order in the move, held
 // to a tenth of a cell); else infinity when its cells show it farther than `beyond` (DS.2), else
 // by a query (LC.1, NG.3).
 double RigidSurfacePenalty::gap_of(size_t point, const Vec3& x, double beyond) const {
-  const Clearance& c = clear_[point];
-  const double remaining = c.radius - (x - c.at).norm();
-  if (c.radius > 0.0 && remaining >= 0.0) return remaining;
   const Evaluated& e = evaluated_[point];
   if (e.valid) {
     const double moved = (x - e.at).norm();
     if (moved <= 0.1 * distance_.cell_size()) return -e.depth - moved - rounding_margin();
   }
+  const Clearance& c = clear_[point];
+  const double remaining = c.radius - (x - c.at).norm();
+  if (c.radius > 0.0 && remaining >= 0.0) return remaining;
   if (!distance_.inside_or_within(x, beyond)) return std::numeric_limits<double>::infinity();
   SurfacePoint flat, hit;
   flat.depth = 0.0;
-  int hint = hint_[point];
-  const auto side = distance_.query(x, flat, &hint, reach_ > 0.0);
+  int hint = hint_[point], lens_hint = lens_hint_[point];
+  const auto side = distance_.query(x, flat, &hint, reach_ > 0.0, &lens_hint);
   if (side == SurfaceDistance::Side::outside)  // cells alone: a clearance above one cell
     return flat.depth < 0.0 ? -flat.depth : (reach_ > 0.0 ? distance_.cell_size() : 0.0);
   smooth_.evaluate(x, flat, hit);

@@ -102,6 +102,7 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   std::vector<char> rigid_node_;      // per entry of nodes_: a rigid body's node
   std::vector<double> triangles_at_;  // per entry of nodes_: the deformable triangles at it
   std::vector<int> hint_;             // per quadrature point: its last nearest rigid triangle
+  std::vector<int> lens_hint_;        // per quadrature point: the triangle of its last clearance
   // Per quadrature point, a place in the body's frame and a radius: while the point stays within
   // it, it is outside the rigid surface (CL.1, rigid_surface_penalty.cpp); radius 0: unknown.
   struct Clearance {

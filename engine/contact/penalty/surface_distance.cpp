@@ -272,8 +272,16 @@ bool SurfaceDistance::inside_or_within(const Vec3& p, double d) const {
 // value, bounds it from above; a triangle can only do better when it lies within bound plus the
 // largest allowance, so the cells of that box are searched, skipping a triangle whose box or
 // plane is already too far.
-double SurfaceDistance::lens_clearance(const Vec3& p, double bound) const {
+double SurfaceDistance::lens_clearance(const Vec3& p, double bound, int* hint) const {
   double best = bound;
+  const auto value = [&](int t) {
+    std::array<double, 3> w{};
+    return std::sqrt(closest(t, p, w)) - allowance_[static_cast<size_t>(t)];
+  };
+  // The triangle that decided this point last (a hint: the sign of the result does not depend
+  // on it, and a positive result is the exact minimum either way).
+  if (hint && *hint >= 0 && *hint < static_cast<int>(triangles_.size()))
+    best = std::min(best, value(*hint));
   const double radius = bound + largest_allowance_;
   if (!(best > 0.0)) return best;  // within a lift already: its exact value is not needed
   const auto lo = cell_of(p - Vec3::Constant(radius)), hi = cell_of(p + Vec3::Constant(radius));
@@ -294,8 +302,11 @@ double SurfaceDistance::lens_clearance(const Vec3& p, double bound) const {
           const double plane = face_normal_[static_cast<size_t>(t)].dot(
               p - vertices_[static_cast<size_t>(triangles_[static_cast<size_t>(t)][0])]);
           if (plane * plane >= limit * limit) continue;
-          std::array<double, 3> w{};
-          best = std::min(best, std::sqrt(closest(t, p, w)) - allowance_[static_cast<size_t>(t)]);
+          const double v = value(t);
+          if (v < best) {
+            best = v;
+            if (hint) *hint = t;
+          }
           if (!(best > 0.0)) return best;
         }
       }
@@ -332,7 +343,7 @@ bool SurfaceDistance::surely_outside(const Vec3& p, const std::array<int, 3>& c,
 }
 
 SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, int* hint,
-                                             bool with_allowance) const {
+                                             bool with_allowance, int* lens_hint) const {
   // With allowances, a point decided by its cells alone has a clearance above one cell.
   const double reach = with_allowance && largest_allowance_ > 0.0 ? largest_allowance_ + h_ : 0.0;
   const auto c = cell_of(p);
@@ -377,7 +388,7 @@ SurfaceDistance::Side SurfaceDistance::query(const Vec3& p, SurfacePoint& hit, i
     if (best.d2 <= k * k * h_ * h_) break;
   }
   if (hint) *hint = best.triangle;
-  return finish(p, best, hit, with_allowance);
+  return finish(p, best, hit, with_allowance, lens_hint);
 }
 
 // The side of p by the pseudo-normal of the feature its nearest point (best) is on.
@@ -405,7 +416,7 @@ void SurfaceDistance::feature(const Nearest& best, Vec3& q, Vec3& normal) const 
 }
 
 SurfaceDistance::Side SurfaceDistance::finish(const Vec3& p, const Nearest& best, SurfacePoint& hit,
-                                              bool with_allowance) const {
+                                              bool with_allowance, int* lens_hint) const {
   Vec3 q, normal;
   feature(best, q, normal);
   const bool outside = (p - q).dot(normal) >= 0.0;
@@ -413,7 +424,7 @@ SurfaceDistance::Side SurfaceDistance::finish(const Vec3& p, const Nearest& best
     const double d = std::sqrt(best.d2);
     const double clearance =
         with_allowance && !allowance_.empty()
-            ? lens_clearance(p, d - allowance_[static_cast<size_t>(best.triangle)])
+            ? lens_clearance(p, d - allowance_[static_cast<size_t>(best.triangle)], lens_hint)
             : d;
     if (clearance > 0.0) {
       hit.depth = -clearance;

@@ -50,8 +50,10 @@ class SurfaceDistance {
   // `hint` (optional, in and out): a triangle likely nearest, such as this point's last answer;
   // it changes the cost, never the result, and is set to the nearest triangle whenever the search
   // reaches one.
-  Side query(const Vec3& p, SurfacePoint& hit, int* hint = nullptr,
-             bool with_allowance = false) const;
+  // `lens_hint` (optional, in and out): the triangle that last decided the point's clearance
+  // (LC.1); like `hint`, it changes the cost only.
+  Side query(const Vec3& p, SurfacePoint& hit, int* hint = nullptr, bool with_allowance = false,
+             int* lens_hint = nullptr) const;
 
   // Whether p lies inside the surface or possibly within d (plus the allowance of the triangles
   // there) of it: true for every such point (and for some points up to a cell farther), false for
@@ -82,10 +84,11 @@ class SurfaceDistance {
   double box_distance2(const Vec3& p, const std::array<int, 3>& c) const;
   bool surely_outside(const Vec3& p, const std::array<int, 3>& c, double reach) const;
   bool any_cell_within(const Vec3& p, double d) const;
-  double lens_clearance(const Vec3& p, double bound) const;
+  double lens_clearance(const Vec3& p, double bound, int* hint) const;
   void feature(const Nearest& best, Vec3& q, Vec3& normal) const;
   Side side_of(const Vec3& p, const Nearest& best) const;
-  Side finish(const Vec3& p, const Nearest& best, SurfacePoint& hit, bool with_allowance) const;
+  Side finish(const Vec3& p, const Nearest& best, SurfacePoint& hit, bool with_allowance,
+              int* lens_hint) const;
   long cell_index(const std::array<int, 3>& c) const;
   std::array<int, 3> cell_of(const Vec3& p) const;
   void build_grid();

@@ -252,6 +252,8 @@ TEST_CASE(
   RigidSurfacePenaltyParams p;
   p.penalty = 1e6;
   p.damping = 1.0;
+  // Flat facets, and the curved surface (curved_surface.hpp): the sphere the mesh stands for.
+  p.crease_angle = GENERATE(0.0, 45.0);
   RigidSurfacePenalty penalty(meshed.mesh, meshed.mesh.surfaces.at("artifact/boundary").triangles,
                               1, p);
   const Impact m = run(meshed, penalty, mass, true);
@@ -280,10 +282,11 @@ TEST_CASE(
     ref += a.ke[i] * a.ke[i];
   }
   l2 = std::sqrt(l2 / ref);
-  WARN("meshed vs analytic sphere: KE L2 error "
-       << l2 << ", sup error " << sup / peak << ", final KE " << m.ke.back() << " / " << a.ke.back()
-       << ", u_mean " << m.u_mean << " / " << a.u_mean << ", u_max " << m.u_max << " / " << a.u_max
-       << ", steps " << m.summary.steps << " / " << a.summary.steps);
+  WARN("meshed vs analytic sphere, crease angle "
+       << p.crease_angle << ": KE L2 error " << l2 << ", sup error " << sup / peak << ", final KE "
+       << m.ke.back() << " / " << a.ke.back() << ", u_mean " << m.u_mean << " / " << a.u_mean
+       << ", u_max " << m.u_max << " / " << a.u_max << ", steps " << m.summary.steps << " / "
+       << a.summary.steps);
   CHECK(peak > 0.1 * 0.5 * mass * kBallSpeed * kBallSpeed);
   // The three final-state metrics (the trade study's, eq. 2.39). The meshed sphere is an
   // inscribed polyhedron and the penalty acts on its faces' distance, not the sphere's: where a
@@ -298,6 +301,15 @@ TEST_CASE(
   CHECK(std::abs(m.u_max - a.u_max) < largest_sag);
   // The kinetic-energy history: 0.9-1.2 % over the six schedules; 2 %.
   CHECK(l2 < 0.02);
+  if (p.crease_angle > 0.0) {
+    // The curved surface leaves no faceting to speak of (NG.1: O(h^4 / R^3) on this mesh): the
+    // displacements within the step schedule's own scatter of the analytic run (0.05-0.3 %),
+    // the largest within a quarter of the largest sag, the history within 1 % (measured 0.06 %,
+    // 0.17 % of u_max = 0.05 of the sag, 0.45 %).
+    CHECK(relative(m.u_mean, a.u_mean) < 0.003);
+    CHECK(std::abs(m.u_max - a.u_max) < 0.25 * largest_sag);
+    CHECK(l2 < 0.01);
+  }
   // Momentum: the penalty's forces act in equal and opposite pairs (round-off, 1e-9).
   CHECK((m.momentum_end - m.momentum_0).norm() < 1e-9 * m.momentum_0.norm());
 }
