@@ -37,10 +37,8 @@ Vec3 edge_coefficient(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& 
 }
 
 // NG.1 and its derivatives along b_1 and b_2 (b_0 = 1 - b_1 - b_2).
-struct PatchPoint {
-  Vec3 x, t1, t2;
-};
-PatchPoint patch(const std::array<Vec3, 3>& v, const std::array<Vec3, 3>& c, double b1, double b2) {
+using Patch = CurvedSurface::PatchPoint;
+Patch patch(const std::array<Vec3, 3>& v, const std::array<Vec3, 3>& c, double b1, double b2) {
   const double b0 = 1.0 - b1 - b2;
   return {
       b0 * v[0] + b1 * v[1] + b2 * v[2] - c[0] * (b0 * b1) - c[1] * (b1 * b2) - c[2] * (b2 * b0),
@@ -49,6 +47,8 @@ PatchPoint patch(const std::array<Vec3, 3>& v, const std::array<Vec3, 3>& c, dou
 }
 
 constexpr int kFootIterations = 3;
+constexpr int kWalks = 4;         // triangles a foot point may move across (NG.5)
+constexpr double kInside = 1e-9;  // a weight this far below 0 still counts as inside
 
 }  // namespace
 
@@ -75,6 +75,18 @@ CurvedSurface::CurvedSurface(const std::vector<Vec3>& vertices,
       if (triangles_[static_cast<size_t>(t)][static_cast<size_t>(k)] == v) return 3 * t + k;
     throw std::logic_error("curved surface: a vertex not on its triangle");
   };
+  neighbour_.assign(n, {-1, -1, -1});
+  for (const auto& [edge, sides] : edges)
+    if (sides.size() == 2)
+      for (int side = 0; side < 2; ++side) {
+        const auto t = static_cast<size_t>(sides[static_cast<size_t>(side)]);
+        for (int k = 0; k < 3; ++k) {
+          const int i = triangles_[t][static_cast<size_t>(k)],
+                    j = triangles_[t][static_cast<size_t>((k + 1) % 3)];
+          if (std::min(i, j) == edge.first && std::max(i, j) == edge.second)
+            neighbour_[t][static_cast<size_t>(k)] = sides[static_cast<size_t>(1 - side)];
+        }
+      }
   const double cos_crease = std::cos(crease_degrees * M_PI / 180.0);
   CornerGroups groups(3 * n);
   for (const auto& [edge, sides] : edges) {
@@ -116,19 +128,10 @@ CurvedSurface::CurvedSurface(const std::vector<Vec3>& vertices,
   }
 }
 
-void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, SurfacePoint& hit) const {
-  const auto t = static_cast<size_t>(flat_hit.triangle);
-  if (flat_[t]) {
-    hit = flat_hit;
-    return;
-  }
-  const std::array<Vec3, 3> v = {vertices_[static_cast<size_t>(triangles_[t][0])],
-                                 vertices_[static_cast<size_t>(triangles_[t][1])],
-                                 vertices_[static_cast<size_t>(triangles_[t][2])]};
-  const std::array<Vec3, 3>& c = edge_c_[t];
-  // The foot point by Gauss-Newton from the flat one (NG.3).
-  double b1 = flat_hit.weights[1], b2 = flat_hit.weights[2];
-  PatchPoint P = patch(v, c, b1, b2);
+// Gauss-Newton for the foot point of x on triangle t's patch from weights (b1, b2) (NG.3).
+void CurvedSurface::foot(size_t t, const Vec3& x, double& b1, double& b2, PatchPoint& P) const {
+  const std::array<Vec3, 3> v = corners(t);
+  P = patch(v, edge_c_[t], b1, b2);
   for (int it = 0; it < kFootIterations; ++it) {
     const Vec3 r = x - P.x;
     const double a11 = P.t1.dot(P.t1), a12 = P.t1.dot(P.t2), a22 = P.t2.dot(P.t2);
@@ -136,8 +139,57 @@ void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, Surfac
     if (!(det > 0.0)) break;
     b1 += (a22 * r1 - a12 * r2) / det;
     b2 += (a11 * r2 - a12 * r1) / det;
-    P = patch(v, c, b1, b2);
+    P = patch(v, edge_c_[t], b1, b2);
   }
+}
+
+std::array<Vec3, 3> CurvedSurface::corners(size_t t) const {
+  return {vertices_[static_cast<size_t>(triangles_[t][0])],
+          vertices_[static_cast<size_t>(triangles_[t][1])],
+          vertices_[static_cast<size_t>(triangles_[t][2])]};
+}
+
+// x's projection onto facet t's plane as barycentric weights, clamped into the triangle and
+// renormalised.
+std::array<double, 3> CurvedSurface::projected_inside(size_t t, const Vec3& x) const {
+  const std::array<Vec3, 3> v = corners(t);
+  const Vec3 e1 = v[1] - v[0], e2 = v[2] - v[0], w = x - v[0];
+  const double d00 = e1.dot(e1), d01 = e1.dot(e2), d11 = e2.dot(e2), d20 = w.dot(e1),
+               d21 = w.dot(e2);
+  const double inverse = 1.0 / (d00 * d11 - d01 * d01);
+  std::array<double, 3> b = {0.0, (d11 * d20 - d01 * d21) * inverse,
+                             (d00 * d21 - d01 * d20) * inverse};
+  b[0] = 1.0 - b[1] - b[2];
+  double sum = 0.0;
+  for (double& bi : b) sum += (bi = std::max(bi, 0.0));
+  for (double& bi : b) bi /= sum;
+  return b;
+}
+
+void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, SurfacePoint& hit) const {
+  auto t = static_cast<size_t>(flat_hit.triangle);
+  if (flat_[t]) {
+    hit = flat_hit;
+    return;
+  }
+  // The foot point (NG.3) from the flat one; a foot beyond an edge moves to the triangle across
+  // it, starting from x's projection onto that facet held inside it (NG.5), up to kWalks times.
+  double b1 = flat_hit.weights[1], b2 = flat_hit.weights[2];
+  PatchPoint P;
+  foot(t, x, b1, b2, P);
+  for (int walk = 0; walk < kWalks; ++walk) {
+    const std::array<double, 3> b = {1.0 - b1 - b2, b1, b2};
+    const auto lowest = static_cast<size_t>(std::min_element(b.begin(), b.end()) - b.begin());
+    if (b[lowest] >= -kInside) break;
+    const int across = neighbour_[t][(lowest + 1) % 3];  // the edge opposite the lowest weight
+    if (across < 0) break;
+    t = static_cast<size_t>(across);
+    const std::array<double, 3> w = projected_inside(t, x);
+    b1 = w[1];
+    b2 = w[2];
+    foot(t, x, b1, b2, P);
+  }
+  const std::array<Vec3, 3> v = corners(t);
   const Vec3 n = P.t1.cross(P.t2).normalized();
   const Vec3& nf = face_normal_[t];
   if (!(n.dot(nf) > 0.0)) {  // a patch folded over its facet: keep the facet
@@ -154,7 +206,7 @@ void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, Surfac
   hit.depth = (P.x - x).dot(n);
   hit.point = q;
   hit.normal = n;
-  hit.triangle = flat_hit.triangle;
+  hit.triangle = static_cast<int>(t);
   hit.weights = {1.0 - w1 - w2, w1, w2};
 }
 

@@ -21,6 +21,9 @@
 // the flat triangle (surface_distance.hpp), b <- b + (J^T J)^-1 J^T (x - x(b)), J = dx/d(b_1, b_2)
 // (three iterations), then with the patch's outward normal n = normalise(J_1 x J_2) there
 //   depth = (x(b) - x) . n                                                                (NG.3)
+// A foot that leaves its triangle (a weight below 0) moves to the triangle across that edge and
+// is sought there again, up to four times (NG.5): the foot on the patches as one surface, not on
+// the nearest facet's patch extended.
 // How far the patch lies from its facet: |x(b) - p| <= max |c_ij| (b_0 b_1 + b_1 b_2 + b_2 b_0)
 // <= max |c_ij| / 3                                                                       (NG.4)
 #pragma once
@@ -56,11 +59,20 @@ class CurvedSurface {
   // line. A flat facet returns flat_hit.
   void evaluate(const Vec3& x, const SurfacePoint& flat_hit, SurfacePoint& hit) const;
 
+  struct PatchPoint {
+    Vec3 x, t1, t2;  // NG.1 and its derivatives along b_1, b_2
+  };
+
  private:
+  void foot(size_t t, const Vec3& x, double& b1, double& b2, PatchPoint& P) const;
+  std::array<Vec3, 3> corners(size_t t) const;
+  std::array<double, 3> projected_inside(size_t t, const Vec3& x) const;
+
   std::vector<Vec3> vertices_;
   std::vector<Triangle> triangles_;
   std::vector<Vec3> face_normal_;
-  std::vector<std::array<Vec3, 3>> edge_c_;  // per triangle: c_01, c_12, c_20 (NG.2)
+  std::vector<std::array<Vec3, 3>> edge_c_;    // per triangle: c_01, c_12, c_20 (NG.2)
+  std::vector<std::array<int, 3>> neighbour_;  // per triangle: across edge (k, k + 1)
   std::vector<char> flat_;
   std::vector<double> allowance_;
   bool all_flat_ = true;

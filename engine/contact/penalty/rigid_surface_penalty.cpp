@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "engine/body/mass_properties.hpp"
@@ -291,11 +292,14 @@ void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
 // CL.2 (add_forces): a point evaluated above a patch by h keeps h / 2 as its clearance.
 // CL.1: a point found outside with clearance g (LC.1, surface_distance.hpp: no point of the
 // surface or of its allowances nearer) stays outside while it moves by less than g in the body's
-// frame. Outside decided by cells alone (no clearance) is not remembered. The radius keeps a
-// margin for the rounding between the two frame maps (Frame).
+// frame. Outside decided by cells alone is remembered with lifts only (one cell). The radius keeps
+// a margin for the rounding between the two frame maps (Frame).
 void RigidSurfacePenalty::remember_clearance(size_t point, const Vec3& X,
                                              const SurfacePoint& outside) {
-  clear_[point] = {X, std::max(-outside.depth - rounding_margin(), 0.0)};
+  // Decided by cells alone: with lifts, a clearance above one cell (SurfaceDistance::query).
+  const double clearance =
+      outside.depth < 0.0 ? -outside.depth : (reach_ > 0.0 ? distance_.cell_size() : 0.0);
+  clear_[point] = {X, std::max(clearance - rounding_margin(), 0.0)};
 }
 
 // A lower bound of how far point `point` (x, body frame) lies outside the surface, <= 0 inside it:
@@ -381,11 +385,18 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   // rigid_sphere_penalty.cpp).
   const double infinite = std::numeric_limits<double>::infinity();
   double L = near > 0 ? limit() : infinite, kinematic = infinite;
-  std::sort(self.gaps_.begin(), self.gaps_.end());
-  for (const auto& [gap, t] : gaps_) {
-    if (gap <= 0.0) continue;
+  // The approaching points from a min-heap of their gaps (most never leave it).
+  auto& heap = self.gaps_;
+  heap.erase(std::remove_if(heap.begin(), heap.end(), [](const auto& g) { return g.first <= 0.0; }),
+             heap.end());
+  const auto farther = std::greater<std::pair<double, int>>();
+  std::make_heap(heap.begin(), heap.end(), farther);
+  while (!heap.empty()) {
+    const auto [gap, t] = heap.front();
     const double tau = v_rel > 0.0 ? gap / (2.0 * v_rel) : infinite;
     if (tau >= L) break;
+    std::pop_heap(heap.begin(), heap.end(), farther);
+    heap.pop_back();
     const int before = near;
     const double omega2_before = omega2;
     add(t);
