@@ -166,21 +166,35 @@ std::array<double, 3> CurvedSurface::projected_inside(size_t t, const Vec3& x) c
   return b;
 }
 
-void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, SurfacePoint& hit) const {
-  auto t = static_cast<size_t>(flat_hit.triangle);
-  if (flat_[t]) {
+void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, SurfacePoint& hit,
+                             std::array<double, 2>* foot_weights) const {
+  const auto t = static_cast<size_t>(flat_hit.triangle);
+  if (flat_[t] ||
+      walk(x, t, flat_hit.weights[1], flat_hit.weights[2], hit, foot_weights) == Foot::folded)
     hit = flat_hit;
-    return;
-  }
-  // The foot point (NG.3) from the flat one; a foot beyond an edge moves to the triangle across
-  // it, starting from x's projection onto that facet held inside it (NG.5), up to kWalks times.
-  double b1 = flat_hit.weights[1], b2 = flat_hit.weights[2];
+}
+
+bool CurvedSurface::track(const Vec3& x, int triangle, std::array<double, 2> from,
+                          SurfacePoint& hit, std::array<double, 2>& foot_weights) const {
+  const auto t = static_cast<size_t>(triangle);
+  return !flat_[t] && walk(x, t, from[0], from[1], hit, &foot_weights) == Foot::on_patch &&
+         !flat_[static_cast<size_t>(hit.triangle)];
+}
+
+// The foot point (NG.3) from weights (b1, b2) of triangle t; a foot beyond an edge moves to the
+// triangle across it, starting from x's projection onto that facet held inside it (NG.5), up to
+// kWalks times. Fills `hit` unless the patch there is folded over its facet.
+CurvedSurface::Foot CurvedSurface::walk(const Vec3& x, size_t t, double b1, double b2,
+                                        SurfacePoint& hit,
+                                        std::array<double, 2>* foot_weights) const {
   PatchPoint P;
   foot(t, x, b1, b2, P);
-  for (int walk = 0; walk < kWalks; ++walk) {
+  bool inside = false;
+  for (int walk = 0;; ++walk) {
     const std::array<double, 3> b = {1.0 - b1 - b2, b1, b2};
     const auto lowest = static_cast<size_t>(std::min_element(b.begin(), b.end()) - b.begin());
-    if (b[lowest] >= -kInside) break;
+    inside = b[lowest] >= -kInside;
+    if (inside || walk == kWalks) break;
     const int across = neighbour_[t][(lowest + 1) % 3];  // the edge opposite the lowest weight
     if (across < 0) break;
     t = static_cast<size_t>(across);
@@ -192,10 +206,7 @@ void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, Surfac
   const std::array<Vec3, 3> v = corners(t);
   const Vec3 n = P.t1.cross(P.t2).normalized();
   const Vec3& nf = face_normal_[t];
-  if (!(n.dot(nf) > 0.0)) {  // a patch folded over its facet: keep the facet
-    hit = flat_hit;
-    return;
-  }
+  if (!(n.dot(nf) > 0.0)) return Foot::folded;
   // Where the line x + tau n meets the facet's plane, and its barycentric weights.
   const Vec3 q = x + (v[0] - x).dot(nf) / n.dot(nf) * n;
   const Vec3 e1 = v[1] - v[0], e2 = v[2] - v[0], w = q - v[0];
@@ -208,6 +219,8 @@ void CurvedSurface::evaluate(const Vec3& x, const SurfacePoint& flat_hit, Surfac
   hit.normal = n;
   hit.triangle = static_cast<int>(t);
   hit.weights = {1.0 - w1 - w2, w1, w2};
+  if (foot_weights) *foot_weights = {b1, b2};
+  return inside ? Foot::on_patch : Foot::off_patch;
 }
 
 }  // namespace ccm

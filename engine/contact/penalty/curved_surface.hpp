@@ -57,13 +57,24 @@ class CurvedSurface {
   // point where the line through x along that normal meets the facet's plane, with its
   // (unclamped) barycentric weights: a force along n at x and its opposite there act along one
   // line. A flat facet returns flat_hit.
-  void evaluate(const Vec3& x, const SurfacePoint& flat_hit, SurfacePoint& hit) const;
+  // `foot_weights` (optional): the foot's weights b_1, b_2 on hit.triangle.
+  void evaluate(const Vec3& x, const SurfacePoint& flat_hit, SurfacePoint& hit,
+                std::array<double, 2>* foot_weights = nullptr) const;
+
+  // NG.3 and NG.5 from a known foot (triangle, weights b_1, b_2): a point's foot of the step
+  // before, tracked. False when the foot does not end on a curved patch within the walks (then
+  // search with evaluate()); else `hit` and `foot_weights` as evaluate() fills them.
+  bool track(const Vec3& x, int triangle, std::array<double, 2> from, SurfacePoint& hit,
+             std::array<double, 2>& foot_weights) const;
 
   struct PatchPoint {
     Vec3 x, t1, t2;  // NG.1 and its derivatives along b_1, b_2
   };
 
  private:
+  enum class Foot { on_patch, off_patch, folded };
+  Foot walk(const Vec3& x, size_t t, double b1, double b2, SurfacePoint& hit,
+            std::array<double, 2>* foot_weights) const;
   void foot(size_t t, const Vec3& x, double& b1, double& b2, PatchPoint& P) const;
   std::array<Vec3, 3> corners(size_t t) const;
   std::array<double, 3> projected_inside(size_t t, const Vec3& x) const;

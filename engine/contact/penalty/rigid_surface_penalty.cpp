@@ -78,6 +78,7 @@ RigidSurfacePenalty::RigidSurfacePenalty(const ModelMesh& mesh, std::vector<Tria
   hint_.assign(3 * tris_.size(), -1);
   lens_hint_.assign(3 * tris_.size(), -1);
   clear_.assign(3 * tris_.size(), Clearance{});
+  foot_.assign(3 * tris_.size(), Foot{});
   evaluated_.assign(3 * tris_.size(), Evaluated{});
   for (size_t i = 0; i < nodes_.size(); ++i)
     if (!rigid_node_[i]) deformable_local_.push_back(static_cast<int>(i));
@@ -211,24 +212,32 @@ void RigidSurfacePenalty::add_forces(State& s) {
       evaluated_[point].valid = false;
       if ((X - clear_[point].at).squaredNorm() < clear_[point].radius * clear_[point].radius)
         continue;  // CL.1
-      flat.depth = 0.0;
-      const SurfaceDistance::Side side =
-          distance_.query(X, flat, &hint_[point], reach_ > 0.0, &lens_hint_[point]);
-      if (side == SurfaceDistance::Side::outside) {
-        remember_clearance(point, X, flat);
-        if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true};  // minus its clearance
-        continue;
+      if (!tracked(point, X, hit)) {
+        flat.depth = 0.0;
+        const SurfaceDistance::Side side =
+            distance_.query(X, flat, &hint_[point], reach_ > 0.0, &lens_hint_[point]);
+        if (side == SurfaceDistance::Side::outside) {
+          remember_clearance(point, X, flat);
+          if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true};  // minus its clearance
+          // Tracked from its nearest curved facet's centre from now on: the patch there cannot
+          // reach it while its clearance lasts, and shows its approach after.
+          const bool curved = flat.depth < 0.0 && !smooth_.flat(flat.triangle);
+          foot_[point] = {curved ? flat.triangle : -1, {1.0 / 3.0, 1.0 / 3.0}};
+          continue;
+        }
+        if (side == SurfaceDistance::Side::deep) {
+          clear_[point].radius = 0.0;
+          if (failure_.empty())
+            failure_ = fmt::format(
+                "a point of the deformable surface is deeper than {:.3g} m inside the rigid body "
+                "(the penalty K_P is too soft for this impact)",
+                distance_.deep_depth());
+          continue;
+        }
+        smooth_.evaluate(X, flat, hit, &foot_[point].weights);  // NG.3
+        foot_[point].triangle = hit.triangle;
       }
       clear_[point].radius = 0.0;
-      if (side == SurfaceDistance::Side::deep) {
-        if (failure_.empty())
-          failure_ = fmt::format(
-              "a point of the deformable surface is deeper than {:.3g} m inside the rigid body "
-              "(the penalty K_P is too soft for this impact)",
-              distance_.deep_depth());
-        continue;
-      }
-      smooth_.evaluate(X, flat, hit);  // NG.3
       evaluated_[point] = {X, hit.depth, true};
       if (!(hit.depth > 0.0)) {
         // Below a lift but above its patch: half its height above the patch as its clearance
@@ -289,6 +298,22 @@ void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
   ledger_ = {.work = work_, .injected_energy = 0.0, .touching = n_active_ > 0, .failure = failure_};
 }
 
+// A point evaluated the step before on the curved surface: its foot there, tracked across the
+// patches (NG.5) instead of a search (the same foot where it is unique; a search when the foot
+// leaves the curved patches or the point is deeper than a search would accept).
+bool RigidSurfacePenalty::tracked(size_t point, const Vec3& X, SurfacePoint& hit) {
+  Foot& f = foot_[point];
+  if (reach_ == 0.0 || f.triangle < 0) return false;
+  std::array<double, 2> weights{};
+  if (!smooth_.track(X, f.triangle, f.weights, hit, weights) ||
+      !(hit.depth <= distance_.deep_depth())) {
+    f.triangle = -1;
+    return false;
+  }
+  f = {hit.triangle, weights};
+  return true;
+}
+
 // CL.2 (add_forces): a point evaluated above a patch by h keeps h / 2 as its clearance.
 // CL.1: a point found outside with clearance g (LC.1, surface_distance.hpp: no point of the
 // surface or of its allowances nearer) stays outside while it moves by less than g in the body's
@@ -303,10 +328,10 @@ void RigidSurfacePenalty::remember_clearance(size_t point, const Vec3& X,
 }
 
 // A lower bound of how far point `point` (x, body frame) lies outside the surface, <= 0 inside it:
-// from its last evaluation or its clearance (CL.1, CL.2) when either is at hand (the body has moved
-// since by a step: a clearance is 1-Lipschitz, the patch depth to first order in the move, held
-// to a tenth of a cell); else infinity when its cells show it farther than `beyond` (DS.2), else
-// by a query (LC.1, NG.3).
+// from its last evaluation, its clearance (CL.1, CL.2) or its tracked foot when one is at hand (the
+// body has moved since by a step: a clearance is 1-Lipschitz, the patch depth to first order in the
+// move, held to a tenth of a cell); else infinity when its cells show it farther than `beyond`
+// (DS.2), else by a query (LC.1, NG.3).
 double RigidSurfacePenalty::gap_of(size_t point, const Vec3& x, double beyond) const {
   const Evaluated& e = evaluated_[point];
   if (e.valid) {
@@ -316,6 +341,12 @@ double RigidSurfacePenalty::gap_of(size_t point, const Vec3& x, double beyond) c
   const Clearance& c = clear_[point];
   const double remaining = c.radius - (x - c.at).norm();
   if (c.radius > 0.0 && remaining >= 0.0) return remaining;
+  const Foot& f = foot_[point];
+  if (reach_ > 0.0 && f.triangle >= 0) {  // its foot tracked (NG.5)
+    SurfacePoint hit;
+    std::array<double, 2> weights{};
+    if (smooth_.track(x, f.triangle, f.weights, hit, weights)) return -hit.depth;
+  }
   if (!distance_.inside_or_within(x, beyond)) return std::numeric_limits<double>::infinity();
   SurfacePoint flat, hit;
   flat.depth = 0.0;

@@ -110,6 +110,14 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
     double radius = 0.0;
   };
   std::vector<Clearance> clear_;
+  // Per quadrature point, its foot on the curved surface at its last evaluation (triangle -1:
+  // none), where the next starts.
+  struct Foot {
+    int triangle = -1;
+    std::array<double, 2> weights{};
+  };
+  std::vector<Foot> foot_;
+  bool tracked(size_t point, const Vec3& X, SurfacePoint& hit);
   // Per quadrature point, where add_forces() last evaluated it (body frame) and its depth there
   // (NG.3; outside, minus its clearance): the step bound that follows, at the same positions,
   // reads it.

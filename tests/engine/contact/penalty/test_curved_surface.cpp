@@ -125,3 +125,40 @@ TEST_CASE("smoothed surface: a point within its clearance stays outside",
   }
   CHECK(cleared > 300);
 }
+
+// NG.5: a point's foot tracked from where it was a small move before gives the depth a fresh
+// search gives (the same foot on the same patches, to the Gauss-Newton's convergence: 1e-9 of R),
+// on a coarse sphere whose feet cross facet edges.
+TEST_CASE("smoothed surface: a tracked foot gives the searched depth",
+          "[rigid-body][penalty][phong]") {
+  const TetMesh ball = test::gmsh_sphere(1.0, 0.3, Vec3::Zero());
+  SurfaceDistance d(ball.nodes, extract_boundary(ball.tets));
+  const CurvedSurface smooth(d.vertices(), d.triangles(), 45.0);
+  d.set_allowance(smooth.allowances());
+  std::mt19937 rng(9);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u(-0.02, 0.02);
+  int tracked = 0, moved_across = 0, other_side = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 x0 = Vec3(g(rng), g(rng), g(rng)).normalized() * (1.0 + u(rng));
+    SurfacePoint flat, hit;
+    if (d.query(x0, flat, nullptr, true) == SurfaceDistance::Side::outside) continue;
+    std::array<double, 2> foot{};
+    smooth.evaluate(x0, flat, hit, &foot);
+    const Vec3 x1 = x0 + Vec3(u(rng), u(rng), u(rng));  // up to 3.5 cm: a tenth of an edge
+    SurfacePoint flat1, fresh, again;
+    if (d.query(x1, flat1, nullptr, true) == SurfaceDistance::Side::outside) continue;
+    smooth.evaluate(x1, flat1, fresh);
+    std::array<double, 2> foot1{};
+    if (!smooth.track(x1, hit.triangle, foot, again, foot1)) continue;
+    ++tracked;
+    if (again.triangle != hit.triangle) ++moved_across;
+    CHECK(std::abs(again.depth - fresh.depth) < 1e-9);
+    // The patches meet along edges but their normals need not (NG.1 is C0): a foot on an edge
+    // may be found from either side.
+    if ((again.normal - fresh.normal).norm() > 1e-6) ++other_side;
+  }
+  CHECK(tracked > 1000);
+  CHECK(other_side < tracked / 20);
+  CHECK(moved_across > 50);
+}
