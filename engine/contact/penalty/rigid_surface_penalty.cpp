@@ -401,11 +401,11 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
       if (m > 0.0) omega2 = std::max(omega2, K * triangles_at_[local] / m);
     }
   };
+  // A pinned body answers by turning: its springs at up to `lever` from the axis load 1/J r^2.
+  const double turning =
+      r->inverse_mass == 0.0 && r->mobile() ? pin_lever(s, *r) * r->inverse_inertia.norm() : 0.0;
   auto limit = [&] {
-    double w2 = omega2 + K * near * r->inverse_mass;
-    // A pinned body answers by turning: its springs at up to `lever` from the axis load 1/J r^2.
-    if (r->inverse_mass == 0.0 && r->mobile())
-      w2 += K * near * pin_lever(s, *r) * r->inverse_inertia.norm();
+    const double w2 = omega2 + K * near * (r->inverse_mass + turning);
     return 2.0 / std::sqrt(w2) * damping_factor_;
   };
   for (const auto& [gap, t] : gaps_)

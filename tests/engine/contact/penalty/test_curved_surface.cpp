@@ -19,6 +19,20 @@ using namespace ccm;
 
 namespace {
 
+// A sphere (radius R, centre 0) meshed by Gmsh at `edge`, its distance grid with the curved
+// surface's lifts.
+struct CurvedSphere {
+  explicit CurvedSphere(double edge, double R = 1.0)
+      : ball(test::gmsh_sphere(R, edge, Vec3::Zero())),
+        distance(ball.nodes, extract_boundary(ball.tets)),
+        curved(distance.vertices(), distance.triangles(), 45.0) {
+    distance.set_allowance(curved.allowances());
+  }
+  TetMesh ball;
+  SurfaceDistance distance;
+  CurvedSurface curved;
+};
+
 struct Depths {
   double flat_error = 0.0, smooth_error = 0.0;  // largest |depth - (R - |x|)|
   double outside_error = 0.0;   // largest R - |x| of a point found outside every allowance
@@ -28,11 +42,9 @@ struct Depths {
 // Points within `shell` of a sphere of radius R (inside and out), their depth below the flat
 // facets and below the smoothed surface against R - |x|.
 Depths sphere_depths(double R, double edge, double shell, int samples) {
-  const TetMesh ball = test::gmsh_sphere(R, edge, Vec3::Zero());
-  const auto triangles = extract_boundary(ball.tets);
-  SurfaceDistance d(ball.nodes, triangles);
-  const CurvedSurface smooth(d.vertices(), d.triangles(), 45.0);
-  d.set_allowance(smooth.allowances());
+  const CurvedSphere sphere(edge, R);
+  const SurfaceDistance& d = sphere.distance;
+  const CurvedSurface& smooth = sphere.curved;
   std::mt19937 rng(5);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> u(-shell, shell);
@@ -102,10 +114,8 @@ TEST_CASE("smoothed surface: a box keeps its flat faces and sharp edges",
 // sphere and random moves up to the clearance, in every direction.
 TEST_CASE("smoothed surface: a point within its clearance stays outside",
           "[rigid-body][penalty][phong]") {
-  const TetMesh ball = test::gmsh_sphere(1.0, 0.3, Vec3::Zero());
-  SurfaceDistance d(ball.nodes, extract_boundary(ball.tets));
-  const CurvedSurface smooth(d.vertices(), d.triangles(), 45.0);
-  d.set_allowance(smooth.allowances());
+  const CurvedSphere sphere(0.3);
+  const SurfaceDistance& d = sphere.distance;
   std::mt19937 rng(3);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -131,10 +141,9 @@ TEST_CASE("smoothed surface: a point within its clearance stays outside",
 // on a coarse sphere whose feet cross facet edges.
 TEST_CASE("smoothed surface: a tracked foot gives the searched depth",
           "[rigid-body][penalty][phong]") {
-  const TetMesh ball = test::gmsh_sphere(1.0, 0.3, Vec3::Zero());
-  SurfaceDistance d(ball.nodes, extract_boundary(ball.tets));
-  const CurvedSurface smooth(d.vertices(), d.triangles(), 45.0);
-  d.set_allowance(smooth.allowances());
+  const CurvedSphere sphere(0.3);
+  const SurfaceDistance& d = sphere.distance;
+  const CurvedSurface& smooth = sphere.curved;
   std::mt19937 rng(9);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> u(-0.02, 0.02);
