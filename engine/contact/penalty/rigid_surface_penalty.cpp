@@ -209,7 +209,6 @@ void RigidSurfacePenalty::add_forces(State& s) {
       SurfacePoint flat, hit;
       const Vec3 X = frame.to_reference(x);
       const size_t point = 3 * t + static_cast<size_t>(k);
-      evaluated_[point].valid = false;
       if ((X - clear_[point].at).squaredNorm() < clear_[point].radius * clear_[point].radius)
         continue;  // CL.1
       if (!tracked(point, X, hit)) {
@@ -218,7 +217,8 @@ void RigidSurfacePenalty::add_forces(State& s) {
             distance_.query(X, flat, &hint_[point], reach_ > 0.0, &lens_hint_[point]);
         if (side == SurfaceDistance::Side::outside) {
           remember_clearance(point, X, flat);
-          if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true};  // minus its clearance
+          // Minus its clearance: its distance itself on flat facets, a lens bound (LC.1) on curved.
+          if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true, reach_ == 0.0};
           // Tracked from its nearest curved facet's centre from now on: the patch there cannot
           // reach it while its clearance lasts, and shows its approach after.
           const bool curved = flat.depth < 0.0 && !smooth_.flat(flat.triangle);
@@ -227,6 +227,7 @@ void RigidSurfacePenalty::add_forces(State& s) {
         }
         if (side == SurfaceDistance::Side::deep) {
           clear_[point].radius = 0.0;
+          evaluated_[point].valid = false;
           if (failure_.empty())
             failure_ = fmt::format(
                 "a point of the deformable surface is deeper than {:.3g} m inside the rigid body "
@@ -238,7 +239,7 @@ void RigidSurfacePenalty::add_forces(State& s) {
         foot_[point].triangle = hit.triangle;
       }
       clear_[point].radius = 0.0;
-      evaluated_[point] = {X, hit.depth, true};
+      evaluated_[point] = {X, hit.depth, true, true};
       if (!(hit.depth > 0.0)) {
         // Below a lift but above its patch: half its height above the patch as its clearance
         // (CL.2: NG.3's depth is the distance to the patch to first order).
@@ -327,22 +328,46 @@ void RigidSurfacePenalty::remember_clearance(size_t point, const Vec3& X,
   clear_[point] = {X, std::max(clearance - rounding_margin(), 0.0)};
 }
 
-// A lower bound of how far point `point` (x, body frame) lies outside the surface, <= 0 inside it:
-// from its last evaluation, its clearance (CL.1, CL.2) or its tracked foot when one is at hand (the
-// body has moved since by a step: a clearance is 1-Lipschitz, the patch depth to first order in the
-// move, held to a tenth of a cell); else infinity when its cells show it farther than `beyond`
-// (DS.2), else by a query (LC.1, NG.3).
-double RigidSurfacePenalty::gap_of(size_t point, const Vec3& x, double beyond) const {
+// A lower bound of how far point `point` (x, body frame) lies outside the surface, <= 0 inside
+// it, the cheap way: from its last evaluation (the body has moved since by a step: the depth is
+// 1-Lipschitz to first order, held to a tenth of a cell) or its clearance (CL.1, CL.2, also
+// 1-Lipschitz) or, outside the body's bounding sphere, its distance `from_center` (of the body's
+// centre) less the sphere's radius. `loose`: the bound is one of these, not the gap itself, and
+// sharp_gap() can raise it. Without any, sharp_gap().
+double RigidSurfacePenalty::gap_bound(size_t point, const Vec3& x, double from_center,
+                                      double beyond, bool& loose) const {
   const Evaluated& e = evaluated_[point];
   if (e.valid) {
     const double moved = (x - e.at).norm();
-    if (moved <= 0.1 * distance_.cell_size()) return -e.depth - moved - rounding_margin();
+    if (moved <= 0.1 * distance_.cell_size()) {
+      // (Outside and moved by half its gap since: look again.)
+      loose = !e.exact || (e.depth < 0.0 && moved > -0.5 * e.depth);
+      return -e.depth - moved - rounding_margin();
+    }
   }
   const Clearance& c = clear_[point];
   const double remaining = c.radius - (x - c.at).norm();
-  if (c.radius > 0.0 && remaining >= 0.0) return remaining;
+  if (c.radius > 0.0 && remaining >= 0.0) {
+    loose = true;
+    return remaining;
+  }
+  // Outside the body's bounding sphere (about its centre of mass, the lifts within): by the
+  // distance to it.
+  const double outside = from_center - std::sqrt(bound2_);
+  loose = outside > 0.0;
+  bool exact = false;
+  return loose ? outside : sharp_gap(point, x, beyond, exact);
+}
+
+// How far point `point` (x, body frame) lies outside the surface, <= 0 inside it: by its tracked
+// foot when it has one (NG.5), else infinity when its cells show it farther than `beyond` (DS.2),
+// else by a query (exact on flat facets; on curved ones NG.3 near the surface and the lens bound
+// LC.1 beyond the lifts). `exact`: the gap itself (NG.3 to first order), not a lower bound.
+double RigidSurfacePenalty::sharp_gap(size_t point, const Vec3& x, double beyond,
+                                      bool& exact) const {
+  exact = true;
   const Foot& f = foot_[point];
-  if (reach_ > 0.0 && f.triangle >= 0) {  // its foot tracked (NG.5)
+  if (reach_ > 0.0 && f.triangle >= 0) {
     SurfacePoint hit;
     std::array<double, 2> weights{};
     if (smooth_.track(x, f.triangle, f.weights, hit, weights)) return -hit.depth;
@@ -352,15 +377,31 @@ double RigidSurfacePenalty::gap_of(size_t point, const Vec3& x, double beyond) c
   flat.depth = 0.0;
   int hint = hint_[point], lens_hint = lens_hint_[point];
   const auto side = distance_.query(x, flat, &hint, reach_ > 0.0, &lens_hint);
-  if (side == SurfaceDistance::Side::outside)  // cells alone: a clearance above one cell
+  if (side == SurfaceDistance::Side::outside) {  // cells alone: a clearance above one cell
+    exact = flat.depth < 0.0 && reach_ == 0.0;
     return flat.depth < 0.0 ? -flat.depth : (reach_ > 0.0 ? distance_.cell_size() : 0.0);
+  }
   smooth_.evaluate(x, flat, hit);
   return -hit.depth;
 }
 
+// Point `point`'s place in the body's frame from its nodes' (candidates() filled them; the map is
+// affine).
+Vec3 RigidSurfacePenalty::reference_point(size_t point) const {
+  const size_t t = point / 3;
+  const auto N = surface_point_weights(static_cast<int>(point % 3));
+  Vec3 x = Vec3::Zero();
+  for (int a = 0; a < 3; ++a)
+    x += N[static_cast<size_t>(a)] *
+         x_ref_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
+  return x;
+}
+
 // The springs that act within the step load their nodes (kappa_a / m_a) and the body (n K_P / m):
 // omega^2 from the points inside the surface first; then those that can reach it within the step
-// that limit allows (twice the fastest approach times it) join, which can only shorten it.
+// that limit allows (twice the fastest approach times it) join, which can only shorten it. Each
+// point's gap starts as its cheap bound (gap_bound); a loose one is looked at closely
+// (sharp_gap) only when the point would otherwise join.
 ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling) const {
   const RigidState* r = pose(s);
   if (!r) return {};
@@ -371,32 +412,14 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
     v_max = std::max(v_max, s.v[static_cast<size_t>(nodes_[static_cast<size_t>(i)])].norm());
   const double v_rel = v_max + r->velocity.norm() + r->angular_velocity.norm() * reach;
   const double travel = 2.0 * v_rel * std::min(ceiling, 1e300);  // safety factor 2
-  const double band = reach + travel;  // (the sphere includes the curved surface's reach_)
-  auto& self = const_cast<RigidSurfacePenalty&>(*this);  // the candidates and gaps are scratch
-  self.gaps_.clear();
-  const Frame frame(*r);
-  for (int candidate : self.candidates(s, frame, travel + reach_ + rounding_margin())) {
-    const auto t = static_cast<size_t>(candidate);
-    for (int k = 0; k < 3; ++k) {
-      // The point in the body's frame from its nodes' (the map is affine).
-      const auto N = surface_point_weights(k);
-      Vec3 x = Vec3::Zero();
-      for (int a = 0; a < 3; ++a)
-        x += N[static_cast<size_t>(a)] *
-             x_ref_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
-      if ((x - r->reference_center).norm() > band) continue;
-      const double gap = gap_of(3 * t + static_cast<size_t>(k), x, travel);
-      if (gap <= travel) self.gaps_.emplace_back(gap, static_cast<int>(t));
-    }
-  }
   const double K = params_.penalty;
   double omega2 = 0.0;
   int near = 0;
-  auto add = [&](int t) {
+  auto add = [&](size_t point) {
     ++near;
+    const size_t t = point / 3;
     for (int a = 0; a < 3; ++a) {
-      const auto local =
-          static_cast<size_t>(tri_local_[3 * static_cast<size_t>(t) + static_cast<size_t>(a)]);
+      const auto local = static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)]);
       const double m = s.m_lumped[static_cast<size_t>(nodes_[local])];
       if (m > 0.0) omega2 = std::max(omega2, K * triangles_at_[local] / m);
     }
@@ -408,29 +431,45 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
     const double w2 = omega2 + K * near * (r->inverse_mass + turning);
     return 2.0 / std::sqrt(w2) * damping_factor_;
   };
-  for (const auto& [gap, t] : gaps_)
-    if (gap <= 0.0) add(t);
+  auto& self = const_cast<RigidSurfacePenalty&>(*this);  // the candidates and gaps are scratch
+  for (size_t point : self.gather_gaps(s, *r, travel)) add(point);
   // Then the others in the order they can arrive (tau = gap / 2 v_rel, the safety factor 2), each
   // while it can arrive within the step the springs so far allow; one that would cut the step
   // below its own arrival ends the step there instead (the sphere's rule,
-  // rigid_sphere_penalty.cpp).
+  // rigid_sphere_penalty.cpp). A loose gap first goes back with its sharp value.
   const double infinite = std::numeric_limits<double>::infinity();
   double L = near > 0 ? limit() : infinite, kinematic = infinite;
   // The approaching points from a min-heap of their gaps (most never leave it).
+  // (Only those that can arrive within the step the points inside allow: it only falls.)
   auto& heap = self.gaps_;
-  heap.erase(std::remove_if(heap.begin(), heap.end(), [](const auto& g) { return g.first <= 0.0; }),
-             heap.end());
-  const auto farther = std::greater<std::pair<double, int>>();
+  const double horizon = 2.0 * v_rel * L;
+  heap.erase(
+      std::remove_if(heap.begin(), heap.end(), [&](const Gap& g) { return !(g.gap < horizon); }),
+      heap.end());
+  const auto farther = [](const Gap& a, const Gap& b) {
+    return a.gap > b.gap || (a.gap == b.gap && a.point > b.point);
+  };
   std::make_heap(heap.begin(), heap.end(), farther);
   while (!heap.empty()) {
-    const auto [gap, t] = heap.front();
-    const double tau = v_rel > 0.0 ? gap / (2.0 * v_rel) : infinite;
+    const double tau = v_rel > 0.0 ? heap.front().gap / (2.0 * v_rel) : infinite;
     if (tau >= L) break;
     std::pop_heap(heap.begin(), heap.end(), farther);
+    Gap g = heap.back();
     heap.pop_back();
+    if (g.loose) {
+      self.sharpen(g, travel);
+      if (g.gap > 0.0 && g.gap <= travel) {
+        heap.push_back(g);
+        std::push_heap(heap.begin(), heap.end(), farther);
+      } else if (g.gap <= 0.0) {
+        add(g.point);  // inside after all: it counts, as those above
+        L = limit();
+      }
+      continue;
+    }
     const int before = near;
     const double omega2_before = omega2;
-    add(t);
+    add(g.point);
     const double L_with = limit();
     if (L_with <= tau) {  // the step ends before this point can arrive
       near = before;
@@ -445,6 +484,43 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   if (v_rel > 0.0) b.kinematic_dt = std::min(kinematic, 0.5 * distance_.deep_depth() / v_rel);
   if (near == 0 && !std::isfinite(kinematic)) return {};
   return b;
+}
+
+// The step bound's points (x in the body's frame) within the body's bounding sphere grown by
+// `travel`: those inside the surface are returned (the scratch inside_), those outside by no more
+// than `travel` go to gaps_ with their cheap bounds (gap_bound). A loose bound at or below zero is
+// sharpened at once.
+const std::vector<size_t>& RigidSurfacePenalty::gather_gaps(const State& s, const RigidState& r,
+                                                            double travel) {
+  inside_.clear();
+  gaps_.clear();
+  const double band = std::sqrt(bound2_) + travel;  // (the sphere holds the curved reach_)
+  const Frame frame(r);
+  for (int candidate : candidates(s, frame, travel + reach_ + rounding_margin()))
+    for (size_t point = 3 * static_cast<size_t>(candidate), k = 0; k < 3; ++k, ++point) {
+      const Vec3 x = reference_point(point);
+      const double from_center = (x - r.reference_center).norm();
+      if (from_center > band) continue;
+      Gap g{0.0, point, false};
+      g.gap = gap_bound(point, x, from_center, travel, g.loose);
+      if (g.loose && g.gap <= 0.0) sharpen(g, travel);
+      if (g.gap <= 0.0)
+        inside_.push_back(point);
+      else if (g.gap <= travel)
+        gaps_.push_back(g);
+    }
+  return inside_;
+}
+
+// A loose gap's sharp value (sharp_gap), kept as the point's evaluation: gap_bound() reads it
+// while the point stays within a tenth of a cell, so the next steps need not look again.
+void RigidSurfacePenalty::sharpen(Gap& g, double travel) {
+  const Vec3 x = reference_point(g.point);
+  bool exact = false;
+  const double sharp = sharp_gap(g.point, x, travel, exact);
+  if (std::isfinite(sharp)) evaluated_[g.point] = {x, -sharp, true, exact};
+  g.gap = std::max(g.gap, sharp);
+  g.loose = false;
 }
 
 // The farthest rigid node from a pinned body's axis point, squared [m^2].

@@ -84,7 +84,10 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   };
   const std::vector<int>& candidates(const State& s, const Frame& frame, double margin);
   double rounding_margin() const;
-  double gap_of(size_t point, const Vec3& x, double beyond) const;
+  double gap_bound(size_t point, const Vec3& x, double from_center, double beyond,
+                   bool& loose) const;
+  double sharp_gap(size_t point, const Vec3& x, double beyond, bool& exact) const;
+  Vec3 reference_point(size_t point) const;
   double pin_lever(const State& s, const RigidState& r) const;
   void load_rigid(int triangle, const std::array<double, 3>& weights, const Vec3& f);
 
@@ -118,16 +121,25 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   };
   std::vector<Foot> foot_;
   bool tracked(size_t point, const Vec3& X, SurfacePoint& hit);
-  // Per quadrature point, where add_forces() last evaluated it (body frame) and its depth there
-  // (NG.3; outside, minus its clearance): the step bound that follows, at the same positions,
-  // reads it.
+  // Per quadrature point, where its depth was last evaluated (body frame; by add_forces(), or by
+  // the step bound's closer look) and the depth there (NG.3; outside, minus its clearance): a
+  // lower bound of its gap nearby that the step bound reads.
   struct Evaluated {
     Vec3 at = Vec3::Zero();
     double depth = 0.0;
     bool valid = false;
+    bool exact = false;  // its depth, not a looser lower bound (a clearance)
   };
   std::vector<Evaluated> evaluated_;
-  std::vector<std::pair<double, int>> gaps_;  // step_bound's scratch: (gap, triangle) per point
+  struct Gap {  // step_bound's scratch, per point near the body
+    double gap;
+    size_t point;
+    bool loose;  // a lower bound that sharp_gap() can raise
+  };
+  std::vector<Gap> gaps_;       // the points outside within reach of a step
+  std::vector<size_t> inside_;  // the points inside
+  const std::vector<size_t>& gather_gaps(const State& s, const RigidState& r, double travel);
+  void sharpen(Gap& g, double travel);
   void remember_clearance(size_t point, const Vec3& X, const SurfacePoint& outside);
   std::vector<int> deformable_local_;        // the entries of nodes_ on the deformable surface
   std::vector<int> rigid_now_, rigid_prev_;  // rigid entries with a force, now and at the start

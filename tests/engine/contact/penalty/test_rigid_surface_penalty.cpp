@@ -310,6 +310,11 @@ TEST_CASE(
     CHECK(std::abs(m.u_max - a.u_max) < 0.25 * largest_sag);
     CHECK(l2 < 0.01);
   }
+  // The step bound counts a point as arriving by its gap, as the analytic sphere does: with the
+  // clearances' loose bounds taken as gaps the meshed runs took 1.25x (flat) and 1.07x (curved)
+  // the analytic run's steps; with a loose bound looked at closely before the point joins, 1.006x
+  // and 1.013x (7 December 2026). 5 %: the facets' own onsets differ from the sphere's.
+  CHECK(static_cast<double>(m.summary.steps) < 1.05 * static_cast<double>(a.summary.steps));
   // Momentum: the penalty's forces act in equal and opposite pairs (round-off, 1e-9).
   CHECK((m.momentum_end - m.momentum_0).norm() < 1e-9 * m.momentum_0.norm());
 }
