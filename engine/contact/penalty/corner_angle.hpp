@@ -1,5 +1,5 @@
 // The angle of a triangle at one corner: the weight of a face's normal in an angle-weighted
-// vertex normal (Baerentzen & Aanaes 2005; surface_distance.hpp, phong_surface.hpp).
+// pseudo-normal (Baerentzen & Aanaes 2005; surface_distance.hpp).
 #pragma once
 
 #include <Eigen/Geometry>

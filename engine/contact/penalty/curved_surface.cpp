@@ -9,8 +9,6 @@
 #include <string>
 #include <utility>
 
-#include "engine/contact/penalty/corner_angle.hpp"
-
 namespace ccm {
 namespace {
 
@@ -26,6 +24,12 @@ struct CornerGroups {
   void join(int a, int b) { parent[static_cast<size_t>(root(a))] = root(b); }
   std::vector<int> parent;
 };
+
+// A face's weight in its corner's normal (NG.0): sin(angle) / (|p - corner| |q - corner|).
+double max_weight(const Vec3& corner, const Vec3& p, const Vec3& q) {
+  const Vec3 u = p - corner, v = q - corner;
+  return u.cross(v).norm() / (u.squaredNorm() * v.squaredNorm());
+}
 
 // NG.2 for the edge from a (normal na) to b (normal nb). Zero where the normals agree to 1e-12
 // (a straight edge) or are opposite.
@@ -99,12 +103,12 @@ CurvedSurface::CurvedSurface(const std::vector<Vec3>& vertices,
       continue;
     for (int v : {edge.first, edge.second}) groups.join(corner(t1, v), corner(t2, v));
   }
-  // Corner normals: angle-weighted sums of face normals per group.
+  // Corner normals: sums of face normals per group with Max's weights (NG.0).
   std::vector<Vec3> sum(3 * n, Vec3::Zero());
   for (size_t t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k)
       sum[static_cast<size_t>(groups.root(static_cast<int>(3 * t) + k))] +=
-          corner_angle(vertex(t, k), vertex(t, (k + 1) % 3), vertex(t, (k + 2) % 3)) *
+          max_weight(vertex(t, k), vertex(t, (k + 1) % 3), vertex(t, (k + 2) % 3)) *
           face_normal_[t];
   edge_c_.resize(n);
   flat_.assign(n, 1);

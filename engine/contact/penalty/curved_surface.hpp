@@ -4,7 +4,14 @@
 //
 // Corner normals: the triangles around a vertex fall into smoothing groups, joined across every
 // edge whose two faces' normals differ by no more than the crease angle; a corner's normal is the
-// angle-weighted mean of its group's face normals. Each triangle (v_0, v_1, v_2) becomes a
+// normalised sum of its group's face normals n_f, each weighted by Max's weight
+//   n = normalise(sum_f sin(a_f) / (|e_f1| |e_f2|) n_f)                                   (NG.0)
+// (a_f the face's angle at the corner, e_f1, e_f2 its edges there; N. Max, Journal of Graphics
+// Tools 4(2), 1999): exact when the vertex and its neighbours lie on a sphere, whatever the
+// triangles' sizes and shapes. Angle weights are not: on the grid's graded impactor their normals
+// tilted the patches enough to move the artifact's final kinetic energy by 2.6 % (point 6 of the
+// default grid, mean of dt_safety 0.6-0.9; -0.6 % with the exact normals). Each triangle
+// (v_0, v_1, v_2) becomes a
 // quadratic Nagata patch (T. Nagata, Computer Aided Geometric Design 22(4), 2005, eq. 7 and 13):
 // over barycentric weights b,
 //   x(b) = sum_i b_i v_i - c_01 b_0 b_1 - c_12 b_1 b_2 - c_20 b_2 b_0                     (NG.1)

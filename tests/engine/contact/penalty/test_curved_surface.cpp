@@ -94,6 +94,28 @@ TEST_CASE("smoothed surface: a coarse meshed sphere's depth against R - |x|",
   }
 }
 
+// NG.0: Max's weights give the exact normal at a vertex whose neighbours lie on one sphere with
+// it, whatever the triangles' shapes (angle weights missed by up to 0.2 rad on this mesh). Just
+// outside each vertex of the coarse meshed sphere, the smoothed surface's normal is the radius's
+// direction, and the depth R - |x|, to round-off.
+TEST_CASE("smoothed surface: a meshed sphere's corner normals are its radii",
+          "[rigid-body][penalty][phong]") {
+  const CurvedSphere sphere(0.4);
+  double normal_error = 0.0, depth_error = 0.0;
+  for (const Triangle& t : sphere.distance.triangles()) {
+    const Vec3& v = sphere.distance.vertices()[static_cast<size_t>(t[0])];
+    const Vec3 x = 1.001 * v;
+    SurfacePoint flat, hit;
+    REQUIRE(sphere.distance.query(x, flat, nullptr, true) != SurfaceDistance::Side::outside);
+    sphere.curved.evaluate(x, flat, hit);
+    normal_error = std::max(normal_error, (hit.normal - v.normalized()).norm());
+    depth_error = std::max(depth_error, std::abs(hit.depth - (v.norm() - x.norm())));
+  }
+  INFO("largest normal error " << normal_error << ", depth error " << depth_error);
+  CHECK(normal_error < 1e-9);
+  CHECK(depth_error < 1e-9);
+}
+
 TEST_CASE("smoothed surface: a box keeps its flat faces and sharp edges",
           "[rigid-body][penalty][phong]") {
   const TetMesh box = structured_box(Vec3(0.2, 0.3, 0.4), 4, 6, 8);
