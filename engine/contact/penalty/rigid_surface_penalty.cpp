@@ -182,7 +182,8 @@ double RigidSurfacePenalty::rounding_margin() const {
 }
 
 // PS.1 at every quadrature point of the deformable surface (those of candidate triangles: the
-// others are outside the body).
+// others are outside the body). Each point's gap bound goes to near_ for the step bound that
+// follows (record_near).
 void RigidSurfacePenalty::add_forces(State& s) {
   const RigidState* r = pose(s);
   if (!r) throw std::logic_error("penalty: the rigid body has no state in this run");
@@ -194,81 +195,116 @@ void RigidSurfacePenalty::add_forces(State& s) {
   }
   rigid_now_.clear();
   n_active_ = 0;
-  const double K = params_.penalty;
+  near_.clear();
+  near_of_ = {&s, s.t, near_margin_};
+  const double radius = std::sqrt(bound2_);
   const Frame frame(*r);
-  for (int candidate : candidates(s, frame, reach_ + rounding_margin())) {
+  for (int candidate : candidates(s, frame, reach_ + near_margin_ + rounding_margin())) {
     const auto t = static_cast<size_t>(candidate);
     const Triangle& T = tris_[t];
     for (int k = 0; k < 3; ++k) {
+      const size_t point = 3 * t + static_cast<size_t>(k);
       const auto N = surface_point_weights(k);
       Vec3 x = Vec3::Zero();
       for (int a = 0; a < 3; ++a)
         x += N[static_cast<size_t>(a)] * s.x[static_cast<size_t>(T[static_cast<size_t>(a)])];
       // Beyond the body's bounding sphere a point is outside: no query.
-      if ((x - r->center).squaredNorm() > bound2_) continue;
-      SurfacePoint flat, hit;
-      const Vec3 X = frame.to_reference(x);
-      const size_t point = 3 * t + static_cast<size_t>(k);
-      if ((X - clear_[point].at).squaredNorm() < clear_[point].radius * clear_[point].radius)
-        continue;  // CL.1
-      if (!tracked(point, X, hit)) {
-        flat.depth = 0.0;
-        const SurfaceDistance::Side side =
-            distance_.query(X, flat, &hint_[point], reach_ > 0.0, &lens_hint_[point]);
-        if (side == SurfaceDistance::Side::outside) {
-          remember_clearance(point, X, flat);
-          // Minus its clearance: its distance itself on flat facets, a lens bound (LC.1) on curved.
-          if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true, reach_ == 0.0};
-          // Tracked from its nearest curved facet's centre from now on: the patch there cannot
-          // reach it while its clearance lasts, and shows its approach after.
-          const bool curved = flat.depth < 0.0 && !smooth_.flat(flat.triangle);
-          foot_[point] = {curved ? flat.triangle : -1, {1.0 / 3.0, 1.0 / 3.0}};
-          continue;
-        }
-        if (side == SurfaceDistance::Side::deep) {
-          clear_[point].radius = 0.0;
-          evaluated_[point].valid = false;
-          if (failure_.empty())
-            failure_ = fmt::format(
-                "a point of the deformable surface is deeper than {:.3g} m inside the rigid body "
-                "(the penalty K_P is too soft for this impact)",
-                distance_.deep_depth());
-          continue;
-        }
-        smooth_.evaluate(X, flat, hit, &foot_[point].weights);  // NG.3
-        foot_[point].triangle = hit.triangle;
-      }
-      clear_[point].radius = 0.0;
-      evaluated_[point] = {X, hit.depth, true, true};
-      if (!(hit.depth > 0.0)) {
-        // Below a lift but above its patch: half its height above the patch as its clearance
-        // (CL.2: NG.3's depth is the distance to the patch to first order).
-        clear_[point] = {X, std::max(-0.5 * hit.depth - rounding_margin(), 0.0)};
+      const double d2 = (x - r->center).squaredNorm();
+      if (d2 > bound2_) {
+        const double outside = std::sqrt(d2) - radius;
+        if (outside <= near_margin_) near_.push_back({outside, point, true});
         continue;
       }
-      ++n_active_;
-      penetration_max_ = std::max(penetration_max_, hit.depth);
-      Vec3 v = Vec3::Zero();
-      double m = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        const auto i = static_cast<size_t>(T[static_cast<size_t>(a)]);
-        v += N[static_cast<size_t>(a)] * s.v[i];
-        m += N[static_cast<size_t>(a)] * s.m_lumped[i] /
-             triangles_at_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
+      const Vec3 X = frame.to_reference(x);
+      SurfacePoint hit;
+      if (locate(point, X, hit)) {
+        spring(s, *r, t, k, x, hit);
+        near_.push_back({-hit.depth, point, false});
+      } else {
+        record_near(point, X, std::sqrt(d2));
       }
-      const Vec3 n = r->rotation * hit.normal;
-      const double u_n = n.dot(v - (r->velocity + r->angular_velocity.cross(x - r->center)));
-      const double c = 2.0 * params_.damping * std::sqrt(K * m);
-      const Vec3 f = std::max(0.0, K * hit.depth - c * u_n) * n;
-      for (int a = 0; a < 3; ++a)
-        f_now_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])] +=
-            N[static_cast<size_t>(a)] * f;
-      load_rigid(hit.triangle, hit.weights, f);
     }
   }
   for (const auto* list : {&deformable_local_, &rigid_now_})
     for (int i : *list)
       s.f[static_cast<size_t>(nodes_[static_cast<size_t>(i)])] += f_now_[static_cast<size_t>(i)];
+}
+
+// Whether point `point` (X in the body's frame) is inside the surface, with its depth, normal and
+// reaction point in `hit` (NG.3); else its clearance and evaluation are kept (CL.1, CL.2).
+bool RigidSurfacePenalty::locate(size_t point, const Vec3& X, SurfacePoint& hit) {
+  if ((X - clear_[point].at).squaredNorm() < clear_[point].radius * clear_[point].radius)
+    return false;  // CL.1
+  if (!tracked(point, X, hit)) {
+    SurfacePoint flat;
+    flat.depth = 0.0;
+    const SurfaceDistance::Side side =
+        distance_.query(X, flat, &hint_[point], reach_ > 0.0, &lens_hint_[point]);
+    if (side == SurfaceDistance::Side::outside) {
+      remember_clearance(point, X, flat);
+      // Minus its clearance: its distance itself on flat facets, a lens bound (LC.1) on curved.
+      if (flat.depth < 0.0) evaluated_[point] = {X, flat.depth, true, reach_ == 0.0};
+      // Tracked from its nearest curved facet's centre from now on: the patch there cannot
+      // reach it while its clearance lasts, and shows its approach after.
+      const bool curved = flat.depth < 0.0 && !smooth_.flat(flat.triangle);
+      foot_[point] = {curved ? flat.triangle : -1, {1.0 / 3.0, 1.0 / 3.0}};
+      return false;
+    }
+    if (side == SurfaceDistance::Side::deep) {
+      clear_[point].radius = 0.0;
+      evaluated_[point] = {X, flat.depth, true, true};
+      if (failure_.empty())
+        failure_ = fmt::format(
+            "a point of the deformable surface is deeper than {:.3g} m inside the rigid body "
+            "(the penalty K_P is too soft for this impact)",
+            distance_.deep_depth());
+      return false;
+    }
+    smooth_.evaluate(X, flat, hit, &foot_[point].weights);  // NG.3
+    foot_[point].triangle = hit.triangle;
+  }
+  clear_[point].radius = 0.0;
+  evaluated_[point] = {X, hit.depth, true, true};
+  if (hit.depth > 0.0) return true;
+  // Below a lift but above its patch: half its height above the patch as its clearance (CL.2:
+  // NG.3's depth is the distance to the patch to first order).
+  clear_[point] = {X, std::max(-0.5 * hit.depth - rounding_margin(), 0.0)};
+  return false;
+}
+
+// PS.1 at point k of deformable triangle t (x in the world), inside by hit.depth: the spring and
+// dashpot's force on the triangle's nodes and its opposite on the rigid body.
+void RigidSurfacePenalty::spring(const State& s, const RigidState& r, size_t t, int k,
+                                 const Vec3& x, const SurfacePoint& hit) {
+  ++n_active_;
+  penetration_max_ = std::max(penetration_max_, hit.depth);
+  const auto N = surface_point_weights(k);
+  const Triangle& T = tris_[t];
+  Vec3 v = Vec3::Zero();
+  double m = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const auto i = static_cast<size_t>(T[static_cast<size_t>(a)]);
+    v += N[static_cast<size_t>(a)] * s.v[i];
+    m += N[static_cast<size_t>(a)] * s.m_lumped[i] /
+         triangles_at_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])];
+  }
+  const double K = params_.penalty;
+  const Vec3 n = r.rotation * hit.normal;
+  const double u_n = n.dot(v - (r.velocity + r.angular_velocity.cross(x - r.center)));
+  const double c = 2.0 * params_.damping * std::sqrt(K * m);
+  const Vec3 f = std::max(0.0, K * hit.depth - c * u_n) * n;
+  for (int a = 0; a < 3; ++a)
+    f_now_[static_cast<size_t>(tri_local_[3 * t + static_cast<size_t>(a)])] +=
+        N[static_cast<size_t>(a)] * f;
+  load_rigid(hit.triangle, hit.weights, f);
+}
+
+// A point found outside (X in the body's frame, from_center from the body's centre): its cheap gap
+// bound goes to near_ when it is within near_margin_.
+void RigidSurfacePenalty::record_near(size_t point, const Vec3& X, double from_center) {
+  Gap g{0.0, point, false};
+  g.gap = gap_bound(point, X, from_center, near_margin_, g.loose);
+  if (g.gap <= near_margin_) near_.push_back(g);
 }
 
 void RigidSurfacePenalty::end_step(const State& s, double /*dt*/) {
@@ -432,7 +468,11 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
     return 2.0 / std::sqrt(w2) * damping_factor_;
   };
   auto& self = const_cast<RigidSurfacePenalty&>(*this);  // the candidates and gaps are scratch
-  for (size_t point : self.gather_gaps(s, *r, travel)) add(point);
+  // The points add_forces() recorded at this state, when they are all that can join: every other
+  // point lies farther than the margin they were recorded to. Else all, afresh.
+  const bool recorded = near_of_.state == &s && near_of_.t == s.t;
+  const auto& inside = recorded ? self.sort_near(travel) : self.gather_gaps(s, *r, travel);
+  for (size_t point : inside) add(point);
   // Then the others in the order they can arrive (tau = gap / 2 v_rel, the safety factor 2), each
   // while it can arrive within the step the springs so far allow; one that would cut the step
   // below its own arrival ends the step there instead (the sphere's rule,
@@ -442,7 +482,16 @@ ContactStepBound RigidSurfacePenalty::step_bound(const State& s, double ceiling)
   // The approaching points from a min-heap of their gaps (most never leave it).
   // (Only those that can arrive within the step the points inside allow: it only falls.)
   auto& heap = self.gaps_;
-  const double horizon = 2.0 * v_rel * L;
+  double horizon = 2.0 * v_rel * L;
+  // The next add_forces() records to twice what this step needs.
+  self.near_margin_ = std::min(travel, 2.0 * horizon);
+  if (recorded && near_of_.margin < std::min(travel, horizon)) {
+    near = 0;  // the recorded points are not all that can join: all, afresh
+    omega2 = 0.0;
+    for (size_t point : self.gather_gaps(s, *r, travel)) add(point);
+    L = near > 0 ? limit() : infinite;
+    horizon = 2.0 * v_rel * L;
+  }
   heap.erase(
       std::remove_if(heap.begin(), heap.end(), [&](const Gap& g) { return !(g.gap < horizon); }),
       heap.end());
@@ -509,6 +558,22 @@ const std::vector<size_t>& RigidSurfacePenalty::gather_gaps(const State& s, cons
       else if (g.gap <= travel)
         gaps_.push_back(g);
     }
+  return inside_;
+}
+
+// The points add_forces() recorded (near_): those inside are returned (the scratch inside_), those
+// outside by no more than `travel` go to gaps_. A loose bound at or below zero is sharpened at
+// once.
+const std::vector<size_t>& RigidSurfacePenalty::sort_near(double travel) {
+  inside_.clear();
+  gaps_.clear();
+  for (Gap g : near_) {
+    if (g.loose && g.gap <= 0.0) sharpen(g, travel);
+    if (g.gap <= 0.0)
+      inside_.push_back(g.point);
+    else if (g.gap <= travel)
+      gaps_.push_back(g);
+  }
   return inside_;
 }
 

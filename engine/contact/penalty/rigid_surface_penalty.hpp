@@ -139,6 +139,20 @@ class RigidSurfacePenalty : public ContactModel, public HistorySource {
   std::vector<Gap> gaps_;       // the points outside within reach of a step
   std::vector<size_t> inside_;  // the points inside
   const std::vector<size_t>& gather_gaps(const State& s, const RigidState& r, double travel);
+  const std::vector<size_t>& sort_near(double travel);
+  // The points add_forces() found within near_margin_ of the surface (or inside), with their gap
+  // bounds, and the state and margin they were recorded at: the step bound that follows at the
+  // same state reads them instead of visiting every point again.
+  std::vector<Gap> near_;
+  struct Recorded {
+    const State* state = nullptr;
+    double t = 0.0, margin = 0.0;
+  } near_of_;
+  double near_margin_ = 0.0;  // [m] chosen by the last step bound
+  bool locate(size_t point, const Vec3& X, SurfacePoint& hit);
+  void spring(const State& s, const RigidState& r, size_t t, int k, const Vec3& x,
+              const SurfacePoint& hit);
+  void record_near(size_t point, const Vec3& X, double from_center);
   void sharpen(Gap& g, double travel);
   void remember_clearance(size_t point, const Vec3& X, const SurfacePoint& outside);
   std::vector<int> deformable_local_;        // the entries of nodes_ on the deformable surface
