@@ -41,5 +41,7 @@ inline constexpr double kDefaultPointPenalty = 1e6;
 // (the default: the surface as meshed, at the flat surface's cost); 45 smooths a sphere or
 // cylinder meshed with 8 or more edges around and keeps a cube's edges.
 inline constexpr double kDefaultCreaseAngle = 0.0;
+// The trade-study grid's meshed rigid impactor's (study/grid/grid_spec.hpp): smoothed all over.
+inline constexpr double kMeshedImpactorCreaseAngle = 45.0;
 
 }  // namespace ccm

@@ -122,8 +122,10 @@ std::string meshed_rigid_impactor(PointParameters p) {
 
 std::string meshed_rigid_contact(const PointParameters& p) {
   return fmt::format(
-      "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\nrigid = \"{}\"\n{}damping = {}\n",
-      kArtifactBody, kImpactorName, penalty_keys(p.contact), num(p.contact.damping));
+      "\n[contact]\nmodel = \"rigid_penalty\"\nbody = \"{}\"\nrigid = \"{}\"\n"
+      "crease_angle = {}\n{}damping = {}\n",
+      kArtifactBody, kImpactorName, num(p.contact.crease_angle), penalty_keys(p.contact),
+      num(p.contact.damping));
 }
 
 std::string rigid_contact(const PointParameters& p) {

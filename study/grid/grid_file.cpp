@@ -172,7 +172,7 @@ void parse_contact(const StrictTable& root, GridSpec& g) {
     return;
   }
   t->allow_only({"penalty_mode", "penalty", "penalty_scale", "damping", "restitution", "friction",
-                 "rigid_impactor"});
+                 "rigid_impactor", "crease_angle"});
   GridContact& c = g.contact;
   parse_penalty(*t, g);
   if (const auto impactor = t->string("rigid_impactor")) {
@@ -185,6 +185,15 @@ void parse_contact(const StrictTable& root, GridSpec& g) {
       t->fail("rigid_impactor",
               "the meshed rigid impactor takes the per-point K_P; the element-scaled penalty "
               "(penalty_mode, penalty_scale) applies to the analytic sphere only");
+  }
+  if (t->has("crease_angle")) {
+    if (!c.meshed_rigid_impactor)
+      t->fail("crease_angle",
+              "applies only to the meshed rigid impactor (rigid_impactor = "
+              "\"meshed\")");
+    c.crease_angle = t->need_number("crease_angle");
+    if (!kCreaseAngleRange.contains(c.crease_angle))
+      t->fail("crease_angle", kCreaseAngleRange.problem(c.crease_angle));
   }
   c.damping = checked_as_axis(*t, "damping", "damping", c.damping);
   c.restitution = checked_as_axis(*t, "restitution", "restitution", c.restitution);

@@ -70,6 +70,10 @@ struct GridContact {
   // The rigid model's impactor: the analytic sphere (the thesis's) or the ccm model's meshed
   // sphere made a rigid body (docs/rigid-bodies.md), on the same per-point springs.
   bool meshed_rigid_impactor = false;
+  // The meshed impactor's crease angle [degrees]: it stands for a sphere, so its surface is
+  // smoothed (docs/rigid-bodies.md, "The curved surface"; the coarsest grid mesh, five edges per
+  // diameter, turns by about 25 degrees at an edge).
+  double crease_angle = kMeshedImpactorCreaseAngle;
 };
 
 // A point named in [convergence]: the three main axes, the other axes at their fixed values.

@@ -378,4 +378,18 @@ TEST_CASE(
                  "{}{}", kSmallGrid,
                  "\n[contact]\npenalty_mode = \"element\"\nrigid_impactor = \"meshed\"\n")),
              Catch::Contains("per-point K_P"));
+  // It stands for a sphere: smoothed all over unless the grid says otherwise.
+  CHECK(rigid.contacts.at(0).crease_angle == kMeshedImpactorCreaseAngle);
+  const GridSpec flat =
+      parse_grid(fmt::format("{}{}", kSmallGrid,
+                             "\n[contact]\nrigid_impactor = \"meshed\"\ncrease_angle = 0\n"),
+                 "g.toml");
+  CHECK(point_scene(flat, point(1e2, 1.0, 50.0), ImpactModel::rigid).contacts.at(0).crease_angle ==
+        0.0);
+  CHECK_THAT(grid_error_of(fmt::format("{}{}", kSmallGrid, "\n[contact]\ncrease_angle = 45\n")),
+             Catch::Contains("crease_angle") && Catch::Contains("meshed rigid impactor"));
+  CHECK_THAT(
+      grid_error_of(fmt::format("{}{}", kSmallGrid,
+                                "\n[contact]\nrigid_impactor = \"meshed\"\ncrease_angle = 180\n")),
+      Catch::Contains("crease_angle"));
 }
