@@ -27,8 +27,9 @@ using namespace ccm;
 namespace {
 
 // The striker's modulus from 1e5 Pa (ER 1) to 1e7 Pa (ER 100) every `decades`, at 0.5 m/s (where
-// the answer changes once along the line, at ER 42-56: at 1 m/s the errors of the KE cross the
-// threshold several times).
+// the answer changes once along the line, at ER 32-42 since the DCR's velocity solves converge
+// (42-56 when they stopped at their cap): at 1 m/s the errors of the KE cross the threshold
+// several times).
 std::string striker_modulus_grid(double decades) {
   std::string values;
   for (double d = 0.0; d <= 2.0 + 1e-9; d += decades)
@@ -97,8 +98,9 @@ TEST_CASE("ccm study refine: the boundary within one fine step, with half the fi
   const auto measured = test::run_ccm(refine(fine_db, "--tolerance 1"), dir);
   REQUIRE(measured.status == 0);
   const Boundary r = printed_boundary(located.out), f = printed_boundary(measured.out);
-  CHECK(std::log10(r.hi / r.lo) <= 0.125 + 1e-9);
-  CHECK(std::abs(std::log10(std::sqrt(r.lo * r.hi) / std::sqrt(f.lo * f.hi))) <= 0.125 + 1e-9);
+  // Slack: the boundary is read from its printed values, six significant digits (5e-6 in log10).
+  CHECK(std::log10(r.hi / r.lo) <= 0.125 + 5e-6);
+  CHECK(std::abs(std::log10(std::sqrt(r.lo * r.hi) / std::sqrt(f.lo * f.hi))) <= 0.125 + 5e-6);
   CHECK(stored_runs(coarse_db) <= fine_runs / 2);
   // The same as JSON: the bracket, what changes across it, the runs.
   const auto json = test::run_ccm(refine(coarse_db, "--tolerance 0.125 --budget 17 --json"), dir);

@@ -259,6 +259,17 @@ void ContactImpulses::mark_body_rows_dirty(size_t row) {
       dirty_[static_cast<size_t>(k)] = 1;
 }
 
+// The patches' normal rows solved directly (patch_solve.hpp), the free rigid bodies' rows held;
+// every row is visited again by the next sweep.
+void ContactImpulses::solve_patches(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
+                                    std::vector<Vec3>& v, double limit) {
+  held_.assign(rows.size(), 0);
+  if (partners_)
+    for (size_t k = 0; k < rows.size(); ++k) held_[k] = rigid_index_[k] >= 0;
+  direct_patches_ += patches_.solve(rows, inv_m, v, entries_, held_, limit);
+  std::fill(dirty_.begin(), dirty_.end(), 1);
+}
+
 ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::vector<int>& order,
                                     const std::vector<double>& inv_m, std::vector<Vec3>& v,
                                     const ImpulseSettings& settings, RigidPartners* partners,
@@ -295,6 +306,7 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
   dirty_.assign(rows.size(), 1);
   ImpulseSolve out{0, rows.empty()};
   visits_ = 0;
+  direct_patches_ = 0;
   if (stamp_.size() < v.size()) stamp_.resize(v.size(), -1);
   while (out.sweeps < settings.max_iterations) {
     const int sweep = out.sweeps;
@@ -330,6 +342,9 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
       out.converged = true;
       break;
     }
+    if (settings.direct_every > 0 && out.sweeps % settings.direct_every == 0 &&
+        out.sweeps < settings.max_iterations)
+      solve_patches(rows, inv_m, v, limit);
   }
   remember(rows);
   return out;

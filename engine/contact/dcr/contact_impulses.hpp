@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "engine/contact/dcr/contact_row.hpp"
+#include "engine/contact/dcr/patch_solve.hpp"
 #include "engine/contact/dcr/rigid_partners.hpp"
 #include "engine/core/types.hpp"
 
@@ -49,6 +50,9 @@ struct ImpulseSettings {
   double tolerance = 1e-9;      // stop when no row changes a velocity by more than this x v_ref
   bool warm_start = true;       // start held contacts from the last step's impulses
   double velocity_floor = 0.0;  // ... or by more than this [m/s], whichever limit is larger
+  // Every this many sweeps without convergence, the patches' normal rows solved directly
+  // (patch_solve.hpp); 0: never.
+  int direct_every = 10;
 };
 
 struct ImpulseSolve {
@@ -70,6 +74,8 @@ class ContactImpulses {
                      const std::vector<Vec3>* x = nullptr);
   // Rows of the last solve that started from a remembered impulse (diagnostics).
   int warm_started() const { return warm_started_; }
+  // Patches the last solve solved directly (diagnostics).
+  int direct_patches() const { return direct_patches_; }
 
  private:
   // The impulses a contact ended the last step with, keyed by its four nodes.
@@ -84,6 +90,8 @@ class ContactImpulses {
   // rows, and the rows of each body.
   void attach_rigid(std::vector<ContactRow>& rows, const std::vector<Vec3>& x);
   void mark_body_rows_dirty(size_t row);
+  void solve_patches(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
+                     std::vector<Vec3>& v, double limit);
   RigidPartners* partners_ = nullptr;        // of the current solve, or null
   std::vector<int> rigid_index_;             // per row: its entry in rigid_parts_, or -1
   std::vector<RigidRowPart> rigid_parts_;    // rows with nodes of free rigid bodies
@@ -106,6 +114,9 @@ class ContactImpulses {
   std::vector<Remembered> last_;     // per row of the last solve (its rows' nodes: linked_)
   std::vector<Remembered> pushing_;  // scratch: those of last_ with lambda_n > 0, by nodes
   int warm_started_ = 0;
+  PatchSolve patches_;
+  std::vector<char> held_;  // per row: on a free rigid body (the patch solve leaves it)
+  int direct_patches_ = 0;
 };
 
 }  // namespace ccm::dcr
