@@ -203,21 +203,11 @@ void BroadPhase::filter(Candidates& out) {
   node_face_part_.reset(chunks);
   edge_edge_part_.reset(chunks);
   loops_->run(n, [&](size_t begin, size_t end, int chunk) {
-    std::vector<NodeFaceCandidate>& nf = node_face_part_[chunk];
-    std::vector<EdgeEdgeCandidate>& ee = edge_edge_part_[chunk];
-    for (size_t k = begin; k < end; ++k) {
-      if (k < n_nf) {
-        const NodeFaceCandidate& p = cache_.node_face[k];
-        if (overlap(current_.node[static_cast<size_t>(p.node)],
-                    current_.face[static_cast<size_t>(p.face)]))
-          nf.push_back(p);
-      } else {
-        const EdgeEdgeCandidate& p = cache_.edge_edge[k - n_nf];
-        if (overlap(current_.edge[static_cast<size_t>(p.edge_a)],
-                    current_.edge[static_cast<size_t>(p.edge_b)]))
-          ee.push_back(p);
-      }
-    }
+    keep_overlapping(cache_.node_face, begin, std::min(end, n_nf), current_.node, current_.face,
+                     &NodeFaceCandidate::node, &NodeFaceCandidate::face, node_face_part_[chunk]);
+    keep_overlapping(cache_.edge_edge, std::max(begin, n_nf) - n_nf, std::max(end, n_nf) - n_nf,
+                     current_.edge, current_.edge, &EdgeEdgeCandidate::edge_a,
+                     &EdgeEdgeCandidate::edge_b, edge_edge_part_[chunk]);
   });
   node_face_part_.append_to(out.node_face);
   edge_edge_part_.append_to(out.edge_edge);
