@@ -467,8 +467,8 @@ TEST_CASE("broad phase: the skin covers kSkinSteps steps of motion, within its b
   };
   // At rest: the smallest skin.
   CHECK(half_skin(0.0) == Approx(BroadPhase::kMinHalfSkinFraction * extent).epsilon(1e-12));
-  // A slow surface: kSkinSteps steps of its motion (0.02, between the bounds 0.006 and 0.07).
-  const double slow = 1e-4;
+  // A slow surface: kSkinSteps steps of its motion (0.01, between the bounds 0.005 and 0.033).
+  const double slow = 5e-5;
   REQUIRE(BroadPhase::kSkinSteps * slow > 1.5 * BroadPhase::kMinHalfSkinFraction * extent);
   REQUIRE(BroadPhase::kSkinSteps * slow < 0.5 * BroadPhase::kHalfSkinFraction * extent);
   CHECK(half_skin(slow) == Approx(BroadPhase::kSkinSteps * slow).epsilon(1e-9));
