@@ -50,9 +50,10 @@ struct ImpulseSettings {
   double tolerance = 1e-9;      // stop when no row changes a velocity by more than this x v_ref
   bool warm_start = true;       // start held contacts from the last step's impulses
   double velocity_floor = 0.0;  // ... or by more than this [m/s], whichever limit is larger
-  // Every this many sweeps without convergence, the patches' normal rows solved directly
-  // (patch_solve.hpp); 0: never.
+  // Without friction, every this many sweeps without convergence, the patches' normal rows solved
+  // directly (patch_solve.hpp), at most direct_times in one solve; 0: never.
   int direct_every = 10;
+  int direct_times = 1;
 };
 
 struct ImpulseSolve {
