@@ -6,11 +6,11 @@
 namespace ccm::dcr {
 namespace {
 
-constexpr int kRounds = 30;   // active-set rounds per patch (PS.2)
+constexpr int kRounds = 30;   // active-set rounds per patch (DP.2)
 constexpr int kPatience = 3;  // block rounds without fewer infeasible rows, then single pivots
-constexpr double kPivotRegularisation = 1e-4;  // eps of PS.2 while the rows are pivoted
-constexpr double kRegularisation = 1e-9;       // eps of PS.3, the settled rows' final solve
-constexpr int kRefinements = 3;                // of PS.3
+constexpr double kPivotRegularisation = 1e-4;  // eps of DP.2 while the rows are pivoted
+constexpr double kRegularisation = 1e-9;       // eps of DP.3, the settled rows' final solve
+constexpr int kRefinements = 3;                // of DP.3
 
 int root(std::vector<int>& parent, int i) {
   while (parent[static_cast<size_t>(i)] != i)
@@ -122,7 +122,7 @@ Eigen::SparseMatrix<double> PatchSolve::delassus(const std::vector<ContactRow>& 
   return A;
 }
 
-// PS.2-PS.3 for the active rows: lambda_S (0 off S), or false when the factorisation fails.
+// DP.2-DP.3 for the active rows: lambda_S (0 off S), or false when the factorisation fails.
 bool PatchSolve::solve_active(const Eigen::SparseMatrix<double>& A, const std::vector<char>& active,
                               const Eigen::VectorXd& b, double eps, int refinements,
                               Eigen::VectorXd& lambda) {
@@ -166,9 +166,9 @@ bool PatchSolve::solve_active(const Eigen::SparseMatrix<double>& A, const std::v
   return x.allFinite();
 }
 
-// PS.1-PS.2 on one patch (its rows ascending; local_ holds their places in it). The result is
+// DP.1-DP.2 on one patch (its rows ascending; local_ holds their places in it). The result is
 // kept only when it is the patch's solution (no row left violated, the active set settled) and
-// the patch's impulses, from none, take energy out (PS.4); else the sweeps go on from where they
+// the patch's impulses, from none, take energy out (DP.4); else the sweeps go on from where they
 // were.
 void PatchSolve::solve_patch(std::vector<ContactRow>& rows, const std::vector<int>& patch,
                              const std::vector<double>& inv_m, std::vector<Vec3>& v,
@@ -215,7 +215,7 @@ void PatchSolve::solve_patch(std::vector<ContactRow>& rows, const std::vector<in
     }
     for (Eigen::Index i : infeasible) active[static_cast<size_t>(i)] ^= 1;
   }
-  // PS.3: the settled rows again, closely; kept where it leaves them settled.
+  // DP.3: the settled rows again, closely; kept where it leaves them settled.
   Eigen::VectorXd close(m);
   if (settled && solve_active(A, active, target - r0, kRegularisation, kRefinements, close)) {
     const Eigen::VectorXd w = A * close + r0 - target;
@@ -224,7 +224,7 @@ void PatchSolve::solve_patch(std::vector<ContactRow>& rows, const std::vector<in
       feasible = active[static_cast<size_t>(i)] ? close[i] >= 0.0 : w[i] >= -slack[i];
     if (feasible) lambda = close;
   }
-  // PS.4: the energy the patch's impulses change, from none: lambda . r0 + lambda A lambda / 2.
+  // DP.4: the energy the patch's impulses change, from none: lambda . r0 + lambda A lambda / 2.
   const Eigen::VectorXd A_lambda = A * lambda;
   if (!settled || dot(lambda, r0) + 0.5 * dot(lambda, A_lambda) > 0.0) return;
   for (Eigen::Index i = 0; i < m; ++i) {

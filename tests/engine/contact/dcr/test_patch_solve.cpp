@@ -1,5 +1,5 @@
 // Evidence for the direct solve of a patch's normal rows (engine/contact/dcr/patch_solve.hpp,
-// PS.1-PS.2): on a column of masses falling onto the ground, the case on which Gauss-Seidel
+// DP.1-DP.3): on a column of masses falling onto the ground, the case on which Gauss-Seidel
 // sweeps are slowest (each sweep carries an impulse one contact further), the sweeps alone stop at
 // their cap, and with the patch solve they converge to the closed form (every mass at rest) and
 // to what the sweeps reach when given all the sweeps they need.
