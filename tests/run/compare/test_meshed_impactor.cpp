@@ -23,6 +23,7 @@
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/model_errors.hpp"
+#include "tests/support/scene_history.hpp"
 
 using namespace ccm;
 
@@ -33,20 +34,10 @@ constexpr std::array<double, 4> kSchedules = {0.9, 0.8, 0.7, 0.6};
 
 // The artifact's final u_mean, u_max and kinetic energy of a run of `scene`.
 std::array<double, 3> final_state(Scene scene) {
-  const SceneRun run = assemble_scene_run(std::move(scene));
-  HistoryRecorder history(run.model.mesh, run.output);
-  RunOptions opt = scene_run_options(run, &history);
-  const RunSummary s = run_explicit(run.model, opt);
-  INFO(s.instability.reason);
-  REQUIRE(s.verdict == Verdict::completed);
-  const auto& cols = history.columns();
+  const test::SceneHistory run(std::move(scene));
   std::array<double, 3> out{};
-  for (size_t m = 0; m < kMetrics.size(); ++m) {
-    const std::string name = fmt::format("{}.{}", study::kArtifactBody, kMetrics[m]);
-    const auto c = static_cast<size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
-    REQUIRE(c < cols.size());
-    out[m] = history.rows().back()[c];
-  }
+  for (size_t m = 0; m < kMetrics.size(); ++m)
+    out[m] = run.column(fmt::format("{}.{}", study::kArtifactBody, kMetrics[m])).back();
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include "study/grid/grid_expand.hpp"
 #include "study/grid/grid_file.hpp"
 #include "study/metrics/model_errors.hpp"
+#include "tests/support/scene_history.hpp"
 
 using namespace ccm;
 
@@ -56,22 +57,9 @@ struct ArtifactSeries {
 };
 
 ArtifactSeries run_artifact(Scene scene) {
-  const SceneRun run = assemble_scene_run(std::move(scene));
-  HistoryRecorder history(run.model.mesh, run.output);
-  RunOptions opt = scene_run_options(run, &history);
-  const RunSummary s = run_explicit(run.model, opt);
-  INFO(s.instability.reason);
-  REQUIRE(s.verdict == Verdict::completed);
-  const auto& cols = history.columns();
-  auto column = [&](const std::string& name) {
-    const auto c = static_cast<size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
-    REQUIRE(c < cols.size());
-    std::vector<double> out;
-    for (const auto& row : history.rows()) out.push_back(row[c]);
-    return out;
-  };
+  const test::SceneHistory run(std::move(scene));
   const std::string a = study::kArtifactBody;
-  return {column(a + ".u_mean"), column(a + ".u_max"), column(a + ".kinetic_energy")};
+  return {run.column(a + ".u_mean"), run.column(a + ".u_max"), run.column(a + ".kinetic_energy")};
 }
 
 double worst_final_state(const ArtifactSeries& c, const ArtifactSeries& r) {

@@ -226,6 +226,20 @@ double largest_facet_sag(const ModelMesh& mesh, const Body& ball, const Vec3& ce
   return largest;
 }
 
+// The soft block and, above it, a free rigid Gmsh ball (edge `edge`) coming down at kBallSpeed.
+Model ball_over_block(double edge) {
+  ModelMesh mesh;
+  add_body(mesh, "artifact", test::neo_hookean(1e4, 0.3, kBallRho),
+           structured_box(kArtifact, 8, 8, 4));
+  add_body(mesh, "ball", test::neo_hookean(1e10, 0.3, kBallRho),
+           test::gmsh_sphere(kBallRadius, edge, kCentre));
+  RigidBodyModel ball = make_rigid(mesh, 1, RigidMotion::free);
+  ball.velocity = Vec3(0.0, 0.0, -kBallSpeed);
+  Model model = make_model(std::move(mesh));
+  model.rigid_bodies = {ball};
+  return model;
+}
+
 // The penalty, its step bound checked at every step against the bound from every point afresh
 // (a copy of the state: add_forces() recorded its points for the original only).
 class RecordedCheck : public RigidSurfacePenalty {
@@ -256,15 +270,7 @@ class RecordedCheck : public RigidSurfacePenalty {
 // every point afresh.
 TEST_CASE("penalty: the step bound from the recorded points is the bound from every point",
           "[rigid-body][penalty]") {
-  ModelMesh mesh;
-  add_body(mesh, "artifact", test::neo_hookean(1e4, 0.3, kBallRho),
-           structured_box(kArtifact, 8, 8, 4));
-  add_body(mesh, "ball", test::neo_hookean(1e10, 0.3, kBallRho),
-           test::gmsh_sphere(kBallRadius, 0.003, kCentre));
-  RigidBodyModel ball = make_rigid(mesh, 1, RigidMotion::free);
-  ball.velocity = Vec3(0.0, 0.0, -kBallSpeed);
-  Model model = make_model(std::move(mesh));
-  model.rigid_bodies = {ball};
+  Model model = ball_over_block(0.003);
   RigidSurfacePenaltyParams p;
   p.penalty = 1e6;
   p.damping = 1.0;
@@ -292,17 +298,11 @@ TEST_CASE(
     "impact",
     "[rigid-body][penalty][heavy]") {
   // The meshed sphere: a rigid body of the Gmsh sphere, free, with the analytic sphere's speed.
-  ModelMesh mesh;
-  add_body(mesh, "artifact", test::neo_hookean(1e4, 0.3, kBallRho),
-           structured_box(kArtifact, 8, 8, 4));
-  add_body(mesh, "ball", test::neo_hookean(1e10, 0.3, kBallRho),
-           test::gmsh_sphere(kBallRadius, 0.0015, kCentre));
-  RigidBodyModel ball = make_rigid(mesh, 1, RigidMotion::free);
-  ball.velocity = Vec3(0.0, 0.0, -kBallSpeed);
+  Model meshed = ball_over_block(0.0015);
+  const RigidBodyModel& ball = meshed.rigid_bodies[0];
   const double mass = ball.mass.mass;
-  const double largest_sag = largest_facet_sag(mesh, mesh.bodies[1], kCentre, kBallRadius);
-  Model meshed = make_model(std::move(mesh));
-  meshed.rigid_bodies = {ball};
+  const double largest_sag =
+      largest_facet_sag(meshed.mesh, meshed.mesh.bodies[1], kCentre, kBallRadius);
   // Springs with dashpots at critical damping (zeta = 1, as the study grids' rigid model,
   // docs/grid-file.md): with bare springs the surface nodes chatter, and each run's final state
   // moved by 1.4-2.3 % with the step schedule alone (dt_safety 0.8-0.9, outputs every 0.25 or
