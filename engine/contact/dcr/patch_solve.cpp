@@ -53,7 +53,7 @@ int PatchSolve::solve(std::vector<ContactRow>& rows, const std::vector<double>& 
     const ContactRow& r = rows[k];
     if (held[k] || !(r.W_n > 0.0)) continue;
     rate_[k] = normal_rate(r, v);
-    candidate_[k] = r.lambda_n > 0.0 || rate_[k] < r.target - tolerance;
+    candidate_[k] = r.lambda_n > 0.0 || rate_[k] < r.target - tolerance * r.S;
   }
   // Patches: the candidate rows joined through the nodes they share.
   for (size_t e = 0; e < entries.size();) {

@@ -2,8 +2,9 @@
 // contact_impulses.hpp reach when they converge, found at once for a patch whose sweeps stall
 // (docs/hard-scenes.md, "The velocity solves at their cap").
 //
-// The rows of a patch are those joined through shared nodes. With every tangential impulse and
-// every other row held, their normal multipliers lambda solve the linear complementarity problem
+// The rows of a patch are those that push or are violated (by more than S tol, below), joined
+// through shared nodes. With every tangential impulse and every other row held, their normal
+// multipliers lambda solve the linear complementarity problem
 //   w = A lambda + r0 - target >= 0,   lambda >= 0,   w_i lambda_i = 0                    (DP.1)
 // with A_ij = sum_n m_n^-1 grad_i(n) . grad_j(n) the Delassus matrix of the normal rows (n over
 // the nodes rows i and j share; A_ii = W_n) and r0 the rows' normal rates with the patch's normal
