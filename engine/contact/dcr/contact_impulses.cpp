@@ -266,7 +266,7 @@ void ContactImpulses::solve_patches(std::vector<ContactRow>& rows, const std::ve
   held_.assign(rows.size(), 0);
   if (partners_)
     for (size_t k = 0; k < rows.size(); ++k) held_[k] = rigid_index_[k] >= 0;
-  direct_patches_ += patches_.solve(rows, inv_m, v, entries_, held_, limit);
+  patches_.solve(rows, inv_m, v, entries_, held_, limit);
   std::fill(dirty_.begin(), dirty_.end(), 1);
 }
 
@@ -307,10 +307,9 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
   // The patch solve holds the friction impulses: with friction the sweeps iterate them anyway,
   // and there it cost more than it saved (a frictional crush, 7 December 2026: 12 % more time
   // per step once per solve, 120 % every 10 sweeps).
-  const bool direct = settings.direct_every > 0 && settings.friction == 0.0;
+  const bool direct = settings.direct_after > 0 && settings.friction == 0.0;
   ImpulseSolve out{0, rows.empty()};
   visits_ = 0;
-  direct_patches_ = 0;
   if (stamp_.size() < v.size()) stamp_.resize(v.size(), -1);
   while (out.sweeps < settings.max_iterations) {
     const int sweep = out.sweeps;
@@ -346,9 +345,7 @@ ImpulseSolve ContactImpulses::solve(std::vector<ContactRow>& rows, const std::ve
       out.converged = true;
       break;
     }
-    if (direct && out.sweeps % settings.direct_every == 0 &&
-        out.sweeps / settings.direct_every <= settings.direct_times &&
-        out.sweeps < settings.max_iterations)
+    if (direct && out.sweeps == settings.direct_after && out.sweeps < settings.max_iterations)
       solve_patches(rows, inv_m, v, limit);
   }
   remember(rows);

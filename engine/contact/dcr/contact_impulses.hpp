@@ -50,10 +50,9 @@ struct ImpulseSettings {
   double tolerance = 1e-9;      // stop when no row changes a velocity by more than this x v_ref
   bool warm_start = true;       // start held contacts from the last step's impulses
   double velocity_floor = 0.0;  // ... or by more than this [m/s], whichever limit is larger
-  // Without friction, every this many sweeps without convergence, the patches' normal rows solved
-  // directly (patch_solve.hpp), at most direct_times in one solve; 0: never.
-  int direct_every = 10;
-  int direct_times = 1;
+  // Without friction, after this many sweeps without convergence the patches' normal rows are
+  // solved directly, once (patch_solve.hpp); 0: never.
+  int direct_after = 10;
 };
 
 struct ImpulseSolve {
@@ -75,8 +74,6 @@ class ContactImpulses {
                      const std::vector<Vec3>* x = nullptr);
   // Rows of the last solve that started from a remembered impulse (diagnostics).
   int warm_started() const { return warm_started_; }
-  // Patches the last solve solved directly (diagnostics).
-  int direct_patches() const { return direct_patches_; }
 
  private:
   // The impulses a contact ended the last step with, keyed by its four nodes.
@@ -117,7 +114,6 @@ class ContactImpulses {
   int warm_started_ = 0;
   PatchSolve patches_;
   std::vector<char> held_;  // per row: on a free rigid body (the patch solve leaves it)
-  int direct_patches_ = 0;
 };
 
 }  // namespace ccm::dcr

@@ -41,9 +41,9 @@ int slot_of(const ContactRow& r, int node) {
 
 }  // namespace
 
-int PatchSolve::solve(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
-                      std::vector<Vec3>& v, const std::vector<std::pair<int, int>>& entries,
-                      const std::vector<char>& held, double tolerance) {
+void PatchSolve::solve(std::vector<ContactRow>& rows, const std::vector<double>& inv_m,
+                       std::vector<Vec3>& v, const std::vector<std::pair<int, int>>& entries,
+                       const std::vector<char>& held, double tolerance) {
   const size_t n = rows.size();
   rate_.assign(n, 0.0);
   candidate_.assign(n, 0);
@@ -81,14 +81,12 @@ int PatchSolve::solve(std::vector<ContactRow>& rows, const std::vector<double>& 
     patches[static_cast<size_t>(patch_of[r])].push_back(static_cast<int>(k));
   }
   local_.assign(n, -1);
-  solved_ = 0;
   for (const std::vector<int>& patch : patches) {
     for (size_t i = 0; i < patch.size(); ++i)
       local_[static_cast<size_t>(patch[i])] = static_cast<int>(i);
     solve_patch(rows, patch, inv_m, v, entries, tolerance);
     for (int k : patch) local_[static_cast<size_t>(k)] = -1;
   }
-  return solved_;
 }
 
 // A: over each node the patch's rows share, every pair of them (local_ holds the rows' places).
@@ -236,7 +234,6 @@ void PatchSolve::solve_patch(std::vector<ContactRow>& rows, const std::vector<in
       v[node] += inv_m[node] * d * r.grad[a];
     }
   }
-  ++solved_;
 }
 
 }  // namespace ccm::dcr

@@ -45,11 +45,10 @@ class PatchSolve {
   // rows and v as ContactImpulses::solve's; entries: (node, row) of every row's four nodes,
   // sorted; held: per row, 1 for a row this solve leaves as it is (on a free rigid body);
   // tolerance: the contact points' speed tolerance [m/s] (the sweeps'). Updates the rows' lambda_n
-  // and v; returns the number of patches solved (a patch whose result fails DP.4 is left as it
-  // was).
-  int solve(std::vector<ContactRow>& rows, const std::vector<double>& inv_m, std::vector<Vec3>& v,
-            const std::vector<std::pair<int, int>>& entries, const std::vector<char>& held,
-            double tolerance);
+  // and v (a patch whose result fails DP.4 is left as it was).
+  void solve(std::vector<ContactRow>& rows, const std::vector<double>& inv_m, std::vector<Vec3>& v,
+             const std::vector<std::pair<int, int>>& entries, const std::vector<char>& held,
+             double tolerance);
 
  private:
   void solve_patch(std::vector<ContactRow>& rows, const std::vector<int>& patch,
@@ -59,7 +58,6 @@ class PatchSolve {
   std::vector<char> candidate_;  // per row: pushes, or is violated
   std::vector<int> parent_;      // union-find over the rows
   std::vector<int> local_;       // per row: its index in the current patch, or -1
-  int solved_ = 0;
   Eigen::SparseMatrix<double> delassus(const std::vector<ContactRow>& rows,
                                        const std::vector<int>& patch,
                                        const std::vector<double>& inv_m,

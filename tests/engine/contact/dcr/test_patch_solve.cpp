@@ -42,13 +42,13 @@ struct Column {
   std::vector<int> order;
 };
 
-dcr::ImpulseSolve run(Column& c, int max_iterations, int direct_every) {
+dcr::ImpulseSolve run(Column& c, int max_iterations, int direct_after) {
   dcr::ContactImpulses solver;
   dcr::ImpulseSettings settings;
   settings.max_iterations = max_iterations;
   settings.tolerance = 1e-9;
   settings.warm_start = false;
-  settings.direct_every = direct_every;
+  settings.direct_after = direct_after;
   return solver.solve(c.rows, c.order, c.inv_m, c.v, settings);
 }
 
