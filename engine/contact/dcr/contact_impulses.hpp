@@ -50,8 +50,8 @@ struct ImpulseSettings {
   double tolerance = 1e-9;      // stop when no row changes a velocity by more than this x v_ref
   bool warm_start = true;       // start held contacts from the last step's impulses
   double velocity_floor = 0.0;  // ... or by more than this [m/s], whichever limit is larger
-  // Without friction, after this many sweeps without convergence the patches' normal rows are
-  // solved directly, once (patch_solve.hpp); 0: never.
+  // Without friction, every this many sweeps without convergence the patches' normal rows are
+  // solved directly (patch_solve.hpp); 0: never.
   int direct_after = 10;
 };
 
