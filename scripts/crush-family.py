@@ -13,7 +13,11 @@ The run lasts until the ball has crossed the pipe's diameter at its first speed,
 A well-posed member must complete with its energy balance within 1 %, or end unstable for a
 physical reason. Prints one line per member and writes a CSV table.
 
-  scripts/crush-family.py [--all | --members K] [--ccm build/ccm] [--out DIR]
+  scripts/crush-family.py [--all | --members K] [--structure] [--ccm build/ccm] [--out DIR]
+
+--structure also runs each member without contact over a third of its time and prints the
+contact run's ns per element-step as a multiple of that structure-alone cost (issue 34's floor
+is 10x), both measured in the same sitting.
 
 By default the scene of issue 34 (1/3, fixed, 8 m/s, friction 0.3) and 8 members spread over the
 axes (each level of each axis at least once); --all runs all 72; --members K: the issue's scene
@@ -32,6 +36,7 @@ import time
 PIPE_R, LENGTH = 0.020, 0.050
 MESH = 0.002  # the pipe's mesh size, but for the issue's scene (wall_tets 1/3: 1 mm at 3 mm)
 BALL_R = 0.010
+STRUCTURE_WINDOW = 1.0 / 3.0  # of a member's time, for its structure-alone cost (--structure)
 
 AXES = {
     "wall_tets": [1.0 / 3.0, 0.5, 1.0, 2.0],  # wall / mesh size
@@ -41,9 +46,10 @@ AXES = {
 }
 
 
-def scene(wall_tets, support, speed, friction):
+def scene(wall_tets, support, speed, friction, contact=True, window=1.0):
+    """The member's scene; without contact (the structure alone) over `window` of its time."""
     h, wall = (0.003, 0.001) if wall_tets < 0.4 else (MESH, wall_tets * MESH)
-    end = min(2.0 * PIPE_R / speed + 2e-3, 0.025)
+    end = window * min(2.0 * PIPE_R / speed + 2e-3, 0.025)
     lift = 0.0055 if support == "anvil" else 0.0  # the pipe 0.5 mm above the anvil's top
     parts = [f'''title = "crush family: wall {wall_tets} tets, {support}, {speed} m/s, mu {friction}"
 [time]
@@ -111,6 +117,8 @@ node_set = "anvil"
 body = "pipe"
 box = { min = [-1.0, -1.0, -1.0], max = [1.0, 1.0, 0.0005] }
 ''')
+    if not contact:
+        return "".join(parts)
     parts.append(f'''
 [contact]
 model = "dcr"
@@ -137,7 +145,7 @@ def summary_value(text, key):
     return m.group(1).strip('"') if m else ""
 
 
-def run_member(ccm, folder, index, member):
+def run_member(ccm, folder, index, member, structure=False):
     path = os.path.join(folder, f"member{index:02d}.toml")
     with open(path, "w") as f:
         f.write(scene(**member))
@@ -164,7 +172,23 @@ def run_member(ccm, folder, index, member):
     })
     if proc.returncode not in (0, 3):
         row["reason"] = (proc.stderr.strip().splitlines() or ["?"])[-1]
+    if structure:
+        row["structure_ns_per_element_step"] = structure_cost(ccm, folder, index, member)
+        row["ratio_to_structure"] = row["ns_per_element_step"] / row["structure_ns_per_element_step"]
     return row
+
+
+def structure_cost(ccm, folder, index, member):
+    """ns per element-step of the member's bodies stepped without contact, a third of its window
+    (the same mesh and steps per second: the element kernel, output and energy sums)."""
+    path = os.path.join(folder, f"member{index:02d}-structure.toml")
+    with open(path, "w") as f:
+        f.write(scene(**member, contact=False, window=STRUCTURE_WINDOW))
+    out = os.path.join(folder, f"member{index:02d}-structure")
+    subprocess.run([ccm, "run", path, "-o", out, "-q", "--threads", "1"], check=True,
+                   capture_output=True, text=True)
+    with open(os.path.join(out, "summary.toml")) as f:
+        return float(summary_value(f.read(), "ns_per_element_step"))
 
 
 def main():
@@ -173,6 +197,9 @@ def main():
     parser.add_argument("--members", type=int, default=8)
     parser.add_argument("--ccm", default="build/ccm")
     parser.add_argument("--out", default="crush-family")
+    parser.add_argument("--structure", action="store_true",
+                        help="also time each member's bodies without contact, same sitting, and "
+                        "print the contact run's cost as a multiple of that")
     args = parser.parse_args()
     if args.all:
         members = [dict(zip(AXES, values)) for values in itertools.product(*AXES.values())]
@@ -182,13 +209,16 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for k, member in enumerate(members):
-        row = run_member(args.ccm, args.out, k, member)
+        row = run_member(args.ccm, args.out, k, member, args.structure)
         rows.append(row)
         ok = row["verdict"] == "completed" and row["energy_error_pct"] <= 1.0
         print(f"{k:2d} wall {member['wall_tets']:5.3g} h {member['support']:5s} "
               f"{member['speed']:4g} m/s mu {member['friction']:3g}: {row['verdict']:9s} "
               f"energy {row['energy_error_pct']:7.3f} %  steps {row['steps']:>7s}  "
-              f"{row['ns_per_element_step']:6.0f} ns/el-step  {row['seconds']:6.1f} s  "
+              f"{row['ns_per_element_step']:6.0f} ns/el-step  "
+              + (f"({row['ratio_to_structure']:4.1f}x the structure's "
+                 f"{row['structure_ns_per_element_step']:4.1f})  " if args.structure else "")
+              + f"{row['seconds']:6.1f} s  "
               f"{'ok' if ok else 'FLOOR NOT MET'}  {row['reason']}", flush=True)
     with open(os.path.join(args.out, "crush-family.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
