@@ -115,11 +115,13 @@ void BroadPhase::rebuild(const SurfaceFeatures& f, double inflation, bool self_c
   const double h = std::clamp(kSkinSteps * step_motion_, kMinHalfSkinFraction * extent,
                               kHalfSkinFraction * extent);
   allowance_ = node_box_;
-  for (Box& b : allowance_)
+  for (Box& b : allowance_) {
+    const double h_i = std::clamp(kSkinSteps * largest_side(b), kMinHalfSkinFraction * extent, h);
     for (size_t d = 0; d < 3; ++d) {
-      b.lo[d] -= h;
-      b.hi[d] += h;
+      b.lo[d] -= h_i;
+      b.hi[d] += h_i;
     }
+  }
   feature_boxes(topology_, allowance_, inflation, cached_, *loops_);
   hash_.find(f, cached_, self_contact, cache_, *loops_, team_);
 

@@ -498,3 +498,43 @@ TEST_CASE("broad phase: many bodies (one joined hull per body) equal brute force
   const SurfaceFeatures f = ccm::dcr::make_surface_features(mesh, surfaces);
   search_equals_brute_force(f, random_step(mesh, 0.001, 0.002, 13), 0.001, false);
 }
+
+TEST_CASE("broad phase: each node's skin covers its own motion", "[dcr][broad_phase]") {
+  // The right sphere moves 0.002 a step along -x, the left one rests. At the rebuild the right
+  // sphere's nodes take the largest skin and the left one's the smallest: when the left sphere
+  // then moves by three times the smallest skin (far less than the largest), the cache is
+  // rebuilt, and every step still equals the all-pairs filter.
+  const ModelMesh& mesh = two_spheres();
+  const SurfaceFeatures f =
+      ccm::dcr::make_surface_features(mesh, {"left/boundary", "right/boundary"});
+  const std::vector<int>& right = mesh.node_sets.at("right");
+  auto at = [&](double right_shift, double left_shift) {
+    std::vector<Vec3> x = mesh.X;
+    for (Vec3& p : x) p.x() += left_shift;
+    for (int i : right) x[static_cast<size_t>(i)].x() += -right_shift - left_shift;
+    return x;
+  };
+  BroadPhase bp;
+  Candidates got;
+  constexpr double kRight = 0.002;
+  const Step first{at(0.0, 0.0), at(kRight, 0.0)};
+  bp.find(f, first.x_start, first.x_end, 0.01, true, got);
+  REQUIRE(bp.stats().rebuilt);
+  REQUIRE(same(got, brute_force(f, first, 0.01, true)));
+  const double largest = bp.stats().half_skin;
+  const double smallest =
+      largest * BroadPhase::kMinHalfSkinFraction / BroadPhase::kHalfSkinFraction;
+  REQUIRE(largest ==
+          Approx(BroadPhase::kHalfSkinFraction / BroadPhase::kMinHalfSkinFraction * smallest));
+  REQUIRE(3.0 * smallest < 0.5 * largest);
+  // The right sphere's next steps stay inside its skin: no rebuild.
+  const Step second{at(kRight, 0.0), at(2 * kRight, 0.0)};
+  bp.find(f, second.x_start, second.x_end, 0.01, true, got);
+  CHECK_FALSE(bp.stats().rebuilt);
+  CHECK(same(got, brute_force(f, second, 0.01, true)));
+  // The left sphere moves by three smallest skins: outside its own allowance.
+  const Step third{at(2 * kRight, 0.0), at(3 * kRight, 3.0 * smallest)};
+  bp.find(f, third.x_start, third.x_end, 0.01, true, got);
+  CHECK(bp.stats().rebuilt);
+  CHECK(same(got, brute_force(f, third, 0.01, true)));
+}
