@@ -343,6 +343,11 @@ int main(int argc, char** argv) {
       "Cases left out of the fit, comma-separated, of the fitted case's "
       "configuration: each run with the starting and the calibrated "
       "parameters and scored on its own trials (--start and --end moved to its own contact onset)");
+  rig_calibrate->add_option(
+      "--fit-trials", rig_calibrate_args.fit_trials,
+      "Trials the search fits, comma-separated (default: every trial the run is scored on); "
+      "the run's other scored trials are left out of the fit and scored with the start and the "
+      "calibrated parameters");
   rig_calibrate->add_flag("!--no-profile", rig_calibrate_args.profile,
                           "Skip the parameters' spread after the fit (2-3 runs per parameter)");
   rig_calibrate->footer("Exit codes: 0 done, 1 internal error, 2 bad input (nothing written).");

@@ -4,6 +4,7 @@
 // and the best run are stored with their comparisons, the calibration with its parameters and every
 // evaluation, and before/after are printed.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <charconv>
 #include <cmath>
@@ -117,6 +118,7 @@ int calibrate(const RigCalibrateArgs& args) {
   if (args.max_evaluations < 1 || args.max_evaluations > 500)
     throw std::invalid_argument("--max-evals must lie in [1, 500]");
   const std::vector<rig::SearchParameter> params = search_parameters(args, in);
+  const std::vector<int> fit = read_fit_trials(args, in);
   std::vector<PredictionCase> predicted = read_prediction_cases(args, in, params);
   if (in.db.has_parent_path()) std::filesystem::create_directories(in.db.parent_path());
   db::RigStore store(in.db);
@@ -130,15 +132,17 @@ int calibrate(const RigCalibrateArgs& args) {
     const std::string label =
         fmt::format("{} eval {}/{}", in.rig_case->code, evaluation, args.max_evaluations);
     RigRunOutcome o = run_rig_once(in, common, with_values(in.parameters, params, x), label);
-    const bool ok = o.result.summary.verdict == Verdict::completed && o.objective;
-    history.push_back({values_text(params, x), ok ? o.objective : std::nullopt,
+    // The run keeps its objective over every scored trial; the search reads the fitted trials'.
+    const std::optional<double> fitted = fitted_objective(o, fit);
+    const bool ok = o.result.summary.verdict == Verdict::completed && fitted;
+    history.push_back({values_text(params, x), ok ? fitted : std::nullopt,
                        std::string(to_string(o.result.summary.verdict)),
                        o.result.summary.wall_seconds});
     if (!common.quiet)
       fmt::print("  eval {:>3}  {:<40} objective {}\n", evaluation, values_text(params, x),
-                 ok ? fmt::format("{:.5f}", *o.objective) : "- (" + history.back().status + ")");
+                 ok ? fmt::format("{:.5f}", *fitted) : "- (" + history.back().status + ")");
     if (first_and_best.empty()) first_and_best.push_back(o);
-    if (ok && (first_and_best.size() < 2 || *o.objective < *first_and_best[1].objective)) {
+    if (ok && (first_and_best.size() < 2 || *fitted < *fitted_objective(first_and_best[1], fit))) {
       if (first_and_best.size() < 2)
         first_and_best.push_back(o);
       else
@@ -148,13 +152,17 @@ int calibrate(const RigCalibrateArgs& args) {
     return *history.back().objective;
   };
   if (!common.quiet)
-    fmt::print("ccm rig calibrate {} ({} drive): {} of {}\n", in.rig_case->code, name_of(in.drive),
-               rig::kObjectiveName, scored_trials_text(in));
+    fmt::print(
+        "ccm rig calibrate {} ({} drive): {} of {}{}\n", in.rig_case->code, name_of(in.drive),
+        rig::kObjectiveName, scored_trials_text(in),
+        fit.empty() ? std::string() : fmt::format(", fitted on trial(s) {}", fmt::join(fit, ", ")));
   const rig::SearchResult result =
       rig::bounded_search(params, objective, {args.max_evaluations, 1e-3});
   const RigRunOutcome& before = first_and_best[0];
   const RigRunOutcome& after = first_and_best.size() > 1 ? first_and_best[1] : before;
-  if (!before.objective)
+  const std::optional<double> fitted_before = fitted_objective(before, fit),
+                              fitted_after = fitted_objective(after, fit);
+  if (!fitted_before)
     throw std::runtime_error("calibration: the starting run could not be compared (unstable)");
   const long long before_id = store.record_run(store_record(in, before, common, "calibration"));
   const long long after_id = store.record_run(store_record(in, after, common, "calibration"));
@@ -168,15 +176,16 @@ int calibrate(const RigCalibrateArgs& args) {
   rec.max_evaluations = args.max_evaluations;
   rec.before_run_id = before_id;
   rec.after_run_id = after_id;
-  rec.objective_before = *before.objective;
-  rec.objective_after = *after.objective;
+  rec.objective_before = *fitted_before;  // what the search minimised
+  rec.objective_after = *fitted_after;
   for (size_t i = 0; i < params.size(); ++i)
     rec.parameters.push_back({params[i].name, params[i].lower, params[i].upper, params[i].initial,
                               result.best[i], std::nullopt, std::nullopt});
   rec.history = history;
   const std::vector<rig::ParameterSpread> spread =
-      args.profile ? profile_calibration(in, common, params, result.best, result.best_objective)
-                   : std::vector<rig::ParameterSpread>{};
+      args.profile
+          ? profile_calibration(in, common, params, fit, result.best, result.best_objective)
+          : std::vector<rig::ParameterSpread>{};
   for (size_t i = 0; i < spread.size(); ++i) {
     rec.parameters[i].curvature = spread[i].curvature;
     rec.parameters[i].half_width = spread[i].half_width;
@@ -190,6 +199,7 @@ int calibrate(const RigCalibrateArgs& args) {
          store.record_run(store_record(c.inputs, p.calibrated, c.args, "calibration")),
          p.start.objective, p.calibrated.objective});
   }
+  rec.trials = trial_scores(in, fit, before, after);
   rec.started_at = started;
   rec.ended_at = utc_timestamp_now();
   const long long id = store.record_calibration(rec);
@@ -208,6 +218,7 @@ int calibrate(const RigCalibrateArgs& args) {
     fmt::print("\nAfter (rig_runs.id {}):\n{}{}", after_id, run_table(in, after),
                comparison_table(in, after));
     fmt::print("\nstored in {} (rig_calibrations.id {})\n", in.db.string(), id);
+    print_trial_scores(rec.trials, before, after);
     print_spread(spread);
     print_predictions(predictions);
   }

@@ -2,11 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <charconv>
 #include <sstream>
 #include <stdexcept>
 
 #include "app/rig_runner.hpp"
 #include "rig_models/calibrate/parameter_profile.hpp"
+#include "rig_models/calibrate/rig_objective.hpp"
 #include "rig_models/sim/run_window.hpp"
 
 namespace ccm {
@@ -81,9 +84,75 @@ std::vector<PredictionCase> read_prediction_cases(const RigCalibrateArgs& args,
   return out;
 }
 
+std::vector<int> read_fit_trials(const RigCalibrateArgs& args, const RigInputs& in) {
+  std::vector<int> fit;
+  std::vector<int> scored;
+  for (const rig::MeasuredTrial& t : in.scored) scored.push_back(t.trial);
+  const std::string which =
+      fmt::format("{} is scored on {}", in.rig_case->code, scored_trials_text(in));
+  for (const std::string& word : split_codes(args.fit_trials)) {
+    int trial = 0;
+    const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), trial);
+    if (ec != std::errc() || end != word.data() + word.size())
+      throw std::invalid_argument(fmt::format("--fit-trials {}: not a trial number", word));
+    if (std::find(scored.begin(), scored.end(), trial) == scored.end())
+      throw std::invalid_argument(
+          fmt::format("--fit-trials {}: not a trial the run is scored on ({})", trial, which));
+    if (std::find(fit.begin(), fit.end(), trial) != fit.end())
+      throw std::invalid_argument(fmt::format("--fit-trials {}: named twice", trial));
+    fit.push_back(trial);
+  }
+  if (!fit.empty() && fit.size() == scored.size())
+    throw std::invalid_argument(fmt::format(
+        "--fit-trials {}: leaves no trial out of the fit ({}); leave it out to fit them all",
+        args.fit_trials, which));
+  return fit;
+}
+
+std::optional<double> fitted_objective(const RigRunOutcome& o, const std::vector<int>& fit) {
+  if (fit.empty() || !o.comparison) return o.objective;
+  return rig::calibration_objective(*o.comparison, fit);
+}
+
+std::vector<db::RigCalibrationTrial> trial_scores(const RigInputs& in, const std::vector<int>& fit,
+                                                  const RigRunOutcome& before,
+                                                  const RigRunOutcome& after) {
+  auto alone = [](const RigRunOutcome& o, int trial) -> std::optional<double> {
+    if (!o.comparison) return std::nullopt;
+    return rig::calibration_objective(*o.comparison, std::vector<int>{trial});
+  };
+  std::vector<db::RigCalibrationTrial> out;
+  for (const rig::MeasuredTrial& t : in.scored)
+    out.push_back({t.trial, fit.empty() || std::find(fit.begin(), fit.end(), t.trial) != fit.end(),
+                   alone(before, t.trial), alone(after, t.trial)});
+  return out;
+}
+
+void print_trial_scores(const std::vector<db::RigCalibrationTrial>& trials,
+                        const RigRunOutcome& before, const RigRunOutcome& after) {
+  std::vector<int> left_out;
+  for (const db::RigCalibrationTrial& t : trials)
+    if (!t.fitted) left_out.push_back(t.trial);
+  if (left_out.empty()) return;
+  auto text = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:.5f}", *v) : std::string("-");
+  };
+  fmt::print("\nTrials of the fitted case ({} over each trial alone)\n", rig::kObjectiveName);
+  fmt::print("  {:<6} {:<10} {:>12} {:>12}\n", "trial", "", "start", "calibrated");
+  for (const db::RigCalibrationTrial& t : trials)
+    fmt::print("  {:<6} {:<10} {:>12} {:>12}\n", t.trial, t.fitted ? "fitted" : "left out",
+               text(t.objective_before), text(t.objective_after));
+  auto together = [&](const RigRunOutcome& o) -> std::optional<double> {
+    if (!o.comparison) return std::nullopt;
+    return rig::calibration_objective(*o.comparison, left_out);
+  };
+  fmt::print("  left out of the fit, together: {} -> {}\n", text(together(before)),
+             text(together(after)));
+}
+
 std::vector<rig::ParameterSpread> profile_calibration(
     const RigInputs& in, const RigCommonArgs& args, const std::vector<rig::SearchParameter>& params,
-    const std::vector<double>& best, double best_objective) {
+    const std::vector<int>& fit, const std::vector<double>& best, double best_objective) {
   int evaluation = 0;
   const rig::SearchObjective objective =
       [&](const std::vector<double>& x) -> std::optional<double> {
@@ -91,7 +160,7 @@ std::vector<rig::ParameterSpread> profile_calibration(
         run_rig_once(in, args, with_values(in.parameters, params, x),
                      fmt::format("{} profile {}", in.rig_case->code, ++evaluation));
     if (o.result.summary.verdict != Verdict::completed) return std::nullopt;
-    return o.objective;
+    return fitted_objective(o, fit);
   };
   std::vector<rig::ParameterSpread> spread =
       rig::profile_parameters(params, best, best_objective, objective, rig::ProfileSettings{});

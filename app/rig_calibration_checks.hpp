@@ -2,6 +2,9 @@
 //   - the spread of each parameter (rig_models/calibrate/parameter_profile.hpp: the objective's
 //     curvature along it and the half-width of a 5 % rise), with a warning for a parameter that
 //     ended on a bound of its range (its best may lie beyond);
+//   - the score of the calibrated parameters on trials of the fitted case left out of the fit
+//     (--fit-trials: the search fits some trials, the others are scored with the start's and the
+//     best run, the same runs);
 //   - the score of the calibrated parameters on cases left out of the fit (--predict): each run
 //     with the starting and with the calibrated parameters, scored on its own trials. One
 //     parameter set per configuration (R/F impactor x X/F artifact): a predicted case must share
@@ -14,6 +17,7 @@
 #include "app/rig_commands.hpp"
 #include "app/rig_inputs.hpp"
 #include "app/rig_output.hpp"
+#include "db/store/rig_store.hpp"
 #include "rig_models/calibrate/bounded_search.hpp"
 #include "rig_models/calibrate/parameter_profile.hpp"
 
@@ -37,11 +41,29 @@ std::vector<PredictionCase> read_prediction_cases(const RigCalibrateArgs& args,
                                                   const RigInputs& fitted,
                                                   const std::vector<rig::SearchParameter>& params);
 
-// The spread of each parameter at `best` (2-3 runs of the fitted case each), and a warning on
-// stderr for each that ended on a bound.
+// The trials --fit-trials names (empty without it: every scored trial is fitted). Throws
+// std::invalid_argument unless each is one of the trials the run is scored on (in.scored) and
+// at least one scored trial is left out.
+std::vector<int> read_fit_trials(const RigCalibrateArgs& args, const RigInputs& in);
+
+// What the search minimises: the objective over the fitted trials (rig_objective.hpp), over every
+// scored trial when `fit` is empty; none when the run was not compared.
+std::optional<double> fitted_objective(const RigRunOutcome& o, const std::vector<int>& fit);
+
+// Per scored trial, fitted or left out, the objective of the starting and of the best run over
+// that trial alone.
+std::vector<db::RigCalibrationTrial> trial_scores(const RigInputs& in, const std::vector<int>& fit,
+                                                  const RigRunOutcome& before,
+                                                  const RigRunOutcome& after);
+// Prints them, and the left-out trials' objective together (nothing without --fit-trials).
+void print_trial_scores(const std::vector<db::RigCalibrationTrial>& trials,
+                        const RigRunOutcome& before, const RigRunOutcome& after);
+
+// The spread of each parameter at `best` (2-3 runs of the fitted case each, scored on the fitted
+// trials `fit`), and a warning on stderr for each that ended on a bound.
 std::vector<rig::ParameterSpread> profile_calibration(
     const RigInputs& in, const RigCommonArgs& args, const std::vector<rig::SearchParameter>& params,
-    const std::vector<double>& best, double best_objective);
+    const std::vector<int>& fit, const std::vector<double>& best, double best_objective);
 void print_spread(const std::vector<rig::ParameterSpread>& spread);
 
 // Each predicted case run with the starting and with the calibrated parameters.

@@ -14,8 +14,10 @@ struct RigCalibrateArgs {
   std::string params;               // comma-separated names (rig_models/sim/run_parameters.hpp)
   std::vector<std::string> bounds;  // name=lower:upper
   int max_evaluations = 12;
-  std::string predict;  // comma-separated cases scored with the calibrated parameters, unfitted
-  bool profile = true;  // the parameters' spread after the fit (2-3 runs each)
+  std::string predict;     // comma-separated cases scored with the calibrated parameters, unfitted
+  std::string fit_trials;  // comma-separated trial numbers the search fits; the other scored
+                           // trials are left out of the fit and scored after it
+  bool profile = true;     // the parameters' spread after the fit (2-3 runs each)
 };
 
 // Exit codes (app/run_command.hpp): 0 completed, 3 unstable (run), 2 bad input (nothing

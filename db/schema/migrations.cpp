@@ -430,8 +430,22 @@ CREATE TABLE validation_curves (
 );
 )sql";
 
-constexpr std::array<const char*, 9> kSteps = {kStep1, kStep2, kStep3, kStep4, kStep5,
-                                               kStep6, kStep7, kStep8, kStep9};
+// Step 10: a rig calibration fitted on some of a case's trials and scored on the others
+// (`ccm rig calibrate --fit-trials`): per scored trial, whether the fit saw it, and the objective
+// of the starting and of the calibrated run over that trial alone (NULL: not compared).
+constexpr const char* kStep10 = R"sql(
+CREATE TABLE rig_calibration_trials (
+  calibration_id INTEGER NOT NULL REFERENCES rig_calibrations(id) ON DELETE CASCADE,
+  trial INTEGER NOT NULL,
+  fitted INTEGER NOT NULL CHECK (fitted IN (0, 1)),
+  objective_before REAL,
+  objective_after REAL,
+  PRIMARY KEY (calibration_id, trial)
+);
+)sql";
+
+constexpr std::array<const char*, 10> kSteps = {kStep1, kStep2, kStep3, kStep4, kStep5,
+                                                kStep6, kStep7, kStep8, kStep9, kStep10};
 
 int pragma_int(Connection& connection, const char* pragma) {
   Statement query(connection, std::string("PRAGMA ") + pragma);

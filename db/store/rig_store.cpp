@@ -277,6 +277,15 @@ long long RigStore::record_calibration(const RigCalibrationRecord& r) {
     w.bind(5, x.objective_start).bind(6, x.objective_calibrated);
     w.run();
   }
+  Statement t(*connection_,
+              "INSERT INTO rig_calibration_trials (calibration_id, trial, fitted, "
+              "objective_before, objective_after) VALUES (?1, ?2, ?3, ?4, ?5)");
+  for (const RigCalibrationTrial& x : r.trials) {
+    t.reset();
+    t.bind(1, id).bind(2, x.trial).bind(3, x.fitted ? 1 : 0).bind(4, x.objective_before);
+    t.bind(5, x.objective_after);
+    t.run();
+  }
   Statement e(*connection_,
               "INSERT INTO rig_calibration_evaluations (calibration_id, evaluation, parameters, "
               "objective, status, wall_seconds) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");

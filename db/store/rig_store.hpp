@@ -68,6 +68,14 @@ struct RigCalibrationPrediction {
   std::optional<double> objective_start, objective_calibrated;  // none: not compared
 };
 
+// A trial the calibrated case is scored on: fitted (the search saw it) or left out of the fit,
+// with the objective of the starting and the calibrated run over this trial alone.
+struct RigCalibrationTrial {
+  int trial = 0;
+  bool fitted = true;
+  std::optional<double> objective_before, objective_after;  // none: not compared
+};
+
 struct RigCalibrationEvaluation {
   std::string parameters;
   std::optional<double> objective;  // none when the run was unstable
@@ -83,6 +91,7 @@ struct RigCalibrationRecord {
   std::vector<RigCalibrationParameter> parameters;
   std::vector<RigCalibrationEvaluation> history;
   std::vector<RigCalibrationPrediction> predictions;
+  std::vector<RigCalibrationTrial> trials;
   std::string started_at, ended_at;
 };
 

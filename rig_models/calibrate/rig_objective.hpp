@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "rig_models/compare/case_comparison.hpp"
 
@@ -17,7 +18,14 @@ inline constexpr std::string_view kObjectiveName =
 // None when no channel has a normalised RMSE (every measured channel constant).
 std::optional<double> calibration_objective(const CaseComparison& comparison);
 
-// One channel's nRMSE averaged over the trials that have one.
-std::optional<double> mean_nrmse(const ChannelAgainstTrials& channel);
+// The objective over the trials numbered in `trials` alone (a calibration fitted on some trials
+// and scored on the others): each channel's nRMSE averaged over those of them that have one.
+std::optional<double> calibration_objective(const CaseComparison& comparison,
+                                            const std::vector<int>& trials);
+
+// One channel's nRMSE averaged over the trials that have one; with `in_trials` (per trial of
+// the comparison, 1 where it counts), over those alone.
+std::optional<double> mean_nrmse(const ChannelAgainstTrials& channel,
+                                 const std::vector<char>* in_trials = nullptr);
 
 }  // namespace ccm::rig

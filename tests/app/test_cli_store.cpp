@@ -80,9 +80,10 @@ TEST_CASE(
   SECTION("a store of an older schema is read (migrated in memory) and not changed") {
     const fs::path db = synthetic_store(dir, "old.sqlite");
     {
-      db::Connection c(db);  // back to schema 4: without the tables and columns of steps 5-9
+      db::Connection c(db);  // back to schema 4: without the tables and columns of steps 5-10
       c.exec(
-          "DROP TABLE validation_scores; DROP TABLE validation_curves; DROP TABLE validations; "
+          "DROP TABLE rig_calibration_trials; DROP TABLE validation_scores; DROP TABLE "
+          "validation_curves; DROP TABLE validations; "
           "DROP TABLE comparisons; DROP TABLE study_grids; DROP TABLE rig_calibration_predictions; "
           "ALTER TABLE rig_calibration_parameters DROP COLUMN curvature; ALTER TABLE "
           "rig_calibration_parameters DROP COLUMN half_width; PRAGMA user_version = 4");

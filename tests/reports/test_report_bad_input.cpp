@@ -122,9 +122,10 @@ TEST_CASE("ccm report reads an older store holding runs and reports them", "[rep
   test::write_synthetic_study(file);
   {
     // A schema-1 store: the run ledger (schema step 1) without the tables and columns of steps
-    // 2-9.
+    // 2-10.
     db::Connection c(file);
     c.exec("DROP TABLE validation_scores; DROP TABLE validation_curves; DROP TABLE validations;");
+    c.exec("DROP TABLE rig_calibration_trials;");       // step 10's
     c.exec("DROP TABLE rig_calibration_predictions;");  // step 8's
     c.exec(
         "DROP TABLE rig_calibration_evaluations; DROP TABLE rig_calibration_parameters; "

@@ -222,6 +222,59 @@ TEST_CASE("ccm rig calibrate FF025 (short): pin friction", "[rig][rig-cli][heavy
   if (have_dev_data()) check_short_calibration("FF025", "mu_s,mu_k", true);
 }
 
+// Fitted on trial 1, scored on trial 3 as well: the search's objective is trial 1's alone, the
+// store keeps both trials with their objective before and after, and a trial the run is not scored
+// on, or fitting every scored trial, is refused before any run.
+TEST_CASE("ccm rig calibrate RX025 (short) --fit-trials 1: trial 3 left out of the fit",
+          "[rig][rig-cli][heavy]") {
+  if (!have_dev_data()) return;
+  test::TempDir dir;
+  const std::string common =
+      fmt::format("--data '{}' --geometry '{}' {} --no-profile", kDevData.string(),
+                  kShortGeometry.string(), kCalibrationWindow);
+  const fs::path db_file = dir.path / "cal.sqlite";
+  const Shell s = shell(rig(fmt::format("calibrate RX025 --params clamp_stiffness --max-evals 2 "
+                                        "{} --fit-trials 1 --db '{}'",
+                                        common, db_file.string())),
+                        dir);
+  INFO(s.out << s.err);
+  REQUIRE(s.status == 0);
+  CHECK(s.out.find("fitted on trial(s) 1") != std::string::npos);
+  CHECK(s.out.find("left out of the fit, together:") != std::string::npos);
+  db::Connection c(db_file);
+  CHECK(test::count_rows(c, "SELECT count(*) FROM rig_calibration_trials") == 2);
+  CHECK(scalar(c, "SELECT fitted FROM rig_calibration_trials WHERE trial = 1") == 1.0);
+  CHECK(scalar(c, "SELECT fitted FROM rig_calibration_trials WHERE trial = 3") == 0.0);
+  // What the search minimised is trial 1's objective alone: the calibration's before and after.
+  CHECK(scalar(c, "SELECT objective_before FROM rig_calibrations") ==
+        Approx(scalar(c, "SELECT objective_before FROM rig_calibration_trials WHERE trial = 1"))
+            .epsilon(1e-12));
+  CHECK(scalar(c, "SELECT objective_after FROM rig_calibrations") ==
+        Approx(scalar(c, "SELECT objective_after FROM rig_calibration_trials WHERE trial = 1"))
+            .epsilon(1e-12));
+  // Trial 3 is scored, and differently from trial 1 (the comparison is not of one trial twice).
+  const double left_out = scalar(c,
+                                 "SELECT objective_before FROM rig_calibration_trials WHERE "
+                                 "trial = 3");
+  CHECK(left_out > 0.0);
+  CHECK(left_out !=
+        scalar(c, "SELECT objective_before FROM rig_calibration_trials WHERE trial = 1"));
+  for (const auto& [trials, why] : {std::pair<std::string, std::string>{
+                                        "2", "--fit-trials 2: not a trial the run is scored on"},
+                                    {"1,3", "--fit-trials 1,3: leaves no trial out of the fit"},
+                                    {"x", "--fit-trials x: not a trial number"}}) {
+    const fs::path db = dir.path / "refused.sqlite";
+    const Shell refused = shell(rig(fmt::format("calibrate RX025 --params clamp_stiffness {} "
+                                                "--fit-trials {} --db '{}'",
+                                                common, trials, db.string())),
+                                dir);
+    INFO(refused.err);
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find(why) != std::string::npos);
+    CHECK_FALSE(fs::exists(db));
+  }
+}
+
 TEST_CASE(
     "ccm rig calibrate RX025 (short) --predict RX050: the parameter's spread, and the score "
     "left out of the fit is the one ccm rig run gives that case",

@@ -86,3 +86,25 @@ TEST_CASE("calibration objective: the mean over channels of the trials' mean nRM
   c.velocity = c.angle = c.pressure = channel({std::nullopt});
   CHECK(!calibration_objective(c));
 }
+
+TEST_CASE("calibration objective over some trials: those trials' nRMSE alone", "[rig][calibrate]") {
+  // Trials 1 and 3 (trial 2 drove the run): per channel, trial 1's and trial 3's nRMSE.
+  CaseComparison c;
+  c.trials = {1, 3};
+  auto channel = [](std::optional<double> first, std::optional<double> second) {
+    ChannelAgainstTrials a;
+    for (auto v : {first, second}) {
+      ChannelComparison cc;
+      cc.nrmse = v;
+      a.per_trial.push_back(cc);
+    }
+    return a;
+  };
+  c.velocity = channel(0.1, 0.3);
+  c.angle = channel(0.4, std::nullopt);  // trial 3's angle constant: no nRMSE
+  c.pressure = channel(0.6, 0.9);
+  CHECK(calibration_objective(c, {1}).value() == Approx((0.1 + 0.4 + 0.6) / 3.0));
+  CHECK(calibration_objective(c, {3}).value() == Approx((0.3 + 0.9) / 2.0));
+  CHECK(calibration_objective(c, {1, 3}).value() == Approx(calibration_objective(c).value()));
+  CHECK(!calibration_objective(c, {2}));  // not a trial of the comparison
+}
