@@ -261,6 +261,13 @@ std::vector<RigCalibrationRecord> load_rig_calibrations(Connection& c) {
     while (w.step())
       k.predictions.push_back({w.column_text(0), w.column_int(1), w.column_int(2),
                                w.column_optional_double(3), w.column_optional_double(4)});
+    Statement t(c,
+                "SELECT trial, fitted, objective_before, objective_after FROM "
+                "rig_calibration_trials WHERE calibration_id = ?1 ORDER BY trial");
+    t.bind(1, id);
+    while (t.step())
+      k.trials.push_back({static_cast<int>(t.column_int(0)), t.column_int(1) != 0,
+                          t.column_optional_double(2), t.column_optional_double(3)});
     Statement e(c,
                 "SELECT parameters, objective, status, wall_seconds FROM "
                 "rig_calibration_evaluations WHERE calibration_id = ?1 ORDER BY evaluation");

@@ -25,9 +25,12 @@ Section rig_section(const RigReportData& rig) {
     s.tables.push_back(rig_runs_table(rig));
   }
   if (!rig.calibrations.empty()) s.tables.push_back(rig_calibration_table(rig));
-  const bool any_left_out =
-      std::any_of(rig.calibrations.begin(), rig.calibrations.end(),
-                  [](const db::RigCalibrationRecord& k) { return !k.predictions.empty(); });
+  const bool any_left_out = std::any_of(
+      rig.calibrations.begin(), rig.calibrations.end(), [](const db::RigCalibrationRecord& k) {
+        return !k.predictions.empty() ||
+               std::any_of(k.trials.begin(), k.trials.end(),
+                           [](const db::RigCalibrationTrial& t) { return !t.fitted; });
+      });
   if (any_left_out) s.tables.push_back(rig_prediction_table(rig));
   return s;
 }

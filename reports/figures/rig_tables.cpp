@@ -108,9 +108,10 @@ Table rig_calibration_table(const RigReportData& rig) {
 Table rig_prediction_table(const RigReportData& rig) {
   Table t{.id = "rig-left-out",
           .caption =
-              "Cases left out of each calibration (ccm rig calibrate --predict): the objective "
-              "with the starting and with the calibrated parameters, each scored on the case's "
-              "own trials. A calibration that generalises lowers both the fitted and these.",
+              "Cases and trials left out of each calibration: a case of --predict scored on its "
+              "own trials, a trial of the fitted case left out by --fit-trials scored alone; the "
+              "objective with the starting and with the calibrated parameters. A calibration "
+              "that generalises lowers both the fitted and these.",
           .header = {"fitted case", "parameters", "left-out case", "objective with the start",
                      "objective calibrated", "runs (rig_runs.id)"}};
   for (const db::RigCalibrationRecord& k : rig.calibrations) {
@@ -121,6 +122,13 @@ Table rig_prediction_table(const RigReportData& rig) {
       t.rows.push_back({fmt::format("{} ({} drive)", k.case_code, k.drive), names, p.case_code,
                         optional_cell(p.objective_start), optional_cell(p.objective_calibrated),
                         fmt::format("{}, {}", p.start_run_id, p.calibrated_run_id)});
+    for (const db::RigCalibrationTrial& trial : k.trials)
+      if (!trial.fitted)
+        t.rows.push_back({fmt::format("{} ({} drive)", k.case_code, k.drive), names,
+                          fmt::format("{} trial {}", k.case_code, trial.trial),
+                          optional_cell(trial.objective_before),
+                          optional_cell(trial.objective_after),
+                          fmt::format("{}, {}", k.before_run_id, k.after_run_id)});
   }
   return t;
 }

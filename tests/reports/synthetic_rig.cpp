@@ -86,6 +86,7 @@ long long write_synthetic_rig(const std::filesystem::path& file) {
   r.row.objective = 0.3;
   const long long left_out_calibrated = store.record_run(r);
   k.predictions = {{"RX050", left_out_start, left_out_calibrated, 0.5, 0.3}};
+  k.trials = {{1, true, 0.4, 0.25}, {3, false, 0.45, 0.35}};  // fitted on trial 1
   k.history = {{"pin_damping=0.5", 0.4, "completed", 1.0},
                {"pin_damping=1.25", 0.25, "completed", 1.0}};
   k.started_at = k.ended_at = "2026-01-01T00:00:00.000Z";

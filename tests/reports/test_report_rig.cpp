@@ -169,12 +169,16 @@ TEST_CASE("report: ccm report writes the rig figures and tables with the stored 
   CHECK(calibrations[1][9] == cell(0.4));
   CHECK(calibrations[1][10] == cell(0.25));
   const test::CsvRows left_out = test::read_csv(out / "rig-left-out.csv");
-  REQUIRE(left_out.size() == 2);
+  REQUIRE(left_out.size() == 3);
   CHECK(left_out[1][0] == "RX025 (open-loop drive)");
   CHECK(left_out[1][1] == "pin_damping");
   CHECK(left_out[1][2] == "RX050");
   CHECK(left_out[1][3] == cell(0.5));
   CHECK(left_out[1][4] == cell(0.3));
+  // The fitted case's trial 3, left out of the fit (--fit-trials 1); trial 1 was fitted.
+  CHECK(left_out[2][2] == "RX025 trial 3");
+  CHECK(left_out[2][3] == cell(0.45));
+  CHECK(left_out[2][4] == cell(0.35));
 }
 
 }  // namespace
