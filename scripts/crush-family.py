@@ -145,6 +145,12 @@ def summary_value(text, key):
     return m.group(1).strip('"') if m else ""
 
 
+def solves_at_cap(warning):
+    """The velocity solves the DCR stopped at their sweep cap, from the run's warning (0: none)."""
+    m = re.search(r"(\d+) velocity solves", warning)
+    return int(m.group(1)) if m else 0
+
+
 def run_member(ccm, folder, index, member, structure=False):
     path = os.path.join(folder, f"member{index:02d}.toml")
     with open(path, "w") as f:
@@ -168,6 +174,7 @@ def run_member(ccm, folder, index, member, structure=False):
         "ns_per_element_step": float(summary_value(text, "ns_per_element_step") or "nan"),
         "reason": summary_value(text, "reason"),
         "warning": summary_value(text, "warning"),
+        "solves_at_cap": solves_at_cap(summary_value(text, "warning")),
         "seconds": round(seconds, 1),
     })
     if proc.returncode not in (0, 3):
@@ -215,6 +222,7 @@ def main():
         print(f"{k:2d} wall {member['wall_tets']:5.3g} h {member['support']:5s} "
               f"{member['speed']:4g} m/s mu {member['friction']:3g}: {row['verdict']:9s} "
               f"energy {row['energy_error_pct']:7.3f} %  steps {row['steps']:>7s}  "
+              f"at cap {row['solves_at_cap']:5d}  "
               f"{row['ns_per_element_step']:6.0f} ns/el-step  "
               + (f"({row['ratio_to_structure']:4.1f}x the structure's "
                  f"{row['structure_ns_per_element_step']:4.1f})  " if args.structure else "")
