@@ -290,6 +290,30 @@ ElementSet make_element_set(const ModelMesh& mesh) {
   return es;
 }
 
+namespace {
+
+// The nodal passes and every phase's slabs, in order; inside a parallel region each `omp for`
+// shares a phase's slabs among the team, outside one the calling thread runs them all.
+void evaluate_phases(const ElementSet& elements, const PaddedVec3* xp, PaddedVec3* fp,
+                     bool with_energy, std::vector<SlabTotals>& totals) {
+  const ElementSchedule& schedule = elements.schedule;
+  update_nodal_pressures(elements, xp);
+  for (const std::vector<int>& phase : schedule.phases) {
+    // Static: each thread takes the same contiguous run of a phase's slabs at every step, so
+    // the nodal forces it writes stay in its own core's cache (a dynamic assignment moved them
+    // between the cores at every step: docs/parallel.md, "The slow mode").
+#pragma omp for schedule(static)
+    for (size_t k = 0; k < phase.size(); ++k) {
+      const auto s = static_cast<size_t>(phase[k]);
+      const Slab& slab = schedule.slabs[s];
+      totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp, fp,
+                           with_energy);
+    }
+  }
+}
+
+}  // namespace
+
 InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const Vec3> x,
                                         std::span<Vec3> f, std::span<double> block_energy,
                                         int threads) {
@@ -312,21 +336,13 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
   // One parallel region for the whole evaluation: the nodal passes of the nodal-pressure blocks
   // (nodal_pressure.hpp; none: nothing), then the slabs. The slabs of one phase share no node;
   // the barrier at the end of each `omp for` keeps the phases in order (element_schedule.hpp).
-#pragma omp parallel num_threads(threads) if (threads > 1)
-  {
-    update_nodal_pressures(elements, xp);
-    for (const std::vector<int>& phase : schedule.phases) {
-      // Static: each thread takes the same contiguous run of a phase's slabs at every step, so
-      // the nodal forces it writes stay in its own core's cache (a dynamic assignment moved them
-      // between the cores at every step: docs/parallel.md, "The slow mode").
-#pragma omp for schedule(static)
-      for (size_t k = 0; k < phase.size(); ++k) {
-        const auto s = static_cast<size_t>(phase[k]);
-        const Slab& slab = schedule.slabs[s];
-        totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp,
-                             fp, with_energy);
-      }
-    }
+  // One thread enters no region: outside one, the `omp for`s run in order without a barrier
+  // (a region of one thread would still wake a futex at each: engine/threads/index_loop.hpp).
+  if (threads > 1) {
+#pragma omp parallel num_threads(threads)
+    evaluate_phases(elements, xp, fp, with_energy, totals);
+  } else {
+    evaluate_phases(elements, xp, fp, with_energy, totals);
   }
   // Fixed-order combination: slab order, whatever thread ran which slab.
   if (with_energy) std::fill(block_energy.begin(), block_energy.end(), 0.0);

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "engine/threads/index_loop.hpp"
+
 namespace ccm {
 
 inline constexpr int kSumChunk = 4096;
@@ -14,13 +16,13 @@ template <class Term>
 double fixed_order_sum(int n, int threads, Term term) {
   const int chunks = (n + kSumChunk - 1) / kSumChunk;
   std::vector<double> partial(static_cast<size_t>(chunks), 0.0);
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1 && chunks > 1)
-  for (int c = 0; c < chunks; ++c) {
+  for_each_index(static_cast<size_t>(chunks), threads, threads > 1 && chunks > 1, [&](size_t k) {
+    const int c = static_cast<int>(k);
     const int end = std::min(n, (c + 1) * kSumChunk);
     double s = 0.0;
     for (int i = c * kSumChunk; i < end; ++i) s += term(i);
-    partial[static_cast<size_t>(c)] = s;
-  }
+    partial[k] = s;
+  });
   double total = 0.0;
   for (double p : partial) total += p;
   return total;

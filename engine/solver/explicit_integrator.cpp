@@ -12,6 +12,7 @@
 #include "engine/body/rigid_bodies.hpp"
 #include "engine/monitor/fixed_order_sum.hpp"
 #include "engine/solver/lumped_mass.hpp"
+#include "engine/threads/index_loop.hpp"
 #include "engine/threads/thread_count.hpp"
 
 namespace ccm {
@@ -256,12 +257,11 @@ void CentralDifference::count_step(const StepChoice& step, double t_n) {
 void CentralDifference::predict(double dt) {
   const double half_dt = 0.5 * dt;
   const auto n = s_.x.size();
-#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
-  for (size_t i = 0; i < n; ++i) {
+  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) {
     s_.v[i] += half_dt * s_.a[i];
     s_.x[i] += dt * s_.v[i];
     x_padded_[i] = padded(s_.x[i]);
-  }
+  });
   x_padded_current_ = true;
   if (rigid_.empty()) return;
   rigid_.predict(s_, dt, s_.t);
@@ -277,12 +277,11 @@ void CentralDifference::predict(double dt) {
 void CentralDifference::evaluate(bool with_energy) {
   const auto n = s_.f.size();
   const bool copy_x = !x_padded_current_;
-#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
-  for (size_t i = 0; i < n; ++i) {
+  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) {
     s_.f[i].setZero();
     f_internal_[i] = PaddedVec3{};
     if (copy_x) x_padded_[i] = padded(s_.x[i]);
-  }
+  });
   x_padded_current_ = false;
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
   for (StateLoad* load : opt_.loads) load->add_forces(s_, s_.f);
@@ -294,8 +293,9 @@ void CentralDifference::evaluate(bool with_energy) {
   if (opt_.coupling) couple_evaluation(with_energy);
   if (opt_.contact) opt_.contact->add_forces(s_);
   const Vec3 g = model_.bcs.gravity;
-#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
-  for (size_t i = 0; i < n; ++i) s_.a[i] = s_.inv_m[i] * (s_.f[i] + unpadded(f_internal_[i])) + g;
+  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) {
+    s_.a[i] = s_.inv_m[i] * (s_.f[i] + unpadded(f_internal_[i])) + g;
+  });
   rigid_.gather(s_, g);
 }
 
@@ -341,8 +341,7 @@ void CentralDifference::apply_fixed_nodes() {
 void CentralDifference::correct(double dt) {
   const double half_dt = 0.5 * dt;
   const auto n = s_.v.size();
-#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_nodes())
-  for (size_t i = 0; i < n; ++i) s_.v[i] += half_dt * s_.a[i];
+  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) { s_.v[i] += half_dt * s_.a[i]; });
   rigid_.finish(s_, dt);
 }
 
