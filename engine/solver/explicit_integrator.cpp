@@ -257,10 +257,16 @@ void CentralDifference::count_step(const StepChoice& step, double t_n) {
 void CentralDifference::predict(double dt) {
   const double half_dt = 0.5 * dt;
   const auto n = s_.x.size();
-  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) {
-    s_.v[i] += half_dt * s_.a[i];
-    s_.x[i] += dt * s_.v[i];
-    x_padded_[i] = padded(s_.x[i]);
+  // The arrays' addresses in locals (here and in the loops below): otherwise a store through one
+  // may, as far as the compiler can tell, change another's address, and it reloads them per node.
+  Vec3* x = s_.x.data();
+  Vec3* v = s_.v.data();
+  const Vec3* a = s_.a.data();
+  PaddedVec3* xp = x_padded_.data();
+  for_each_index(n, threads_, parallel_nodes(), [=](size_t i) {
+    v[i] += half_dt * a[i];
+    x[i] += dt * v[i];
+    xp[i] = padded(x[i]);
   });
   x_padded_current_ = true;
   if (rigid_.empty()) return;
@@ -277,10 +283,14 @@ void CentralDifference::predict(double dt) {
 void CentralDifference::evaluate(bool with_energy) {
   const auto n = s_.f.size();
   const bool copy_x = !x_padded_current_;
-  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) {
-    s_.f[i].setZero();
-    f_internal_[i] = PaddedVec3{};
-    if (copy_x) x_padded_[i] = padded(s_.x[i]);
+  Vec3* f = s_.f.data();
+  PaddedVec3* fi = f_internal_.data();
+  PaddedVec3* xp = x_padded_.data();
+  const Vec3* x = s_.x.data();
+  for_each_index(n, threads_, parallel_nodes(), [=](size_t i) {
+    f[i].setZero();
+    fi[i] = PaddedVec3{};
+    if (copy_x) xp[i] = padded(x[i]);
   });
   x_padded_current_ = false;
   for (const SurfaceLoad& load : model_.bcs.loads) load.add_to(s_.f, s_.t);
@@ -293,9 +303,12 @@ void CentralDifference::evaluate(bool with_energy) {
   if (opt_.coupling) couple_evaluation(with_energy);
   if (opt_.contact) opt_.contact->add_forces(s_);
   const Vec3 g = model_.bcs.gravity;
-  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) {
-    s_.a[i] = s_.inv_m[i] * (s_.f[i] + unpadded(f_internal_[i])) + g;
-  });
+  Vec3* a = s_.a.data();
+  const double* inv_m = s_.inv_m.data();
+  const Vec3* f_ext = s_.f.data();
+  const PaddedVec3* f_int = f_internal_.data();
+  for_each_index(n, threads_, parallel_nodes(),
+                 [=](size_t i) { a[i] = inv_m[i] * (f_ext[i] + unpadded(f_int[i])) + g; });
   rigid_.gather(s_, g);
 }
 
@@ -341,7 +354,9 @@ void CentralDifference::apply_fixed_nodes() {
 void CentralDifference::correct(double dt) {
   const double half_dt = 0.5 * dt;
   const auto n = s_.v.size();
-  for_each_index(n, threads_, parallel_nodes(), [&](size_t i) { s_.v[i] += half_dt * s_.a[i]; });
+  Vec3* v = s_.v.data();
+  const Vec3* a = s_.a.data();
+  for_each_index(n, threads_, parallel_nodes(), [=](size_t i) { v[i] += half_dt * a[i]; });
   rigid_.finish(s_, dt);
 }
 
