@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "app/output_file.hpp"
+#include "app/setup_time.hpp"
 #include "bench_test/bench_scores.hpp"
 #include "bench_test/rig_case_scores.hpp"
 #include "records/provenance/version.hpp"
@@ -140,6 +141,7 @@ std::string run_table(const RigInputs& in, const RigRunOutcome& o) {
     row("", fmt::format("{:<11} {:>5} el., {:.4g} kg, rho {:.5g} kg/m^3 ({}), E {:.4g} Pa", p.name,
                         p.elements, p.mass, p.material.rho,
                         p.density_source.starts_with("tuned") ? "tuned" : "given", p.material.E));
+  row("set-up", setup_time_text(o.setup_seconds, o.meshing));
   row("steps", fmt::format("{}", s.steps));
   row("dt", fmt::format("initial {:.4g} s, min {:.4g} s, max {:.4g} s", s.dt_initial, s.dt_min,
                         s.dt_max));
@@ -306,9 +308,11 @@ void write_run_files(const fs::path& out, const RigInputs& in, const RigRunOutco
       toml_float(r.model.artifact_mass), toml_float(r.model.artifact_inertia),
       toml_float(r.model.sensor_area), toml_float(r.model.sensor_mesh_area));
   t += fmt::format(
-      "\n[run]\nsteps = {}\ndt_initial = {}\ndt_min = {}\ndt_max = {}\n"
+      "\n[run]\nsetup_seconds = {}  # {}\nmeshes_made = {}\nmeshes_from_cache = {}\n"
+      "steps = {}\ndt_initial = {}\ndt_min = {}\ndt_max = {}\n"
       "wall_seconds = {}\nenergy_balance_error = {}\n",
-      s.steps, toml_float(s.dt_initial), toml_float(s.dt_min), toml_float(s.dt_max),
+      toml_float(o.setup_seconds), setup_time_text(o.setup_seconds, o.meshing), o.meshing.misses,
+      o.meshing.hits, s.steps, toml_float(s.dt_initial), toml_float(s.dt_min), toml_float(s.dt_max),
       toml_float(s.wall_seconds), toml_float(s.energy_balance_error));
   if (s.verdict == Verdict::unstable)
     t += fmt::format("instability = {}\n", toml_string(instability(s.instability)));

@@ -12,6 +12,7 @@
 
 #include "app/rig_inputs.hpp"
 #include "db/store/rig_store.hpp"
+#include "engine/mesh/mesh_cache.hpp"
 #include "rig_models/compare/case_comparison.hpp"
 #include "rig_models/compare/measured_spread.hpp"
 #include "rig_models/sim/rig_run.hpp"
@@ -26,6 +27,8 @@ struct RigRunOutcome {
   std::optional<rig::MeasuredSpread> measured;
   std::optional<double> objective;  // calibration objective (rig_objective.hpp)
   std::string started_at, ended_at;
+  double setup_seconds = 0.0;  // from the call to the first step: meshing, masses, the scene
+  MeshCacheStats meshing;      // what the mesh cache did meanwhile
 };
 
 // Compares the run with the trials it is scored on (in.scored; none without data) and measures

@@ -1,8 +1,10 @@
 #include "app/rig_runner.hpp"
 
+#include <chrono>
 #include <memory>
 
 #include "app/progress_line.hpp"
+#include "app/setup_time.hpp"
 #include "io/fields/field_recorder.hpp"
 #include "records/provenance/timestamp.hpp"
 
@@ -22,19 +24,25 @@ RigRunOutcome run_rig_once(const RigInputs& in, const RigCommonArgs& args,
   req.parameters = parameters;
   ProgressLine progress(label);
   req.progress = progress.on_terminal(args.quiet);
-  // --fields: the recorder is made once the model is built (rig_run.hpp `instrument`).
+  // The set-up ends when the model is built (rig_run.hpp `instrument`); with --fields, the
+  // recorder is made then.
   std::unique_ptr<fields::FieldRecorder> recorder;
-  if (args.fields && args.out)
-    req.instrument = [&](const Model& model, RunOptions& options) {
-      std::filesystem::create_directories(*args.out);
-      const double interval =
-          args.field_interval.value_or(kRigFieldEvery * options.time.output_interval);
-      recorder = std::make_unique<fields::FieldRecorder>(
-          model,
-          fields::FieldRequest{fields::all_fields(), interval, "ccm rig run " + in.rig_case->code},
-          *args.out);
-      recorder->attach(options);
-    };
+  const MeshCacheStats before = mesh_cache_stats();
+  const auto start = std::chrono::steady_clock::now();
+  req.instrument = [&](const Model& model, RunOptions& options) {
+    o.setup_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    o.meshing = mesh_cache_delta(before, mesh_cache_stats());
+    if (!args.fields || !args.out) return;
+    std::filesystem::create_directories(*args.out);
+    const double interval =
+        args.field_interval.value_or(kRigFieldEvery * options.time.output_interval);
+    recorder = std::make_unique<fields::FieldRecorder>(
+        model,
+        fields::FieldRequest{fields::all_fields(), interval, "ccm rig run " + in.rig_case->code},
+        *args.out);
+    recorder->attach(options);
+  };
   o.result = rig::run_rig({in.cases, in.geometry}, *in.rig_case, req);
   if (recorder) recorder->finish();
   progress.finish();

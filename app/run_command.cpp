@@ -20,6 +20,7 @@
 
 #include "app/output_file.hpp"
 #include "app/progress_line.hpp"
+#include "app/setup_time.hpp"
 #include "config/text_file.hpp"
 #include "engine/distributed/distributed_run.hpp"
 #include "engine/mesh/mesh_cache.hpp"
@@ -79,17 +80,7 @@ struct Prepared : SceneRun {
   MeshCacheStats meshing;      // what the mesh cache did meanwhile
 };
 
-// Where the set-up time went: "1.23 s: meshing 1.1 s (2 bodies meshed), 0.02 s reading 1 mesh
-// back from the mesh cache, the rest 0.11 s".
-std::string setup_text(const Prepared& p) {
-  const MeshCacheStats& m = p.meshing;
-  return fmt::format(
-      "{:.3g} s: meshing {:.3g} s ({} meshed), reading {:.3g} s ({} from the mesh cache{}), the "
-      "rest {:.3g} s (masses, surfaces, contact)",
-      p.setup_seconds, m.mesh_seconds, m.misses, m.read_seconds, m.hits,
-      mesh_cache_settings().enabled ? "" : ": off",
-      p.setup_seconds - m.mesh_seconds - m.read_seconds);
-}
+std::string setup_text(const Prepared& p) { return setup_time_text(p.setup_seconds, p.meshing); }
 
 void check_out_dir(const fs::path& out) {
   std::error_code ec;
@@ -140,9 +131,7 @@ void prepare(const RunArgs& args, const std::string& piped, Prepared& p) {
   const auto start = std::chrono::steady_clock::now();
   static_cast<SceneRun&>(p) = assemble_scene_run(std::move(scene));
   p.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const MeshCacheStats after = mesh_cache_stats();
-  p.meshing = {after.hits - before.hits, after.misses - before.misses,
-               after.read_seconds - before.read_seconds, after.mesh_seconds - before.mesh_seconds};
+  p.meshing = mesh_cache_delta(before, mesh_cache_stats());
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -9,6 +9,7 @@
 
 #include "engine/mesh/gmsh_api.hpp"
 #include "engine/mesh/gmsh_mesher.hpp"
+#include "engine/mesh/mesh_cache.hpp"
 
 namespace ccm::rig {
 namespace {
@@ -123,57 +124,114 @@ int y_cylinder(double y0, double z, double length, double r) {
   return occ::addCylinder(0, y0, z, 0, length, 0, r);
 }
 
+// The mesh cache's key of a rig part (engine/mesh/mesh_cache.hpp): every value of the geometry
+// file that is a length or a mesh size (more than a part's mesh reads: a key too wide costs a
+// miss, one too narrow would serve a wrong mesh), the case values the parts are placed by, the
+// part, the scale and `extra`, as exact hexadecimal floats; the Gmsh version and a hash of this
+// file and of the Gmsh extraction (rig_models/CMakeLists.txt).
+std::string rig_mesh_key(const std::string& part, const RigGeometry& g, const RigParameters& rig,
+                         double mesh_scale, const std::string& extra) {
+  std::string key = fmt::format("rig {}; gmsh {}; mesher {}; scale {:a}; {}", part,
+                                gmsh::api_version(), CCM_RIG_MESHER_SOURCE_HASH, mesh_scale, extra);
+  auto add = [&key](const char* name, const SourcedValue& v) {
+    key += fmt::format("; {} {:a}", name, v.value);
+  };
+  const ArtifactGeometry& a = g.artifact;
+  for (const auto& [name, v] : {std::pair{"envelope_outer_diameter", &a.envelope_outer_diameter},
+                                {"envelope_wall", &a.envelope_wall},
+                                {"envelope_top", &a.envelope_top},
+                                {"envelope_length", &a.envelope_length},
+                                {"core_width", &a.core_width},
+                                {"core_top", &a.core_top},
+                                {"core_bottom", &a.core_bottom},
+                                {"core_split", &a.core_split},
+                                {"stabilizer_thickness", &a.stabilizer_thickness},
+                                {"stabilizer_upper_depth", &a.stabilizer_upper_depth},
+                                {"stabilizer_lower_depth", &a.stabilizer_lower_depth},
+                                {"pin_diameter", &a.pin_diameter},
+                                {"sensor_width", &a.sensor_width},
+                                {"sensor_height", &a.sensor_height},
+                                {"contact_zone", &a.contact_zone},
+                                {"angle_node_depth", &a.angle_node_depth}})
+    add(name, *v);
+  const ImpactorGeometry& i = g.impactor;
+  for (const auto& [name, v] : {std::pair{"rod_diameter", &i.rod_diameter},
+                                {"rod_length", &i.rod_length},
+                                {"guide_length", &i.guide_length},
+                                {"carriage_width", &i.carriage_width},
+                                {"carriage_length", &i.carriage_length},
+                                {"carriage_height", &i.carriage_height},
+                                {"pearl_inset", &i.pearl_inset}})
+    add(name, *v);
+  const MeshSizes& m = g.mesh;
+  for (const auto& [name, v] : {std::pair{"mesh.carriage", &m.carriage},
+                                {"mesh.rod", &m.rod},
+                                {"mesh.spring", &m.spring},
+                                {"mesh.envelope", &m.envelope},
+                                {"mesh.envelope_contact", &m.envelope_contact},
+                                {"mesh.core", &m.core}})
+    add(name, *v);
+  add("spring_length", rig.spring_length);
+  add("spring_cylinder_diameter", rig.spring_cylinder_diameter);
+  add("pivot_to_sensor", rig.pivot_to_sensor);
+  return key;
+}
+
 }  // namespace
 
 TetMesh mesh_artifact(const RigGeometry& geometry, const RigParameters& rig, double mesh_scale) {
   require_scale(mesh_scale);
   const ArtifactGeometry& a = geometry.artifact;
   const MeshSizes& m = geometry.mesh;
-  return mesh_gmsh_model("rig artifact", [&] {
-    const double Ro = a.envelope_outer_diameter.value / 2, Ri = Ro - a.envelope_wall.value;
-    const double zt = a.envelope_top.value, L = a.envelope_length.value;
-    const double w = a.core_width.value, t = a.stabilizer_thickness.value;
-    const double split = a.core_split.value;
-    const int outer = occ::addCylinder(0, 0, zt - L, 0, 0, L, Ro);
-    const Tags pipe = cut(outer, occ::addCylinder(0, 0, zt - 2 * L, 0, 0, 3 * L, Ri));
-    // The stabilizers are full discs across the bore, the core bar interrupted by them: a disc
-    // with a square hole would leave a thin ring that Gmsh's surface meshes cross at coarse sizes.
-    auto disc = [&](double depth) { return occ::addCylinder(0, 0, -depth - t / 2, 0, 0, t, Ri); };
-    auto disc_tool = [&](double depth) {  // the disc's slab, wide enough to cut the bar through
-      return occ::addBox(-w, -w, -depth - t / 2, 2 * w, 2 * w, t);
-    };
-    const double d_up = a.stabilizer_upper_depth.value, d_low = a.stabilizer_lower_depth.value;
-    const int upper = occ::addBox(-w / 2, -w / 2, -split, w, w, split + a.core_top.value);
-    const Tags upper_bored =
-        cut(upper, occ::addCylinder(-w, 0, 0, 2 * w, 0, 0, a.pin_diameter.value / 2));
-    Tags core_upper;
-    for (int piece : upper_bored) {
-      const Tags cut_pieces = cut(piece, disc_tool(d_up));
-      core_upper.insert(core_upper.end(), cut_pieces.begin(), cut_pieces.end());
-    }
-    const int lower_box =
-        occ::addBox(-w / 2, -w / 2, -a.core_bottom.value, w, w, a.core_bottom.value - split);
-    const Tags lower = cut(lower_box, disc_tool(d_low));
-    const Tags stab_upper{disc(d_up)};
-    const Tags stab_lower{disc(d_low)};
-    const std::vector<Tags> parts = fragment({pipe, core_upper, lower, stab_upper, stab_lower});
-    occ::synchronize();
-    name_region(parts[0], "envelope");
-    Tags up = parts[1], low = parts[2];
-    up.insert(up.end(), parts[3].begin(), parts[3].end());
-    low.insert(low.end(), parts[4].begin(), parts[4].end());
-    name_region(up, "core_upper");
-    name_region(low, "core_lower");
-    // Sizes: the core, and the envelope near the contact point (y = -Ro, z = -depth).
-    const double zone = a.contact_zone.value / 2, depth = rig.pivot_to_sensor.value;
-    const double big = wall_limited(m.envelope.value * mesh_scale, Ri, a.envelope_wall.value);
-    const int core =
-        box_field(Vec3(-w / 2, -w / 2, -a.core_bottom.value), Vec3(w / 2, w / 2, a.core_top.value),
-                  1e-6, m.core.value * mesh_scale, big);
-    const int contact = box_field(Vec3(-zone, -Ro, -depth - zone), Vec3(zone, -Ri, -depth + zone),
-                                  1e-6, std::min(m.envelope_contact.value, big), big);
-    use_fields({core, contact}, big);
-    generate();
+  const std::string key = rig_mesh_key("artifact", geometry, rig, mesh_scale, "");
+  return cached_mesh(key, [&] {
+    return mesh_gmsh_model("rig artifact", [&] {
+      const double Ro = a.envelope_outer_diameter.value / 2, Ri = Ro - a.envelope_wall.value;
+      const double zt = a.envelope_top.value, L = a.envelope_length.value;
+      const double w = a.core_width.value, t = a.stabilizer_thickness.value;
+      const double split = a.core_split.value;
+      const int outer = occ::addCylinder(0, 0, zt - L, 0, 0, L, Ro);
+      const Tags pipe = cut(outer, occ::addCylinder(0, 0, zt - 2 * L, 0, 0, 3 * L, Ri));
+      // The stabilizers are full discs across the bore, the core bar interrupted by them: a disc
+      // with a square hole would leave a thin ring that Gmsh's surface meshes cross at coarse
+      // sizes.
+      auto disc = [&](double depth) { return occ::addCylinder(0, 0, -depth - t / 2, 0, 0, t, Ri); };
+      auto disc_tool = [&](double depth) {  // the disc's slab, wide enough to cut the bar through
+        return occ::addBox(-w, -w, -depth - t / 2, 2 * w, 2 * w, t);
+      };
+      const double d_up = a.stabilizer_upper_depth.value, d_low = a.stabilizer_lower_depth.value;
+      const int upper = occ::addBox(-w / 2, -w / 2, -split, w, w, split + a.core_top.value);
+      const Tags upper_bored =
+          cut(upper, occ::addCylinder(-w, 0, 0, 2 * w, 0, 0, a.pin_diameter.value / 2));
+      Tags core_upper;
+      for (int piece : upper_bored) {
+        const Tags cut_pieces = cut(piece, disc_tool(d_up));
+        core_upper.insert(core_upper.end(), cut_pieces.begin(), cut_pieces.end());
+      }
+      const int lower_box =
+          occ::addBox(-w / 2, -w / 2, -a.core_bottom.value, w, w, a.core_bottom.value - split);
+      const Tags lower = cut(lower_box, disc_tool(d_low));
+      const Tags stab_upper{disc(d_up)};
+      const Tags stab_lower{disc(d_low)};
+      const std::vector<Tags> parts = fragment({pipe, core_upper, lower, stab_upper, stab_lower});
+      occ::synchronize();
+      name_region(parts[0], "envelope");
+      Tags up = parts[1], low = parts[2];
+      up.insert(up.end(), parts[3].begin(), parts[3].end());
+      low.insert(low.end(), parts[4].begin(), parts[4].end());
+      name_region(up, "core_upper");
+      name_region(low, "core_lower");
+      // Sizes: the core, and the envelope near the contact point (y = -Ro, z = -depth).
+      const double zone = a.contact_zone.value / 2, depth = rig.pivot_to_sensor.value;
+      const double big = wall_limited(m.envelope.value * mesh_scale, Ri, a.envelope_wall.value);
+      const int core =
+          box_field(Vec3(-w / 2, -w / 2, -a.core_bottom.value),
+                    Vec3(w / 2, w / 2, a.core_top.value), 1e-6, m.core.value * mesh_scale, big);
+      const int contact = box_field(Vec3(-zone, -Ro, -depth - zone), Vec3(zone, -Ri, -depth + zone),
+                                    1e-6, std::min(m.envelope_contact.value, big), big);
+      use_fields({core, contact}, big);
+      generate();
+    });
   });
 }
 
@@ -182,46 +240,55 @@ TetMesh mesh_impactor(const RigGeometry& geometry, const RigParameters& rig, Imp
   require_scale(mesh_scale);
   const ImpactorGeometry& g = geometry.impactor;
   const MeshSizes& m = geometry.mesh;
-  return mesh_gmsh_model("rig impactor", [&] {
-    const double zc = -rig.pivot_to_sensor.value;
-    const double Ls = rig.spring_length.value, rs = rig.spring_cylinder_diameter.value / 2;
-    const double rr = g.rod_diameter.value / 2, lr = g.rod_length.value;
-    const bool flexible = kind == ImpactorKind::flexible;
-    const double y_front = tip_y - lr - Ls;  // the carriage's front face
-    const double W = g.carriage_width.value, C = g.carriage_length.value;
-    const double H = g.carriage_height.value;
-    const int carriage = occ::addBox(-W / 2, y_front - C, zc - H / 2, W, C, H);
-    const int rod =
-        flexible ? y_cylinder(tip_y - lr, zc, lr, rr) : y_cylinder(y_front, zc, lr + Ls, rr);
-    std::vector<Tags> input{{carriage}, {rod}};
-    if (flexible) input.push_back({y_cylinder(y_front, zc, Ls, rs)});
-    const std::vector<Tags> parts = fragment(input);
-    occ::synchronize();
-    name_region(parts[0], "carriage");
-    name_region(parts[1], "rod");
-    if (flexible) name_region(parts[2], "spring");
-    const double big = m.carriage.value * mesh_scale;
-    std::vector<int> fields{box_field(Vec3(-rr, y_front, zc - rr), Vec3(rr, tip_y, zc + rr), 1e-6,
-                                      curved(m.rod.value, rr), big)};
-    if (flexible)
-      fields.push_back(box_field(Vec3(-rs, y_front, zc - rs), Vec3(rs, y_front + Ls, zc + rs), 1e-6,
-                                 curved(m.spring.value * mesh_scale, rs), big));
-    use_fields(fields, big);
-    generate();
+  const std::string key =
+      rig_mesh_key("impactor", geometry, rig, mesh_scale,
+                   fmt::format("kind {}; tip_y {:a}",
+                               kind == ImpactorKind::flexible ? "flexible" : "rigid", tip_y));
+  return cached_mesh(key, [&] {
+    return mesh_gmsh_model("rig impactor", [&] {
+      const double zc = -rig.pivot_to_sensor.value;
+      const double Ls = rig.spring_length.value, rs = rig.spring_cylinder_diameter.value / 2;
+      const double rr = g.rod_diameter.value / 2, lr = g.rod_length.value;
+      const bool flexible = kind == ImpactorKind::flexible;
+      const double y_front = tip_y - lr - Ls;  // the carriage's front face
+      const double W = g.carriage_width.value, C = g.carriage_length.value;
+      const double H = g.carriage_height.value;
+      const int carriage = occ::addBox(-W / 2, y_front - C, zc - H / 2, W, C, H);
+      const int rod =
+          flexible ? y_cylinder(tip_y - lr, zc, lr, rr) : y_cylinder(y_front, zc, lr + Ls, rr);
+      std::vector<Tags> input{{carriage}, {rod}};
+      if (flexible) input.push_back({y_cylinder(y_front, zc, Ls, rs)});
+      const std::vector<Tags> parts = fragment(input);
+      occ::synchronize();
+      name_region(parts[0], "carriage");
+      name_region(parts[1], "rod");
+      if (flexible) name_region(parts[2], "spring");
+      const double big = m.carriage.value * mesh_scale;
+      std::vector<int> fields{box_field(Vec3(-rr, y_front, zc - rr), Vec3(rr, tip_y, zc + rr), 1e-6,
+                                        curved(m.rod.value, rr), big)};
+      if (flexible)
+        fields.push_back(box_field(Vec3(-rs, y_front, zc - rs), Vec3(rs, y_front + Ls, zc + rs),
+                                   1e-6, curved(m.spring.value * mesh_scale, rs), big));
+      use_fields(fields, big);
+      generate();
+    });
   });
 }
 
 TetMesh mesh_spring(const RigGeometry& geometry, const RigParameters& rig, double mesh_scale) {
   require_scale(mesh_scale);
-  return mesh_gmsh_model("rig spring", [&] {
-    occ::addCylinder(0, 0, 0, 0, 0, rig.spring_length.value,
-                     rig.spring_cylinder_diameter.value / 2);
-    occ::synchronize();
-    const double size =
-        curved(geometry.mesh.spring.value * mesh_scale, rig.spring_cylinder_diameter.value / 2);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", size);
-    generate();
+  const std::string key = rig_mesh_key("spring", geometry, rig, mesh_scale, "");
+  return cached_mesh(key, [&] {
+    return mesh_gmsh_model("rig spring", [&] {
+      occ::addCylinder(0, 0, 0, 0, 0, rig.spring_length.value,
+                       rig.spring_cylinder_diameter.value / 2);
+      occ::synchronize();
+      const double size =
+          curved(geometry.mesh.spring.value * mesh_scale, rig.spring_cylinder_diameter.value / 2);
+      gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+      gmsh::option::setNumber("Mesh.MeshSizeMin", size);
+      generate();
+    });
   });
 }
 

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "db/sqlite/connection.hpp"
@@ -108,6 +109,14 @@ void check_short_run(const std::string& code, bool score_drive_trial) {
                                              : "scored_trials = [1, 3]\nleft_out_trial = 2\n") !=
         std::string::npos);
   CHECK(summary.str().find("velocity_rmse = ") != std::string::npos);
+  // Where the set-up went: the impactor and the artifact, each meshed or read from the cache
+  // (which of the two depends on what ran before in this cache folder).
+  CHECK(summary.str().find("setup_seconds = ") != std::string::npos);
+  const std::regex meshes("meshes_made = ([0-9]+)\nmeshes_from_cache = ([0-9]+)\n");
+  std::smatch m;
+  const std::string text_of_summary = summary.str();
+  REQUIRE(std::regex_search(text_of_summary, m, meshes));
+  CHECK(std::stoi(m[1]) + std::stoi(m[2]) == 2);
   // The measurement's own spread and the simulation's spread over the trials are there.
   CHECK(test::count_rows(c,
                          "SELECT count(*) FROM rig_channel_spread WHERE metric = "

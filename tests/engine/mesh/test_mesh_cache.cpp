@@ -11,6 +11,7 @@
 
 #include "engine/mesh/gmsh_mesher.hpp"
 #include "engine/mesh/mesh_cache.hpp"
+#include "tests/support/mesh_cache_scope.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace ccm;
@@ -18,21 +19,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The process-wide settings pointed at a fresh folder for one test, restored after.
-struct CacheIn {
-  MeshCacheSettings saved = mesh_cache_settings();
-  explicit CacheIn(const fs::path& folder, std::uintmax_t max_bytes = std::uintmax_t{1} << 30,
-                   bool enabled = true) {
-    set_mesh_cache_settings({enabled, folder, max_bytes});
-  }
-  ~CacheIn() { set_mesh_cache_settings(saved); }
-};
+using test::CacheIn;
 
-bool same(const TetMesh& a, const TetMesh& b) {
-  return a.nodes == b.nodes && a.tets == b.tets && a.named_surfaces == b.named_surfaces &&
-         a.named_node_sets == b.named_node_sets && a.region_names == b.region_names &&
-         a.tet_region == b.tet_region;
-}
+bool same(const TetMesh& a, const TetMesh& b) { return test::same_mesh(a, b); }
 
 TetMesh labelled_mesh() {
   TetMesh m;
