@@ -4,7 +4,9 @@
 // predict and correct updates, monitor checks and energy sums). Each figure is repeated; the
 // minimum, the median and the largest of the wall time are printed, the minimum CPU time per thread
 // (which a loaded machine inflates less), and the parallel efficiency t_1 / (N t_N) of the whole
-// step. The final positions and velocities of every thread count are compared bit for bit.
+// step; then, for the kernel, each thread's time running its slabs and waiting at the barriers
+// (min / median / max over the repetitions). The final positions and velocities of every thread
+// count are compared bit for bit.
 // --element nodal_pressure runs the averaged-nodal-pressure tet (docs/elements.md) instead of
 // the plain tet4, for the cost ratio of the two.
 //
@@ -103,6 +105,9 @@ double process_cpu_seconds() {
 
 struct KernelTime {
   double wall_ns, cpu_ns;  // per element-step; CPU time divided by the thread count
+  // Per thread, per element-step: running its slabs, and waiting at the phases' barriers
+  // (SlabClock, internal_force.hpp).
+  std::vector<double> busy_ns, wait_ns;
 };
 
 KernelTime time_kernel(const Model& model, int repeats, int threads) {
@@ -113,15 +118,21 @@ KernelTime time_kernel(const Model& model, int repeats, int threads) {
     x[i] = padded(X + 1e-3 * Vec3(X.y(), X.z(), X.x()));
   }
   double sink = 0.0;
+  SlabClock clock;
   const double c0 = process_cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   for (int r = 0; r < repeats; ++r)
-    sink += add_internal_forces(model.elements, x, f, {}, threads).stable_dt;
+    sink += add_internal_forces(model.elements, x, f, {}, threads, clock).stable_dt;
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double cpu = process_cpu_seconds() - c0;
   if (sink < 0) std::puts("");
   const double element_steps = repeats * static_cast<double>(model.elements.n_elements());
-  return {1e9 * s / element_steps, 1e9 * cpu / (threads * element_steps)};
+  KernelTime k{1e9 * s / element_steps, 1e9 * cpu / (threads * element_steps), {}, {}};
+  for (const SlabClock::PerThread& p : clock.threads) {
+    k.busy_ns.push_back(1e9 * p.busy / element_steps);
+    k.wait_ns.push_back(1e9 * p.wait / element_steps);
+  }
+  return k;
 }
 
 struct StepRun {
@@ -155,6 +166,23 @@ Stats stats(std::vector<double> v) {
   return {v.front(), n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.back()};
 }
 
+// One line per thread of a thread count's kernel runs: its busy and wait time's distribution.
+std::string per_thread_text(int threads, const std::vector<std::vector<double>>& busy,
+                            const std::vector<std::vector<double>>& wait) {
+  std::string out;
+  for (size_t i = 0; i < busy.size(); ++i) {
+    if (busy[i].empty()) continue;
+    const Stats b = stats(busy[i]), w = stats(wait[i]);
+    char line[160];
+    std::snprintf(
+        line, sizeof line,
+        "  %d threads, thread %zu: busy %6.2f / %6.2f / %-6.2f wait %5.2f / %5.2f / %.2f\n",
+        threads, i, b.min, b.median, b.max, w.min, w.median, w.max);
+    out += line;
+  }
+  return out;
+}
+
 bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
 }
@@ -176,15 +204,21 @@ int main(int argc, char** argv) {
   std::printf("%-8s %-26s %-26s %-12s %-12s %s\n", "threads", "kernel (f_int, dt)", "whole step",
               "kernel CPU", "step CPU", "efficiency (whole step: min, median)");
   bool identical = true;
+  std::vector<std::string> per_thread;
   StepRun first;
   double step_one_thread = 0.0, step_one_thread_median = 0.0;
   for (int t : o.threads) {
     time_kernel(model, 3, t);  // warm up
     std::vector<double> kernel, kernel_cpu, step, cpu;
+    std::vector<std::vector<double>> busy(static_cast<size_t>(t)), wait(static_cast<size_t>(t));
     for (int r = 0; r < o.repeat; ++r) {
       const KernelTime k = time_kernel(model, o.steps, t);
       kernel.push_back(k.wall_ns);
       kernel_cpu.push_back(k.cpu_ns);
+      for (size_t i = 0; i < busy.size() && i < k.busy_ns.size(); ++i) {
+        busy[i].push_back(k.busy_ns[i]);
+        wait[i].push_back(k.wait_ns[i]);
+      }
       StepRun run = time_steps(model, o.steps, t);
       if (run.summary.verdict != Verdict::completed) {
         std::fprintf(stderr, "run ended %s\n", std::string(to_string(run.summary.verdict)).c_str());
@@ -207,7 +241,12 @@ int main(int argc, char** argv) {
         "%-8d %6.2f / %6.2f / %-8.2f %6.2f / %6.2f / %-8.2f %-12.2f %-12.2f %.0f %%, %.0f %%\n", t,
         k.min, k.median, k.max, s.min, s.median, s.max, kc.min, c.min,
         100.0 * step_one_thread / (t * s.min), 100.0 * step_one_thread_median / (t * s.median));
+    per_thread.push_back(per_thread_text(t, busy, wait));
   }
+  std::printf(
+      "kernel per thread, ns per element-step (min / median / max): busy running its slabs, "
+      "waiting at the phases' barriers\n");
+  for (const std::string& line : per_thread) std::fputs(line.c_str(), stdout);
   std::printf("positions and velocities bitwise identical across thread counts: %s\n",
               identical ? "yes" : "NO");
   return identical ? 0 : 1;

@@ -1,6 +1,7 @@
 #include "engine/element/internal_force.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -292,25 +293,80 @@ ElementSet make_element_set(const ModelMesh& mesh) {
 
 namespace {
 
+// Without a clock: nothing timed.
+struct NoClock {
+  void start() {}
+  void busy_until_now() {}
+  void wait_until_now() {}
+};
+
+// The calling thread's share of a SlabClock (omp_get_thread_num: 0 outside a region).
+class ThreadClock {
+ public:
+  explicit ThreadClock(SlabClock& clock) : mine_(clock.threads[omp_get_thread_num()]) {}
+  void start() { last_ = now(); }
+  void busy_until_now() { mine_.busy += lap(); }
+  void wait_until_now() { mine_.wait += lap(); }
+
+ private:
+  static double now() { return omp_get_wtime(); }
+  double lap() {
+    const double t = now(), d = t - last_;
+    last_ = t;
+    return d;
+  }
+  SlabClock::PerThread& mine_;
+  double last_ = 0.0;
+};
+
 // The nodal passes and every phase's slabs, in order; inside a parallel region each `omp for`
-// shares a phase's slabs among the team, outside one the calling thread runs them all.
+// shares a phase's slabs among the team (the barrier after it ends the phase), outside one the
+// calling thread runs them all.
+template <class Clock>
 void evaluate_phases(const ElementSet& elements, const PaddedVec3* xp, PaddedVec3* fp,
-                     bool with_energy, std::vector<SlabTotals>& totals) {
+                     bool with_energy, std::vector<SlabTotals>& totals, Clock&& clock) {
   const ElementSchedule& schedule = elements.schedule;
   update_nodal_pressures(elements, xp);
   for (const std::vector<int>& phase : schedule.phases) {
+    clock.start();
     // Static: each thread takes the same contiguous run of a phase's slabs at every step, so
     // the nodal forces it writes stay in its own core's cache (a dynamic assignment moved them
     // between the cores at every step: docs/parallel.md, "The slow mode").
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
     for (size_t k = 0; k < phase.size(); ++k) {
       const auto s = static_cast<size_t>(phase[k]);
       const Slab& slab = schedule.slabs[s];
       totals[s] = run_slab(elements, elements.blocks[static_cast<size_t>(slab.block)], slab, xp, fp,
                            with_energy);
     }
+    clock.busy_until_now();
+#pragma omp barrier
+    clock.wait_until_now();
   }
 }
+
+// The evaluation's phases on `threads` threads: one thread enters no region, outside which the
+// `omp for`s run in order and the barriers return at once (a region of one thread would still
+// wake a futex at each: engine/threads/index_loop.hpp). With a clock, each thread times its own.
+void run_phases(const ElementSet& elements, const PaddedVec3* xp, PaddedVec3* fp, bool with_energy,
+                std::vector<SlabTotals>& totals, int threads, SlabClock* clock) {
+  if (clock) clock->threads.resize(std::max<size_t>(clock->threads.size(), threads));
+  if (threads <= 1) {
+    if (clock) return evaluate_phases(elements, xp, fp, with_energy, totals, ThreadClock(*clock));
+    return evaluate_phases(elements, xp, fp, with_energy, totals, NoClock{});
+  }
+#pragma omp parallel num_threads(threads)
+  {
+    if (clock)
+      evaluate_phases(elements, xp, fp, with_energy, totals, ThreadClock(*clock));
+    else
+      evaluate_phases(elements, xp, fp, with_energy, totals, NoClock{});
+  }
+}
+
+InternalForceResult evaluate(const ElementSet& elements, std::span<const PaddedVec3> x,
+                             std::span<PaddedVec3> f, std::span<double> block_energy, int threads,
+                             SlabClock* clock);
 
 }  // namespace
 
@@ -327,6 +383,20 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
 InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const PaddedVec3> x,
                                         std::span<PaddedVec3> f, std::span<double> block_energy,
                                         int threads) {
+  return evaluate(elements, x, f, block_energy, threads, nullptr);
+}
+
+InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const PaddedVec3> x,
+                                        std::span<PaddedVec3> f, std::span<double> block_energy,
+                                        int threads, SlabClock& clock) {
+  return evaluate(elements, x, f, block_energy, threads, &clock);
+}
+
+namespace {
+
+InternalForceResult evaluate(const ElementSet& elements, std::span<const PaddedVec3> x,
+                             std::span<PaddedVec3> f, std::span<double> block_energy, int threads,
+                             SlabClock* clock) {
   const PaddedVec3* xp = x.data();
   PaddedVec3* fp = f.data();
   const bool with_energy = !block_energy.empty();
@@ -335,15 +405,8 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
   std::vector<SlabTotals> totals(schedule.slabs.size());
   // One parallel region for the whole evaluation: the nodal passes of the nodal-pressure blocks
   // (nodal_pressure.hpp; none: nothing), then the slabs. The slabs of one phase share no node;
-  // the barrier at the end of each `omp for` keeps the phases in order (element_schedule.hpp).
-  // One thread enters no region: outside one, the `omp for`s run in order without a barrier
-  // (a region of one thread would still wake a futex at each: engine/threads/index_loop.hpp).
-  if (threads > 1) {
-#pragma omp parallel num_threads(threads)
-    evaluate_phases(elements, xp, fp, with_energy, totals);
-  } else {
-    evaluate_phases(elements, xp, fp, with_energy, totals);
-  }
+  // the barrier at the end of each phase keeps the phases in order (element_schedule.hpp).
+  run_phases(elements, xp, fp, with_energy, totals, threads, clock);
   // Fixed-order combination: slab order, whatever thread ran which slab.
   if (with_energy) std::fill(block_energy.begin(), block_energy.end(), 0.0);
   InternalForceResult r;
@@ -365,6 +428,8 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
   r.stable_dt = std::sqrt(min_ratio2);
   return r;
 }
+
+}  // namespace
 
 double reference_stable_dt(const ElementSet& elements, std::span<const Vec3> X) {
   double min_dt = std::numeric_limits<double>::infinity();

@@ -69,6 +69,22 @@ InternalForceResult add_internal_forces(const ElementSet& elements, std::span<co
                                         std::span<PaddedVec3> f,
                                         std::span<double> block_energy = {}, int threads = 1);
 
+// Where each thread's time went in evaluations of the padded overload below, for benchmarks
+// (bench_element_step; a run passes none): per thread, the seconds it spent running its slabs
+// (busy) and waiting at the barrier that ends each phase for the other threads (wait), summed over
+// the calls. The nodal-pressure passes before the phases are in neither.
+struct SlabClock {
+  struct alignas(64) PerThread {  // a cache line each: every thread writes its own at every slab
+    double busy = 0.0, wait = 0.0;
+  };
+  std::vector<PerThread> threads;  // sized to the thread count by the first evaluation
+};
+
+// The padded evaluation, timed per thread into `clock` (the same forces and results, bit for bit).
+InternalForceResult add_internal_forces(const ElementSet& elements, std::span<const PaddedVec3> x,
+                                        std::span<PaddedVec3> f, std::span<double> block_energy,
+                                        int threads, SlabClock& clock);
+
 // Reference-configuration stable step min_e h_e / c_d,e, used before the first evaluation.
 double reference_stable_dt(const ElementSet& elements, std::span<const Vec3> X);
 
