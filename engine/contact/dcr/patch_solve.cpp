@@ -1,5 +1,6 @@
 #include "engine/contact/dcr/patch_solve.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <numeric>
 
@@ -11,6 +12,7 @@ constexpr int kPatience = 3;  // block rounds without fewer infeasible rows, the
 constexpr double kPivotRegularisation = 1e-4;  // eps of DP.2 while the rows are pivoted
 constexpr double kRegularisation = 1e-9;       // eps of DP.3, the settled rows' final solve
 constexpr int kRefinements = 3;                // of DP.3
+constexpr Eigen::Index kDenseRows = 96;        // active sets up to this size: dense LDLT
 
 int root(std::vector<int>& parent, int i) {
   while (parent[static_cast<size_t>(i)] != i)
@@ -145,13 +147,26 @@ bool PatchSolve::solve_active(const Eigen::SparseMatrix<double>& A, const std::v
   Eigen::VectorXd b_s(s);
   for (size_t i = 0; i < active.size(); ++i)
     if (index[i] >= 0) b_s[index[i]] = b[static_cast<Eigen::Index>(i)];
-  const Eigen::SimplicialLDLT<Matrix> ldlt(M);
-  if (ldlt.info() != Eigen::Success) return false;
-  Eigen::VectorXd x = ldlt.solve(b_s);
+  // A small active set is factorised dense: the sparse factorisation's ordering (AMD) cost more
+  // than the factorisation itself (docs/hard-scenes.md, "Small active sets factorised dense").
+  const bool dense = s <= kDenseRows;
+  Eigen::LDLT<Eigen::MatrixXd> dense_ldlt;
+  Eigen::SimplicialLDLT<Matrix> sparse_ldlt;
+  if (dense) {
+    dense_ldlt.compute(Eigen::MatrixXd(M));
+    if (dense_ldlt.info() != Eigen::Success) return false;
+  } else {
+    sparse_ldlt.compute(M);
+    if (sparse_ldlt.info() != Eigen::Success) return false;
+  }
+  auto solve = [&](const Eigen::VectorXd& rhs) -> Eigen::VectorXd {
+    return dense ? Eigen::VectorXd(dense_ldlt.solve(rhs)) : Eigen::VectorXd(sparse_ldlt.solve(rhs));
+  };
+  Eigen::VectorXd x = solve(b_s);
   Eigen::VectorXd e = b_s - A_s * x;
   double residual = dot(e, e);
   for (int refine = 0; refine < refinements; ++refine) {  // while it helps
-    const Eigen::VectorXd y = x + ldlt.solve(e);
+    const Eigen::VectorXd y = x + solve(e);
     const Eigen::VectorXd f = b_s - A_s * y;
     const double r = dot(f, f);
     if (!(r < residual)) break;
