@@ -136,40 +136,37 @@ std::string rig_mesh_key(const std::string& part, const RigGeometry& g, const Ri
   auto add = [&key](const char* name, const SourcedValue& v) {
     key += fmt::format("; {} {:a}", name, v.value);
   };
-  const ArtifactGeometry& a = g.artifact;
-  for (const auto& [name, v] : {std::pair{"envelope_outer_diameter", &a.envelope_outer_diameter},
-                                {"envelope_wall", &a.envelope_wall},
-                                {"envelope_top", &a.envelope_top},
-                                {"envelope_length", &a.envelope_length},
-                                {"core_width", &a.core_width},
-                                {"core_top", &a.core_top},
-                                {"core_bottom", &a.core_bottom},
-                                {"core_split", &a.core_split},
-                                {"stabilizer_thickness", &a.stabilizer_thickness},
-                                {"stabilizer_upper_depth", &a.stabilizer_upper_depth},
-                                {"stabilizer_lower_depth", &a.stabilizer_lower_depth},
-                                {"pin_diameter", &a.pin_diameter},
-                                {"sensor_width", &a.sensor_width},
-                                {"sensor_height", &a.sensor_height},
-                                {"contact_zone", &a.contact_zone},
-                                {"angle_node_depth", &a.angle_node_depth}})
-    add(name, *v);
-  const ImpactorGeometry& i = g.impactor;
-  for (const auto& [name, v] : {std::pair{"rod_diameter", &i.rod_diameter},
-                                {"rod_length", &i.rod_length},
-                                {"guide_length", &i.guide_length},
-                                {"carriage_width", &i.carriage_width},
-                                {"carriage_length", &i.carriage_length},
-                                {"carriage_height", &i.carriage_height},
-                                {"pearl_inset", &i.pearl_inset}})
-    add(name, *v);
-  const MeshSizes& m = g.mesh;
-  for (const auto& [name, v] : {std::pair{"mesh.carriage", &m.carriage},
-                                {"mesh.rod", &m.rod},
-                                {"mesh.spring", &m.spring},
-                                {"mesh.envelope", &m.envelope},
-                                {"mesh.envelope_contact", &m.envelope_contact},
-                                {"mesh.core", &m.core}})
+  // One list, in the key's order: the artifact, the impactor, the mesh sizes.
+  for (const auto& [name, v] :
+       {std::pair{"envelope_outer_diameter", &g.artifact.envelope_outer_diameter},
+        {"envelope_wall", &g.artifact.envelope_wall},
+        {"envelope_top", &g.artifact.envelope_top},
+        {"envelope_length", &g.artifact.envelope_length},
+        {"core_width", &g.artifact.core_width},
+        {"core_top", &g.artifact.core_top},
+        {"core_bottom", &g.artifact.core_bottom},
+        {"core_split", &g.artifact.core_split},
+        {"stabilizer_thickness", &g.artifact.stabilizer_thickness},
+        {"stabilizer_upper_depth", &g.artifact.stabilizer_upper_depth},
+        {"stabilizer_lower_depth", &g.artifact.stabilizer_lower_depth},
+        {"pin_diameter", &g.artifact.pin_diameter},
+        {"sensor_width", &g.artifact.sensor_width},
+        {"sensor_height", &g.artifact.sensor_height},
+        {"contact_zone", &g.artifact.contact_zone},
+        {"angle_node_depth", &g.artifact.angle_node_depth},
+        {"rod_diameter", &g.impactor.rod_diameter},
+        {"rod_length", &g.impactor.rod_length},
+        {"guide_length", &g.impactor.guide_length},
+        {"carriage_width", &g.impactor.carriage_width},
+        {"carriage_length", &g.impactor.carriage_length},
+        {"carriage_height", &g.impactor.carriage_height},
+        {"pearl_inset", &g.impactor.pearl_inset},
+        {"mesh.carriage", &g.mesh.carriage},
+        {"mesh.rod", &g.mesh.rod},
+        {"mesh.spring", &g.mesh.spring},
+        {"mesh.envelope", &g.mesh.envelope},
+        {"mesh.envelope_contact", &g.mesh.envelope_contact},
+        {"mesh.core", &g.mesh.core}})
     add(name, *v);
   add("spring_length", rig.spring_length);
   add("spring_cylinder_diameter", rig.spring_cylinder_diameter);
