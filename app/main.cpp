@@ -350,6 +350,11 @@ int main(int argc, char** argv) {
       "calibrated parameters");
   rig_calibrate->add_flag("!--no-profile", rig_calibrate_args.profile,
                           "Skip the parameters' spread after the fit (2-3 runs per parameter)");
+  rig_calibrate
+      ->add_option("--jobs,-j", rig_calibrate_args.jobs,
+                   "Runs at once (threads, one core each): the search's opening points, the "
+                   "profile's and the predictions' runs; the result is the same for any count")
+      ->default_val(1);
   rig_calibrate->footer("Exit codes: 0 done, 1 internal error, 2 bad input (nothing written).");
 
   ccm::MeshInfoArgs mesh_info_args;

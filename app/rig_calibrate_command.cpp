@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -117,6 +118,8 @@ int calibrate(const RigCalibrateArgs& args) {
         common.data->string(), in.rig_case->code, *in.left_out));
   if (args.max_evaluations < 1 || args.max_evaluations > 500)
     throw std::invalid_argument("--max-evals must lie in [1, 500]");
+  if (args.jobs < 1 || args.jobs > 64)
+    throw std::invalid_argument(fmt::format("--jobs must lie in [1, 64] (got {})", args.jobs));
   const std::vector<rig::SearchParameter> params = search_parameters(args, in);
   const std::vector<int> fit = read_fit_trials(args, in);
   std::vector<PredictionCase> predicted = read_prediction_cases(args, in, params);
@@ -126,12 +129,10 @@ int calibrate(const RigCalibrateArgs& args) {
   std::vector<RigRunOutcome> first_and_best;  // [0] the start, [1] the best so far
   std::vector<db::RigCalibrationEvaluation> history;
   int evaluation = 0;
-  const rig::SearchObjective objective =
-      [&](const std::vector<double>& x) -> std::optional<double> {
+  // One evaluation's bookkeeping: its history row, its line, the start and the best so far.
+  auto book_evaluation = [&](const std::vector<double>& x,
+                             RigRunOutcome o) -> std::optional<double> {
     ++evaluation;
-    const std::string label =
-        fmt::format("{} eval {}/{}", in.rig_case->code, evaluation, args.max_evaluations);
-    RigRunOutcome o = run_rig_once(in, common, with_values(in.parameters, params, x), label);
     // The run keeps its objective over every scored trial; the search reads the fitted trials'.
     const std::optional<double> fitted = fitted_objective(o, fit);
     const bool ok = o.result.summary.verdict == Verdict::completed && fitted;
@@ -150,6 +151,25 @@ int calibrate(const RigCalibrateArgs& args) {
     }
     if (!ok) return std::nullopt;
     return *history.back().objective;
+  };
+  // The search's points, a batch at a time (its opening points go out together: up to --jobs
+  // runs at once); the bookkeeping in the order of the points.
+  const rig::BatchObjective objective = [&](const std::vector<std::vector<double>>& points) {
+    std::vector<RigRunJob> jobs;
+    for (const std::vector<double>& x : points)
+      jobs.push_back(
+          {&in, &common, with_values(in.parameters, params, x),
+           fmt::format("{} eval {}/{}", in.rig_case->code,
+                       evaluation + static_cast<int>(jobs.size()) + 1, args.max_evaluations)});
+    if (!common.quiet && points.size() > 1 && args.jobs > 1)
+      fmt::print("  evals {}-{}: {} runs, {} at once\n", evaluation + 1,
+                 evaluation + static_cast<int>(points.size()), points.size(),
+                 std::min<size_t>(points.size(), static_cast<size_t>(args.jobs)));
+    std::vector<RigRunOutcome> outcomes = run_rig_batch(jobs, args.jobs);
+    std::vector<std::optional<double>> values;
+    for (size_t k = 0; k < outcomes.size(); ++k)
+      values.push_back(book_evaluation(points[k], std::move(outcomes[k])));
+    return values;
   };
   if (!common.quiet)
     fmt::print(
@@ -183,14 +203,15 @@ int calibrate(const RigCalibrateArgs& args) {
                               result.best[i], std::nullopt, std::nullopt});
   rec.history = history;
   const std::vector<rig::ParameterSpread> spread =
-      args.profile
-          ? profile_calibration(in, common, params, fit, result.best, result.best_objective)
-          : std::vector<rig::ParameterSpread>{};
+      args.profile ? profile_calibration(in, common, params, fit, result.best,
+                                         result.best_objective, args.jobs)
+                   : std::vector<rig::ParameterSpread>{};
   for (size_t i = 0; i < spread.size(); ++i) {
     rec.parameters[i].curvature = spread[i].curvature;
     rec.parameters[i].half_width = spread[i].half_width;
   }
-  const std::vector<Prediction> predictions = run_predictions(predicted, params, result.best);
+  const std::vector<Prediction> predictions =
+      run_predictions(predicted, params, result.best, args.jobs);
   for (const Prediction& p : predictions) {
     const PredictionCase& c = *p.predicted;
     rec.predictions.push_back(

@@ -152,15 +152,17 @@ void print_trial_scores(const std::vector<db::RigCalibrationTrial>& trials,
 
 std::vector<rig::ParameterSpread> profile_calibration(
     const RigInputs& in, const RigCommonArgs& args, const std::vector<rig::SearchParameter>& params,
-    const std::vector<int>& fit, const std::vector<double>& best, double best_objective) {
-  int evaluation = 0;
-  const rig::SearchObjective objective =
-      [&](const std::vector<double>& x) -> std::optional<double> {
-    const RigRunOutcome o =
-        run_rig_once(in, args, with_values(in.parameters, params, x),
-                     fmt::format("{} profile {}", in.rig_case->code, ++evaluation));
-    if (o.result.summary.verdict != Verdict::completed) return std::nullopt;
-    return fitted_objective(o, fit);
+    const std::vector<int>& fit, const std::vector<double>& best, double best_objective, int jobs) {
+  const rig::BatchObjective objective = [&](const std::vector<std::vector<double>>& points) {
+    std::vector<RigRunJob> runs;
+    for (const std::vector<double>& x : points)
+      runs.push_back({&in, &args, with_values(in.parameters, params, x),
+                      fmt::format("{} profile {}", in.rig_case->code, runs.size() + 1)});
+    std::vector<std::optional<double>> values;
+    for (const RigRunOutcome& o : run_rig_batch(runs, jobs))
+      values.push_back(o.result.summary.verdict == Verdict::completed ? fitted_objective(o, fit)
+                                                                      : std::nullopt);
+    return values;
   };
   std::vector<rig::ParameterSpread> spread =
       rig::profile_parameters(params, best, best_objective, objective, rig::ProfileSettings{});
@@ -190,18 +192,21 @@ void print_spread(const std::vector<rig::ParameterSpread>& spread) {
 
 std::vector<Prediction> run_predictions(const std::vector<PredictionCase>& cases,
                                         const std::vector<rig::SearchParameter>& params,
-                                        const std::vector<double>& best) {
+                                        const std::vector<double>& best, int jobs) {
   std::vector<double> start;
   for (const rig::SearchParameter& p : params) start.push_back(p.initial);
-  std::vector<Prediction> out;
+  std::vector<RigRunJob> runs;  // per case: the start's run, then the calibrated one
   for (const PredictionCase& c : cases) {
     const RigInputs& in = c.inputs;
-    out.push_back({&c,
-                   run_rig_once(in, c.args, with_values(in.parameters, params, start),
-                                in.rig_case->code + " start"),
-                   run_rig_once(in, c.args, with_values(in.parameters, params, best),
-                                in.rig_case->code + " calibrated")});
+    runs.push_back(
+        {&in, &c.args, with_values(in.parameters, params, start), in.rig_case->code + " start"});
+    runs.push_back({&in, &c.args, with_values(in.parameters, params, best),
+                    in.rig_case->code + " calibrated"});
   }
+  std::vector<RigRunOutcome> done = run_rig_batch(runs, jobs);
+  std::vector<Prediction> out;
+  for (size_t k = 0; k < cases.size(); ++k)
+    out.push_back({&cases[k], std::move(done[2 * k]), std::move(done[2 * k + 1])});
   return out;
 }
 

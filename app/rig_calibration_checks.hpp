@@ -60,20 +60,21 @@ void print_trial_scores(const std::vector<db::RigCalibrationTrial>& trials,
                         const RigRunOutcome& before, const RigRunOutcome& after);
 
 // The spread of each parameter at `best` (2-3 runs of the fitted case each, scored on the fitted
-// trials `fit`), and a warning on stderr for each that ended on a bound.
+// trials `fit`; up to `jobs` at once), and a warning on stderr for each that ended on a bound.
 std::vector<rig::ParameterSpread> profile_calibration(
     const RigInputs& in, const RigCommonArgs& args, const std::vector<rig::SearchParameter>& params,
-    const std::vector<int>& fit, const std::vector<double>& best, double best_objective);
+    const std::vector<int>& fit, const std::vector<double>& best, double best_objective, int jobs);
 void print_spread(const std::vector<rig::ParameterSpread>& spread);
 
-// Each predicted case run with the starting and with the calibrated parameters.
+// Each predicted case run with the starting and with the calibrated parameters (up to `jobs`
+// runs at once).
 struct Prediction {
   const PredictionCase* predicted = nullptr;
   RigRunOutcome start, calibrated;
 };
 std::vector<Prediction> run_predictions(const std::vector<PredictionCase>& cases,
                                         const std::vector<rig::SearchParameter>& params,
-                                        const std::vector<double>& best);
+                                        const std::vector<double>& best, int jobs);
 void print_predictions(const std::vector<Prediction>& predictions);
 
 }  // namespace ccm

@@ -18,6 +18,7 @@ struct RigCalibrateArgs {
   std::string fit_trials;  // comma-separated trial numbers the search fits; the other scored
                            // trials are left out of the fit and scored after it
   bool profile = true;     // the parameters' spread after the fit (2-3 runs each)
+  int jobs = 1;            // rig runs at once where the runs do not wait on each other
 };
 
 // Exit codes (app/run_command.hpp): 0 completed, 3 unstable (run), 2 bad input (nothing

@@ -1,7 +1,12 @@
 #include "app/rig_runner.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <exception>
 #include <memory>
+#include <optional>
+#include <thread>
 
 #include "app/progress_line.hpp"
 #include "app/setup_time.hpp"
@@ -49,6 +54,39 @@ RigRunOutcome run_rig_once(const RigInputs& in, const RigCommonArgs& args,
   o.ended_at = utc_timestamp_now();
   compare_with_trials(in, o);
   return o;
+}
+
+std::vector<RigRunOutcome> run_rig_batch(const std::vector<RigRunJob>& jobs, int at_once) {
+  const size_t threads = std::min(jobs.size(), static_cast<size_t>(std::max(at_once, 1)));
+  std::vector<std::optional<RigRunOutcome>> done(jobs.size());
+  std::vector<std::exception_ptr> failed(jobs.size());
+  std::atomic<size_t> next{0};
+  std::atomic<bool> stop{false};
+  auto work = [&](bool show_progress) {
+    for (size_t k = next++; k < jobs.size() && !stop; k = next++) {
+      const RigRunJob& j = jobs[k];
+      RigCommonArgs args = *j.args;
+      args.quiet = args.quiet || !show_progress;
+      try {
+        done[k] = run_rig_once(*j.inputs, args, j.parameters, j.label);
+      } catch (...) {
+        failed[k] = std::current_exception();
+        stop = true;  // no run starts after a failure
+      }
+    }
+  };
+  if (threads <= 1) {
+    work(true);
+  } else {
+    std::vector<std::thread> workers;
+    for (size_t t = 0; t < threads; ++t) workers.emplace_back(work, false);
+    for (std::thread& w : workers) w.join();
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  std::vector<RigRunOutcome> out;
+  for (std::optional<RigRunOutcome>& o : done) out.push_back(std::move(*o));
+  return out;
 }
 
 }  // namespace ccm

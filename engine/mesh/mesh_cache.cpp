@@ -37,8 +37,8 @@ MeshCacheSettings& settings_storage() {
   return s;
 }
 
-MeshCacheStats& stats_storage() {
-  static MeshCacheStats s;
+MeshCacheStats& stats_storage() {  // per thread: runs side by side count apart (header)
+  thread_local MeshCacheStats s;
   return s;
 }
 
@@ -192,10 +192,7 @@ void set_mesh_cache_settings(const MeshCacheSettings& settings) {
   settings_storage() = settings;
 }
 
-MeshCacheStats mesh_cache_stats() {
-  const std::lock_guard lock(state_mutex());
-  return stats_storage();
-}
+MeshCacheStats mesh_cache_stats() { return stats_storage(); }
 
 TetMesh cached_mesh(const std::string& key, const std::function<TetMesh()>& make) {
   const auto start = Clock::now();
@@ -205,14 +202,12 @@ TetMesh cached_mesh(const std::string& key, const std::function<TetMesh()>& make
   if (enabled && read_file(file, key, mesh)) {
     std::error_code ec;
     fs::last_write_time(file, fs::file_time_type::clock::now(), ec);  // recently used
-    const std::lock_guard lock(state_mutex());
     ++stats_storage().hits;
     stats_storage().read_seconds += seconds_since(start);
     return mesh;
   }
   mesh = make();
   if (enabled) write_file(file, key, mesh);
-  const std::lock_guard lock(state_mutex());
   ++stats_storage().misses;
   stats_storage().mesh_seconds += seconds_since(start);
   return mesh;

@@ -34,8 +34,9 @@ std::filesystem::path default_mesh_cache_folder();
 MeshCacheSettings mesh_cache_settings();
 void set_mesh_cache_settings(const MeshCacheSettings& settings);
 
-// What the cache did in this process: meshes read back, meshes made (and filed), and the seconds
-// each took.
+// What the cache did on the calling thread: meshes read back, meshes made (and filed), and the
+// seconds each took. Per thread, so that runs side by side (`ccm rig calibrate --jobs`), each
+// building its model on its own thread, count their own meshes.
 struct MeshCacheStats {
   long hits = 0, misses = 0;
   double read_seconds = 0.0, mesh_seconds = 0.0;

@@ -32,7 +32,13 @@ struct ProfileSettings {
   double rise = 0.05;  // the objective's relative rise that defines the half-width
 };
 
-// Evaluates `objective` at 2 or 3 points per parameter (the others held at `best`).
+// Evaluates `objective` at 2 or 3 points per parameter (the others held at `best`), all of them
+// in one batch.
+std::vector<ParameterSpread> profile_parameters(const std::vector<SearchParameter>& parameters,
+                                                const std::vector<double>& best,
+                                                double best_objective,
+                                                const BatchObjective& objective,
+                                                const ProfileSettings& settings = {});
 std::vector<ParameterSpread> profile_parameters(const std::vector<SearchParameter>& parameters,
                                                 const std::vector<double>& best,
                                                 double best_objective,

@@ -497,3 +497,55 @@ TEST_CASE("ccm rig run: all 12 cases complete (full trials)", "[validation][rig-
   // The floor of the issue: the slowest 1.0 m/s case within 10 minutes on the 2-core machine.
   CHECK(scalar(c, "SELECT max(wall_seconds) FROM rig_runs WHERE case_code LIKE '__100'") < 600.0);
 }
+
+// --jobs 2 runs the search's opening points, the profile's and the predictions' runs two at a
+// time on threads; a run does not depend on what runs beside it, so the calibration is the same
+// as with --jobs 1, evaluation by evaluation, to the last bit of every stored objective.
+TEST_CASE("ccm rig calibrate RX025 (short) --jobs 2: the same calibration as --jobs 1",
+          "[rig][rig-cli][heavy]") {
+  if (!have_dev_data()) return;
+  test::TempDir dir;
+  auto calibrate = [&](int jobs) {
+    const fs::path db = dir.path / fmt::format("jobs{}.sqlite", jobs);
+    const Shell s =
+        shell(rig(fmt::format(
+                  "calibrate RX025 --params clamp_stiffness,track_friction --max-evals 6 "
+                  "--data '{}' --geometry '{}' {} --predict RX050 --db '{}' --jobs {}",
+                  kDevData.string(), kShortGeometry.string(), kShortWindow, db.string(), jobs)),
+              dir);
+    INFO(s.err);
+    REQUIRE(s.status == 0);
+    // BOBYQA's opening in two parameters: its centre and a step either way along each (five
+    // points), and the start besides: track friction 0.01 lies within a step of its bound, so
+    // BOBYQA's centre is moved off it.
+    if (jobs > 1) CHECK(s.out.find("evals 1-6: 6 runs, 2 at once") != std::string::npos);
+    db::Connection c(db);
+    std::string stored;
+    const std::pair<const char*, int> queries[] = {
+        {"SELECT evaluation, parameters, quote(objective), status FROM "
+         "rig_calibration_evaluations ORDER BY evaluation",
+         4},
+        {"SELECT name, quote(final), quote(curvature), quote(half_width) FROM "
+         "rig_calibration_parameters ORDER BY name",
+         4},
+        {"SELECT case_code, quote(objective_start), quote(objective_calibrated) FROM "
+         "rig_calibration_predictions",
+         3},
+        {"SELECT quote(objective_before), quote(objective_after), evaluations FROM "
+         "rig_calibrations",
+         3}};
+    for (const auto& [sql, columns] : queries) {
+      db::Statement q(c, sql);
+      while (q.step()) {
+        for (int k = 0; k < columns; ++k) stored += q.column_text(k) + " ";
+        stored += "\n";
+      }
+    }
+    return stored;
+  };
+  const std::string one = calibrate(1), two = calibrate(2);
+  INFO(one);
+  CHECK(one.find("1 clamp_stiffness=17000") != std::string::npos);
+  CHECK(std::count(one.begin(), one.end(), '\n') == 6 + 2 + 1 + 1);
+  CHECK(two == one);
+}

@@ -1,6 +1,8 @@
 // The calibration's search (rig_models/calibrate/bounded_search.hpp) on objectives with known
 // minima: it finds them inside the bounds, stops at a bound when the minimum lies beyond it,
-// starts at the given point, steers around failed evaluations and is deterministic.
+// starts at the given point, steers around failed evaluations and is deterministic; its opening
+// points go out as one batch, every one of them used, none evaluated twice, within the budget.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -57,6 +59,74 @@ TEST_CASE("bounded search: one parameter (COBYLA), a minimum beyond the bound, f
   const SearchResult f = bounded_search(p, fragile, {30, 1e-6});
   CHECK(f.best[0] == Approx(1500.0).margin(5.0));
   CHECK(f.best_objective < 0.01);
+}
+
+// A bowl in any number of parameters, minimum inside [0, 1] at 0.3, 0.12, 0.6, ...
+std::optional<double> bowl_n(const std::vector<double>& x) {
+  double f = 0.25;
+  for (size_t i = 0; i < x.size(); ++i) f += std::pow((x[i] - 0.3 + 0.1 * double(i % 3)) / 0.1, 2);
+  return f;
+}
+
+struct Batches {
+  std::vector<size_t> sizes;
+  BatchObjective objective() {
+    return [this](const std::vector<std::vector<double>>& points) {
+      sizes.push_back(points.size());
+      return one_at_a_time(bowl_n)(points);
+    };
+  }
+};
+
+TEST_CASE("bounded search: the opening points go out as one batch and every one is used",
+          "[rig][calibrate]") {
+  // Starts in the middle (BOBYQA's own start), near a bound (moved off it before its design),
+  // on a bound, in two and three parameters (BOBYQA) and one (COBYLA).
+  const std::vector<std::vector<double>> starts{
+      {0.5, 0.5},      {0.2, 0.1}, {0.0, 1.0}, {0.9, 0.05}, {0.5, 0.4, 0.3},
+      {0.0, 0.7, 1.0}, {0.5},      {0.1},      {1.0},       {0.95}};
+  for (const std::vector<double>& start : starts) {
+    std::vector<SearchParameter> p;
+    for (size_t i = 0; i < start.size(); ++i)
+      p.push_back({"p" + std::to_string(i), 0.0, 1.0, start[i]});
+    const size_t n = start.size();
+    const size_t opening = n >= 2 ? 2 * n + 1 : n + 1;
+    for (int budget : {1, 3, 12, 30}) {
+      INFO("start " << start[0] << " ... of " << n << ", budget " << budget);
+      Batches batches;
+      const SearchResult r = bounded_search(p, batches.objective(), {budget, 1e-6});
+      CHECK(r.unused_evaluations == 0);
+      CHECK(r.history.front().x == start);
+      CHECK(static_cast<int>(r.history.size()) <= budget);
+      if (r.stop_reason == "MAXEVAL_REACHED") CHECK(static_cast<int>(r.history.size()) == budget);
+      // The first batch is the start and the opening points within the budget (less the start
+      // when it is one of them).
+      REQUIRE(!batches.sizes.empty());
+      const size_t opened = std::min(opening, static_cast<size_t>(budget - 1));
+      CHECK(batches.sizes.front() >= std::max<size_t>(opened, 1));
+      CHECK(batches.sizes.front() <= opened + 1);
+      for (size_t k = 1; k < batches.sizes.size(); ++k) CHECK(batches.sizes[k] == 1);
+      // No point evaluated twice.
+      for (size_t a = 0; a < r.history.size(); ++a)
+        for (size_t b = a + 1; b < r.history.size(); ++b) CHECK(r.history[a].x != r.history[b].x);
+    }
+  }
+}
+
+TEST_CASE("bounded search: the same evaluations batched or one at a time", "[rig][calibrate]") {
+  const std::vector<SearchParameter> p{{"mu_s", 0.0, 1.0, 0.5}, {"mu_k", 0.0, 1.0, 0.5}};
+  Batches batches;
+  const SearchResult batched = bounded_search(p, batches.objective(), {20, 1e-6});
+  const SearchResult single = bounded_search(p, bowl_n, {20, 1e-6});
+  REQUIRE(batched.history.size() == single.history.size());
+  for (size_t k = 0; k < single.history.size(); ++k) {
+    CHECK(batched.history[k].x == single.history[k].x);
+    CHECK(batched.history[k].objective == single.history[k].objective);
+  }
+  CHECK(batched.best == single.best);
+  // From the middle BOBYQA starts where the caller does: the start is one of its 5 opening
+  // points, read back rather than run again, so the first batch holds 5 points, not 6.
+  CHECK(batches.sizes.front() == 5);
 }
 
 TEST_CASE("bounded search: bad ranges and starts are refused", "[rig][calibrate]") {

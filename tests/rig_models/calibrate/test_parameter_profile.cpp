@@ -46,3 +46,31 @@ TEST_CASE("profile: half-widths, a best on its bound, a flat direction, a failed
   CHECK_FALSE(other[0].half_width.has_value());  // unidentified
   CHECK_FALSE(other[1].curvature.has_value());   // its run at y = 0.4 failed
 }
+
+TEST_CASE("profile: every point in one batch, the same spread as one at a time",
+          "[rig][calibrate]") {
+  const SearchObjective f = [](const std::vector<double>& x) -> std::optional<double> {
+    return 0.3 + 2.0 * (x[0] - 0.2) * (x[0] - 0.2) + 9.0 * (x[1] - 1.9) * (x[1] - 1.9) +
+           0.5 * x[2] * x[2];
+  };
+  // The first best inside its range, the second near its upper bound, the third on its lower.
+  const std::vector<SearchParameter> p = {
+      {"a", 0.0, 1.0, 0.5}, {"b", 0.0, 2.0, 1.0}, {"c", 0.0, 4.0, 1.0}};
+  const std::vector<double> best{0.2, 1.9, 0.0};
+  std::vector<size_t> batches;
+  const BatchObjective batch = [&](const std::vector<std::vector<double>>& points) {
+    batches.push_back(points.size());
+    return one_at_a_time(f)(points);
+  };
+  const auto together = profile_parameters(p, best, 0.3, batch);
+  const auto apart = profile_parameters(p, best, 0.3, f);
+  REQUIRE(batches == std::vector<size_t>{2 + 3 + 3});
+  REQUIRE(together.size() == 3);
+  for (size_t i = 0; i < 3; ++i) {
+    CHECK(together[i].curvature == apart[i].curvature);
+    CHECK(together[i].half_width == apart[i].half_width);
+  }
+  CHECK(*together[0].curvature == Approx(4.0).epsilon(1e-9));
+  CHECK(*together[1].curvature == Approx(18.0).epsilon(1e-9));
+  CHECK(*together[2].curvature == Approx(1.0).epsilon(1e-9));
+}
