@@ -13,10 +13,16 @@ namespace ccm {
 
 // body(i) for every i in [0, n): on `threads` threads in contiguous static blocks when `parallel`,
 // else in index order on the calling thread. Each i must be independent of the others.
+//
+// The calling thread's loop runs a copy of the body: the body's own object is passed to the OpenMP
+// region below, so the compiler must assume that a store of the loop (x[i] = ...) may change its
+// captures, and reloads them at every index; a local copy whose address does not escape stays in
+// registers.
 template <class Body>
 void for_each_index(std::size_t n, int threads, bool parallel, Body&& body) {
   if (!parallel) {
-    for (std::size_t i = 0; i < n; ++i) body(i);
+    auto local = body;
+    for (std::size_t i = 0; i < n; ++i) local(i);
     return;
   }
 #pragma omp parallel for num_threads(threads) schedule(static)
