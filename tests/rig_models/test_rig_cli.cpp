@@ -425,6 +425,12 @@ TEST_CASE("ccm rig: bad input exits 2 naming the defect, before anything is writ
   CHECK(physical.status == 2);
   CHECK(physical.err.find("--score-drive-trial: only an open-loop run has a driving trial") !=
         std::string::npos);
+  const Shell jobs = shell(rig(fmt::format("calibrate RX025 --params clamp_stiffness --data '{}' "
+                                           "--jobs 0 --out '{}'",
+                                           kDevData.string(), out.string())),
+                           dir);
+  CHECK(jobs.status == 2);
+  CHECK(jobs.err == "ccm: error: --jobs must lie in [1, 64] (got 0)\n");
   CHECK(!fs::exists(out));
 }
 
