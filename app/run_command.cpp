@@ -239,6 +239,8 @@ void print_summary_table(const RunRecord& r) {
   fmt::print("  {:<15}{}\n", "verdict", to_string(s.verdict));
   if (contact.solve_warning && !contact.solve_warning().empty())
     fmt::print("  {:<15}{}\n", "warning", contact.solve_warning());
+  if (contact.search_summary && !contact.search_summary().empty())
+    fmt::print("  {:<15}{}\n", "search", contact.search_summary());
   if (s.verdict == Verdict::unstable)
     fmt::print("  {:<15}{}\n", "instability", instability_text(s.instability));
   fmt::print("  {:<15}{}\n", "results", r.args.out.string());
@@ -320,6 +322,8 @@ std::string summary_toml(const RunRecord& r) {
                      toml_string(contact.description), toml_float(contact.model->ledger().work));
   if (contact.solve_warning && !contact.solve_warning().empty())
     t += fmt::format("warning = {}\n", toml_string(contact.solve_warning()));
+  if (contact.search_summary && !contact.search_summary().empty())
+    t += fmt::format("search = {}\n", toml_string(contact.search_summary()));
   if (r.field_frames > 0)
     t += fmt::format("\n[fields]\nfile = {}\nframes = {}\n", toml_string(fields::kXdmfFile),
                      r.field_frames);

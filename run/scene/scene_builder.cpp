@@ -331,6 +331,12 @@ ContactSetup build_dcr(const Scene& scene, const ContactSpec& c, const Model& mo
         "converging",
         v, p);
   };
+  setup.search_summary = [model = dcr.get()] {
+    const dcr::BroadPhaseStats& s = model->broad_phase_stats();
+    return fmt::format(
+        "dcr: broad phase on {} steps, {} pair-cache rebuilds, {} cached pairs at the last",
+        s.calls, s.rebuilds, s.cached_pairs);
+  };
   setup.model = std::move(dcr);
   return setup;
 }
@@ -464,29 +470,36 @@ void check_dcr_entries_apart(const Scene& scene, const ModelMesh& mesh) {
   }
 }
 
+// The non-empty texts of the parts, joined by "; "; none when there is no part.
+std::function<std::string()> joined_texts(std::vector<std::function<std::string()>> parts) {
+  if (parts.empty()) return {};
+  return [parts = std::move(parts)] {
+    std::string all;
+    for (const auto& part : parts) {
+      const std::string one = part();
+      if (!one.empty()) all += (all.empty() ? "" : "; ") + one;
+    }
+    return all;
+  };
+}
+
 // Several entries: one ContactSet of their models, in order (engine/contact/contact_set.hpp).
 ContactSetup combined(std::vector<ContactSetup> parts) {
   ContactSetup setup;
   setup.model_name.clear();
   std::vector<std::unique_ptr<ContactModel>> models;
-  std::vector<std::function<std::string()>> warnings;
+  std::vector<std::function<std::string()>> warnings, searches;
   for (ContactSetup& part : parts) {
     setup.model_name += (models.empty() ? "" : " + ") + part.model_name;
     setup.description += (models.empty() ? "" : "; ") + part.description;
     setup.histories.insert(setup.histories.end(), part.histories.begin(), part.histories.end());
     if (part.solve_warning) warnings.push_back(std::move(part.solve_warning));
+    if (part.search_summary) searches.push_back(std::move(part.search_summary));
     models.push_back(std::move(part.model));
   }
   setup.model = std::make_unique<ContactSet>(std::move(models));
-  if (!warnings.empty())
-    setup.solve_warning = [warnings = std::move(warnings)] {
-      std::string all;
-      for (const auto& w : warnings) {
-        const std::string one = w();
-        if (!one.empty()) all += (all.empty() ? "" : "; ") + one;
-      }
-      return all;
-    };
+  setup.solve_warning = joined_texts(std::move(warnings));
+  setup.search_summary = joined_texts(std::move(searches));
   return setup;
 }
 

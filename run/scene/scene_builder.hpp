@@ -41,6 +41,9 @@ struct ContactSetup {
   // Non-empty after a run when some contact solves stopped at their sweep cap without
   // converging (DCR): a warning for the run summary, with the counts.
   std::function<std::string()> solve_warning;
+  // After a run: what the contact search did (DCR: the steps its broad phase ran on, the pair
+  // cache's rebuilds), for the run summary; empty for none.
+  std::function<std::string()> search_summary;
 };
 
 // Throws ConfigError naming the scene file, line and key for an unknown body, a surface that does

@@ -138,6 +138,8 @@ class DcrContact : public ContactModel, public HistorySource {
   const WorkParts& work_parts() const { return parts_; }
   long unconverged_velocity_solves() const { return unconverged_velocity_; }
   long unconverged_projections() const { return unconverged_projection_; }
+  // The broad phase's work so far: searched steps, pair-cache rebuilds, cached pairs.
+  const BroadPhaseStats& broad_phase_stats() const { return broad_phase_.stats(); }
   // Steps in which the position projection moved a node (diagnostics: resting contact aims to
   // leave it nothing to do, make_row).
   long projecting_steps() const { return projecting_steps_; }
