@@ -80,7 +80,14 @@ rig::ChannelInContact in_contact(const ChannelResult& r, const std::vector<std::
   return out;
 }
 
-double factor_of(const BenchMapping& m, const char* name) { return m.channel(name)->si_factor; }
+// The rig's mapping names every channel it scores (rig_case_mapping_text): a missing one is a
+// defect of this file, not of the user's input.
+double factor_of(const BenchMapping& m, const char* name) {
+  const ChannelSpec* channel = m.channel(name);
+  if (channel == nullptr)
+    throw std::logic_error(fmt::format("the rig's bench mapping has no channel '{}'", name));
+  return channel->si_factor;
+}
 
 }  // namespace
 

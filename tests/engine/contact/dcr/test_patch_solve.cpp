@@ -60,34 +60,45 @@ dcr::ImpulseSolve run(Column& c, int max_iterations, int direct_after) {
 
 TEST_CASE("patch solve: a falling column comes to rest where the sweeps stall", "[dcr][contact]") {
   constexpr int kMasses = 60;  // active sets factorised dense (patch_solve.cpp, kDenseRows 96)
-  Column sweeps(kMasses), direct(kMasses), reference(kMasses);
+  Column sweeps(kMasses), direct(kMasses);
   const dcr::ImpulseSolve alone = run(sweeps, 100, 0);
   const dcr::ImpulseSolve with_patches = run(direct, 100, 10);
-  const dcr::ImpulseSolve converged = run(reference, 1000000, 0);
-  INFO("sweeps alone " << alone.sweeps << ", with the patch solve " << with_patches.sweeps
-                       << ", to convergence " << converged.sweeps);
+  INFO("sweeps alone " << alone.sweeps << ", with the patch solve " << with_patches.sweeps);
   CHECK_FALSE(alone.converged);  // the case the patch solve is for
-  REQUIRE(converged.converged);
   REQUIRE(with_patches.converged);
   CHECK(with_patches.sweeps <= 20);
   // The closed form: every mass at rest on the one below (the fastest was 1.59 m/s), every
   // impulse the column's momentum above that contact. The patch solve lands on it to round-off
-  // (measured 4e-12 m/s); the sweeps given all they need stop where a sweep changes a velocity by
-  // less than 1e-9 of the fastest, still 1e-5 m/s short of rest on this slow chain (measured).
-  double largest = 0.0, reference_largest = 0.0;
-  for (int i = 0; i < kMasses; ++i) {
-    const auto k = static_cast<size_t>(i);
-    largest = std::max(largest, direct.v[k].norm());
-    reference_largest = std::max(reference_largest, reference.v[k].norm());
-  }
-  INFO("largest speed left: patch solve " << largest << ", sweeps " << reference_largest);
+  // (measured 4e-12 m/s).
+  double largest = 0.0;
+  for (int i = 0; i < kMasses; ++i)
+    largest = std::max(largest, direct.v[static_cast<size_t>(i)].norm());
+  INFO("largest speed left: patch solve " << largest);
   CHECK(largest < 1e-9);
-  CHECK(reference_largest < 1e-4);
   double momentum_above = 0.0;
   for (int i = kMasses - 1; i >= 0; --i) {
     momentum_above += (1.0 + 0.01 * i) / direct.inv_m[static_cast<size_t>(i)];
     CHECK(direct.rows[static_cast<size_t>(i)].lambda_n == Approx(momentum_above).epsilon(1e-6));
   }
+}
+
+// The sweeps given all the sweeps they need (up to a million) on the same column: they converge,
+// but stop where a sweep changes a velocity by less than 1e-9 of the fastest, still 1e-5 m/s short
+// of rest on this slow chain (measured), where the patch solve above lands on rest to round-off.
+// [heavy]: 20 s under the sanitizers (the sweeps' code runs there in the test above).
+TEST_CASE("patch solve: the sweeps alone, given all they need, stop short of the closed form",
+          "[dcr][contact][heavy]") {
+  constexpr int kMasses = 60;
+  Column reference(kMasses);
+  const dcr::ImpulseSolve converged = run(reference, 1000000, 0);
+  INFO("sweeps to convergence " << converged.sweeps);
+  REQUIRE(converged.converged);
+  double reference_largest = 0.0;
+  for (int i = 0; i < kMasses; ++i)
+    reference_largest = std::max(reference_largest, reference.v[static_cast<size_t>(i)].norm());
+  INFO("largest speed left: sweeps " << reference_largest);
+  CHECK(reference_largest < 1e-4);
+  CHECK(reference_largest > 1e-9);  // short of the patch solve's rest (1e-5 m/s measured)
 }
 
 // A column longer than the dense limit (120 rows > kDenseRows = 96): its active sets are
