@@ -16,6 +16,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "run/scene/point_scene.hpp"
@@ -57,8 +58,8 @@ TEST_CASE(
                         (p.kinetic_energy == 10.0 || p.kinetic_energy == 100.0);
     if (!corner) continue;
     std::array<double, 3> mean_difference{}, lowest{}, highest{};
-    lowest.fill(INFINITY);
-    highest.fill(-INFINITY);
+    lowest.fill(std::numeric_limits<double>::infinity());
+    highest.fill(-std::numeric_limits<double>::infinity());
     std::array<std::array<double, 3>, kSchedules.size()> difference{};
     for (size_t k = 0; k < kSchedules.size(); ++k) {
       Scene a = study::point_scene(analytic, p, study::ImpactModel::rigid);
