@@ -155,12 +155,10 @@ int calibrate(const RigCalibrateArgs& args) {
   // The search's points, a batch at a time (its opening points go out together: up to --jobs
   // runs at once); the bookkeeping in the order of the points.
   const rig::BatchObjective objective = [&](const std::vector<std::vector<double>>& points) {
-    std::vector<RigRunJob> jobs;
-    for (const std::vector<double>& x : points)
-      jobs.push_back(
-          {&in, &common, with_values(in.parameters, params, x),
-           fmt::format("{} eval {}/{}", in.rig_case->code,
-                       evaluation + static_cast<int>(jobs.size()) + 1, args.max_evaluations)});
+    const std::vector<RigRunJob> jobs = runs_at(in, common, params, points, [&](size_t k) {
+      return fmt::format("{} eval {}/{}", in.rig_case->code, evaluation + static_cast<int>(k) + 1,
+                         args.max_evaluations);
+    });
     if (!common.quiet && points.size() > 1 && args.jobs > 1)
       fmt::print("  evals {}-{}: {} runs, {} at once\n", evaluation + 1,
                  evaluation + static_cast<int>(points.size()), points.size(),

@@ -65,6 +65,16 @@ rig::RunParameters with_values(rig::RunParameters p, const std::vector<rig::Sear
   return p;
 }
 
+std::vector<RigRunJob> runs_at(const RigInputs& in, const RigCommonArgs& args,
+                               const std::vector<rig::SearchParameter>& s,
+                               const std::vector<std::vector<double>>& points,
+                               const std::function<std::string(size_t)>& label) {
+  std::vector<RigRunJob> runs;
+  for (size_t k = 0; k < points.size(); ++k)
+    runs.push_back({&in, &args, with_values(in.parameters, s, points[k]), label(k)});
+  return runs;
+}
+
 std::vector<PredictionCase> read_prediction_cases(const RigCalibrateArgs& args,
                                                   const RigInputs& fitted,
                                                   const std::vector<rig::SearchParameter>& params) {
@@ -154,10 +164,9 @@ std::vector<rig::ParameterSpread> profile_calibration(
     const RigInputs& in, const RigCommonArgs& args, const std::vector<rig::SearchParameter>& params,
     const std::vector<int>& fit, const std::vector<double>& best, double best_objective, int jobs) {
   const rig::BatchObjective objective = [&](const std::vector<std::vector<double>>& points) {
-    std::vector<RigRunJob> runs;
-    for (const std::vector<double>& x : points)
-      runs.push_back({&in, &args, with_values(in.parameters, params, x),
-                      fmt::format("{} profile {}", in.rig_case->code, runs.size() + 1)});
+    const std::vector<RigRunJob> runs = runs_at(in, args, params, points, [&](size_t k) {
+      return fmt::format("{} profile {}", in.rig_case->code, k + 1);
+    });
     std::vector<std::optional<double>> values;
     for (const RigRunOutcome& o : run_rig_batch(runs, jobs))
       values.push_back(o.result.summary.verdict == Verdict::completed ? fitted_objective(o, fit)

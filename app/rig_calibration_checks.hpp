@@ -11,12 +11,14 @@
 //     the fitted case's configuration, and every tuned parameter must apply to it.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "app/rig_commands.hpp"
 #include "app/rig_inputs.hpp"
 #include "app/rig_output.hpp"
+#include "app/rig_runner.hpp"
 #include "db/store/rig_store.hpp"
 #include "rig_models/calibrate/bounded_search.hpp"
 #include "rig_models/calibrate/parameter_profile.hpp"
@@ -33,6 +35,13 @@ struct PredictionCase {
 // `p` with the searched parameters set to `x`.
 rig::RunParameters with_values(rig::RunParameters p, const std::vector<rig::SearchParameter>& s,
                                const std::vector<double>& x);
+
+// One run of the case per search point (the parameters `s` set to its values), the k-th
+// labelled label(k): what run_rig_batch takes.
+std::vector<RigRunJob> runs_at(const RigInputs& in, const RigCommonArgs& args,
+                               const std::vector<rig::SearchParameter>& s,
+                               const std::vector<std::vector<double>>& points,
+                               const std::function<std::string(size_t)>& label);
 
 // Reads and checks every --predict case before any run. Throws std::invalid_argument (a case
 // of another configuration, a parameter that does not apply, the fitted case itself) or

@@ -163,7 +163,7 @@ SearchResult bounded_search(const std::vector<SearchParameter>& parameters,
   first.insert(first.end(), opening.begin(), opening.end());
   evaluate_new(context, first);
   const int budget_left = settings.max_evaluations - static_cast<int>(result.history.size());
-  if (settings.max_evaluations == 1 || (budget_left <= 0 && opening.empty())) {
+  if (settings.max_evaluations == 1) {
     if (result.best.empty()) throw std::runtime_error("calibration: the starting point failed");
     result.stop_reason = "MAXEVAL_REACHED";
     return result;
