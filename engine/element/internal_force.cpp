@@ -90,7 +90,7 @@ CCM_INLINE PackForces neo_hookean_pack(const NeoHookeanPack& p, const PaddedVec3
   const Shape s = shape_of(e, V0);
   PackForces out;
   out.J = s.J;
-  const Lanes log_J = vector_log(s.J > 0.0 ? s.J : broadcast(1.0));  // bad lanes: reported only
+  const Lanes log_J = kernel_log(s.J > 0.0 ? s.J : broadcast(1.0));  // bad lanes: reported only
   const Lanes g00 = load(p.geometry[0]), g11 = load(p.geometry[1]), g22 = load(p.geometry[2]);
   const Lanes g01 = load(p.geometry[3]), g02 = load(p.geometry[4]), g12 = load(p.geometry[5]);
   const Lanes A = -lame.mu * V0;

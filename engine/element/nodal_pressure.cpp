@@ -91,7 +91,7 @@ double nodal_pressures(const NodalPressureData& d, const PaddedVec3* x, double l
     const auto n = static_cast<size_t>(first + l);
     d.V[n] = rows[n].v[3];
   }
-  const Lanes log_J = vector_log(J > 0.0 ? J : np_broadcast(1.0));
+  const Lanes log_J = kernel_log(J > 0.0 ? J : np_broadcast(1.0));
   const Lanes p = lambda * log_J / J;
   double max_abs_log_J = 0.0;
   for (int l = 0; l < lanes; ++l) {
@@ -160,7 +160,7 @@ CCM_NP_INLINE NodalPressureForces element_forces(const NeoHookeanPack& p,
     out.h[2][r] = A * dg2 + B * n[2][r];
   }
   if constexpr (Energy) {  // the forces need no ln J_e: only the energy does
-    const Lanes log_J = vector_log(out.J > 0.0 ? out.J : np_broadcast(1.0));
+    const Lanes log_J = kernel_log(out.J > 0.0 ? out.J : np_broadcast(1.0));
     out.W = V0 * (0.5 * mu * (trC - 3.0) - mu * log_J);
   }
   Lanes sum_n2 = np_broadcast(0.0);  // sum_f |n_f|^2 = det^2 / h_e^2 (tet4.hpp)
