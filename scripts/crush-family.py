@@ -13,7 +13,8 @@ The run lasts until the ball has crossed the pipe's diameter at its first speed,
 A well-posed member must complete with its energy balance within 1 %, or end unstable for a
 physical reason. Prints one line per member and writes a CSV table.
 
-  scripts/crush-family.py [--all | --members K] [--structure] [--ccm build/ccm] [--out DIR]
+  scripts/crush-family.py [--all | --members K] [--unseen N [--seed S]] [--structure]
+                          [--ccm build/ccm] [--out DIR]
 
 --structure also runs each member without contact over a third of its time and prints the
 contact run's ns per element-step as a multiple of that structure-alone cost (issue 34's floor
@@ -21,11 +22,14 @@ is 10x), both measured in the same sitting.
 
 By default the scene of issue 34 (1/3, fixed, 8 m/s, friction 0.3) and 8 members spread over the
 axes (each level of each axis at least once); --all runs all 72; --members K: the issue's scene
-and K spread members.
+and K spread members. --unseen N adds N members drawn (seeded) beyond the family: other pipe
+radii, lengths, meshes and rubbers, other balls, struck off-centre and up to 30 degrees off the
+vertical (UNSEEN below), as a check on crushes the family was not tuned on.
 """
 import argparse
 import csv
 import itertools
+import math
 import os
 import random
 import re
@@ -46,11 +50,35 @@ AXES = {
 }
 
 
-def scene(wall_tets, support, speed, friction, contact=True, window=1.0):
-    """The member's scene; without contact (the structure alone) over `window` of its time."""
-    h, wall = (0.003, 0.001) if wall_tets < 0.4 else (MESH, wall_tets * MESH)
-    end = window * min(2.0 * PIPE_R / speed + 2e-3, 0.025)
+# What an --unseen draw varies beyond the family's axes, each uniform in its range (log-uniform
+# for the moduli): the pipe's radius, length and mesh, its rubber, the ball's radius, mesh and
+# modulus, where along the pipe it strikes and how far off the vertical it comes.
+UNSEEN = {
+    "pipe_r": (0.010, 0.030), "length": (0.030, 0.070), "mesh": (0.0015, 0.0035),
+    "pipe_E": (1.0e6, 2.0e7), "pipe_nu": (0.30, 0.48),
+    "ball_r": (0.005, 0.015), "ball_mesh": (0.003, 0.005), "ball_E": (5.0e7, 2.0e9),
+    "strike_at": (0.25, 0.75), "tilt_deg": (0.0, 30.0),
+}
+GEOMETRY = {  # the family's own values
+    "pipe_r": PIPE_R, "length": LENGTH, "mesh": None, "pipe_E": 5.0e6, "pipe_nu": 0.4,
+    "ball_r": BALL_R, "ball_mesh": 0.004, "ball_E": 2.0e8, "strike_at": 0.5, "tilt_deg": 0.0,
+}
+
+
+def scene(wall_tets, support, speed, friction, contact=True, window=1.0, **geometry):
+    """The member's scene; without contact (the structure alone) over `window` of its time.
+    `geometry` overrides GEOMETRY (an --unseen member's draw)."""
+    g = dict(GEOMETRY, **geometry)
+    pipe_r, length, ball_r = g["pipe_r"], g["length"], g["ball_r"]
+    if g["mesh"] is None:
+        h, wall = (0.003, 0.001) if wall_tets < 0.4 else (MESH, wall_tets * MESH)
+    else:
+        h, wall = g["mesh"], wall_tets * g["mesh"]
+    end = window * min(2.0 * pipe_r / speed + 2e-3, 0.025)
     lift = 0.0055 if support == "anvil" else 0.0  # the pipe 0.5 mm above the anvil's top
+    tilt = math.radians(g["tilt_deg"])
+    velocity = [speed * math.sin(tilt), 0.0, -speed * math.cos(tilt)]
+    ball_x = g["strike_at"] * length - (2 * pipe_r + 0.0005 + ball_r) * math.tan(tilt)
     parts = [f'''title = "crush family: wall {wall_tets} tets, {support}, {speed} m/s, mu {friction}"
 [time]
 end = {end:.6g}
@@ -61,38 +89,38 @@ max_steps = 2000000
 name = "pipe"
 [bodies.material]
 model = "neo_hookean"
-E = 5.0e6
-nu = 0.4
+E = {g["pipe_E"]:.6g}
+nu = {g["pipe_nu"]:.6g}
 rho = 1100.0
 [bodies.geometry]
 shape = "pipe"
-radius = {PIPE_R}
-inner_radius = {PIPE_R - wall:.6g}
-length = {LENGTH}
+radius = {pipe_r:.6g}
+inner_radius = {pipe_r - wall:.6g}
+length = {length:.6g}
 mesh_size = {h:.6g}
 [bodies.placement]
 rotate_axis = [0.0, 1.0, 0.0]
 rotate_deg = 90.0
-translate = [0.0, 0.0, {PIPE_R + lift:.6g}]
+translate = [0.0, 0.0, {pipe_r + lift:.6g}]
 
 [[bodies]]
 name = "ball"
-initial_velocity = [0.0, 0.0, {-speed}]
+initial_velocity = [{velocity[0]:.6g}, 0.0, {velocity[2]:.6g}]
 [bodies.material]
 model = "neo_hookean"
-E = 2.0e8
+E = {g["ball_E"]:.6g}
 nu = 0.3
 rho = 7800.0
 [bodies.geometry]
 shape = "sphere"
-radius = {BALL_R}
-mesh_size = 0.004
+radius = {ball_r:.6g}
+mesh_size = {g["ball_mesh"]:.6g}
 [bodies.placement]
-translate = [{LENGTH / 2}, 0.0, {2 * PIPE_R + lift + 0.0005 + BALL_R:.6g}]
+translate = [{ball_x:.6g}, 0.0, {2 * pipe_r + lift + 0.0005 + ball_r:.6g}]
 ''']
     surfaces = ['"pipe"', '"ball"']
     if support == "anvil":
-        parts.append('''
+        parts.append(f'''
 [[bodies]]
 name = "anvil"
 [bodies.material]
@@ -102,10 +130,10 @@ nu = 0.3
 rho = 2000.0
 [bodies.geometry]
 shape = "box"
-size = [0.07, 0.06, 0.005]
+size = [{length + 0.02:.6g}, {2 * pipe_r + 0.02:.6g}, 0.005]
 mesh_size = 0.005
 [bodies.placement]
-translate = [-0.01, -0.03, 0.0]
+translate = [-0.01, {-(pipe_r + 0.01):.6g}, 0.0]
 
 [[fixed]]
 node_set = "anvil"
@@ -138,6 +166,23 @@ def spread_members(count):
         rng.shuffle(column)
         columns[name] = column
     return [{name: columns[name][k] for name in AXES} for k in range(count)]
+
+
+def unseen_members(count, seed):
+    """`count` members drawn at random over the family's axes and the UNSEEN ranges: crushes of
+    other pipes, balls and rubbers than the family's, struck off-centre and off the vertical."""
+    rng = random.Random(seed)
+    members = []
+    for _ in range(count):
+        m = {name: rng.choice(levels) for name, levels in AXES.items()}
+        m["wall_tets"] = round(rng.uniform(1.0 / 3.0, 2.0), 3)
+        for name, (lo, hi) in UNSEEN.items():
+            log = name.endswith("_E")
+            v = math.exp(rng.uniform(math.log(lo), math.log(hi))) if log else rng.uniform(lo, hi)
+            m[name] = float(f"{v:.3g}")
+        m["ball_r"] = min(m["ball_r"], 0.9 * m["pipe_r"])
+        members.append(m)
+    return members
 
 
 def summary_value(text, key):
@@ -204,6 +249,9 @@ def main():
     parser.add_argument("--members", type=int, default=8)
     parser.add_argument("--ccm", default="build/ccm")
     parser.add_argument("--out", default="crush-family")
+    parser.add_argument("--unseen", type=int, default=0, metavar="N",
+                        help="N members of other geometries and materials too (UNSEEN ranges)")
+    parser.add_argument("--seed", type=int, default=1, help="the --unseen draw's seed")
     parser.add_argument("--structure", action="store_true",
                         help="also time each member's bodies without contact, same sitting, and "
                         "print the contact run's cost as a multiple of that")
@@ -213,6 +261,7 @@ def main():
     else:
         issue_scene = {"wall_tets": 1.0 / 3.0, "support": "fixed", "speed": 8.0, "friction": 0.3}
         members = [issue_scene] + spread_members(args.members)
+    members += unseen_members(args.unseen, args.seed)
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for k, member in enumerate(members):
@@ -229,7 +278,8 @@ def main():
               + f"{row['seconds']:6.1f} s  "
               f"{'ok' if ok else 'FLOOR NOT MET'}  {row['reason']}", flush=True)
     with open(os.path.join(args.out, "crush-family.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        fields = list(dict.fromkeys(key for row in rows for key in row))  # --unseen adds some
+        writer = csv.DictWriter(f, fieldnames=fields)
         writer.writeheader()
         writer.writerows(rows)
     met = sum(r["verdict"] == "completed" and r["energy_error_pct"] <= 1.0 for r in rows)
