@@ -40,9 +40,16 @@ void PinJoint::initialise(State& s) {
     L += r.mass * e_.cross(r.lever0).dot(s.v[static_cast<size_t>(r.node)]);
   }
   omega_ = L / J_ring_;  // the ring starts with the rigid rotation closest to its velocities
-  for (const RingNode& r : ring_) {
+  for (RingNode& r : ring_) {
     const auto i = static_cast<size_t>(r.node);
     s.v[i] = omega_ * e_.cross(r.lever0);
+    r.a_raw = s.a[i];
+    r.a_held = Vec3::Zero();
+    r.reaction = -r.mass * r.a_raw;
+    r.correction = Vec3::Zero();
+    r.x = s.x[i];
+    r.v = s.v[i];
+    s.a[i] = r.a_held;
   }
 }
 
@@ -51,7 +58,9 @@ void PinJoint::apply(State& s, double dt) {
   for (const RingNode& r : ring_) {
     if (!(r.radius > 0.0)) continue;
     const auto i = static_cast<size_t>(r.node);
-    const Vec3 v_end = s.v[i] + 0.5 * dt * s.a[i];
+    // The trial end-of-step velocity of the rigid-ring form: the ring's velocity plus half
+    // kicks of the last and this step's evaluated accelerations (PJ.2).
+    const Vec3 v_end = s.v[i] + 0.5 * dt * (r.a_raw - r.a_held + s.a[i]);
     const Vec3 n = lever(r) / r.radius;
     L += r.mass * r.radius * e_.cross(n).dot(v_end);  // (3.3) as angular momentum
     C += r.mass * r.radius * std::abs(n.dot(v_end));  // (3.2) as angular impulse capacity
@@ -69,21 +78,30 @@ void PinJoint::apply(State& s, double dt) {
   place(s, dt);
 }
 
-// (3.5, 3.6): every ring node on its circle at phi, moving with the ring's rate; the position
-// correction is booked against the current forces and the velocity change as kinetic energy,
-// as the DCR books its corrections.
+// (3.5, 3.6): every ring node on its circle at phi, moving with the ring's rate, its acceleration
+// the ring's (PJ.3); the reactions' work and the correction's are booked (PJ.4).
 void PinJoint::place(State& s, double dt) {
   const Eigen::AngleAxisd rotation(phi_, e_);
-  for (const RingNode& r : ring_) {
+  for (RingNode& r : ring_) {
     const auto i = static_cast<size_t>(r.node);
     const Vec3 lever_now = rotation * r.lever0;
     const Vec3 x_new = spec_.axis_point + r.axial * e_ + lever_now;
     const Vec3 v_new = omega_ * e_.cross(lever_now);
-    const Vec3 v_end = s.v[i] + 0.5 * dt * s.a[i];
-    work_ += -r.mass * s.a[i].dot(x_new - s.x[i]) +
-             0.5 * r.mass * (v_new.squaredNorm() - v_end.squaredNorm());
+    const Vec3 a_raw = s.a[i];
+    const Vec3 a_held = (v_new - r.v) / dt;  // (PJ.3)
+    const Vec3 reaction = r.mass * (a_held - a_raw);
+    const Vec3 correction = x_new - s.x[i];
+    work_ += 0.5 * (r.reaction + reaction).dot(x_new - r.x) +  // (PJ.4)
+             0.5 * r.mass * (r.a_raw + a_raw).dot(correction - r.correction);
+    r.a_raw = a_raw;
+    r.a_held = a_held;
+    r.reaction = reaction;
+    r.correction = correction;
+    r.x = x_new;
+    r.v = v_new;
     s.x[i] = x_new;
-    s.v[i] = v_new - 0.5 * dt * s.a[i];
+    s.a[i] = a_held;
+    s.v[i] = v_new - 0.5 * dt * a_held;
   }
 }
 

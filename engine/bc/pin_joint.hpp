@@ -4,8 +4,10 @@
 // their radius does not change (3.5), they do not move along the axis, and one angle phi says
 // where they are. The pin resists the rotation with Coulomb friction driven by its reaction.
 //
-// Each step, on the trial end-of-step velocities v_j = v*_j + dt/2 a_j of the ring nodes
-// (lumped mass m_j, radius r_j, radial unit n_j and tangential unit t_j = e x n_j at phi_n):
+// Each step, on the trial end-of-step velocities of the ring nodes (lumped mass m_j, radius r_j,
+// radial unit n_j and tangential unit t_j = e x n_j at phi_n), the ring's velocity at the last
+// step plus half kicks of the accelerations evaluated then and now,
+//   v_j = v_j,n + dt/2 (a_j,n + a_j,n+1)                                             (PJ.2)
 //   L = sum_j m_j r_j (t_j . v_j)    angular momentum about the axis, the ring's "ideal"
 //                                     tangential motion (v_t,ideal of 3.3)
 //   C = sum_j m_j r_j |n_j . v_j|    angular impulse the friction can hold: the radial momentum
@@ -15,8 +17,22 @@
 //   slip  otherwise:         omega = (L - mu_k C sign L) / J_ring, never reversed      (3.4)
 //   phi_{n+1} = phi_n + dt omega,  x_j = c + R(phi_{n+1}) (X_j - c),
 //   v_j = omega e x (x_j - c)                                                    (3.5, 3.6)
-// with J_ring = sum_j m_j r_j^2; the ring's accelerations are left as evaluated, and v* is set
-// so that v* + dt/2 a_j lands on v_j (as the DCR does for contact nodes).
+// with J_ring = sum_j m_j r_j^2.
+//
+// What the ring leaves in the state is its own motion: x_j on the circle, and as acceleration
+// the ring's, not the evaluated one (which holds the pin's reaction, tens of newtons on grams
+// where a clamp holds a blow),
+//   a_j <- (v_j,n+1 - v_j,n) / dt,   v*_j <- v_j,n+1 - dt/2 a_j                         (PJ.3)
+// so that the next predictor moves the held nodes along the ring instead of off it by dt^2/2 of
+// their reaction (the elements were then evaluated, and the energy measured, at positions the
+// ring never takes: 0.7 % of the rig's RX cases' energy read wrongly while the clamp was
+// loaded). The reactions R_j = m_j (a_j,ring - a_j,evaluated) do work on the ring's motion, and
+// the step from the predicted x*_j to the ring's x_j (the correction c_j) moves the evaluated
+// forces; both are booked (trapezoidal, as the loads' work):
+//   W += 1/2 (R_j,n + R_j,n+1) . (x_j,n+1 - x_j,n) + 1/2 m_j (a_j,n + a_j,n+1) . (c_j,n+1 - c_j,n)
+//                                                                                  (PJ.4)
+// An ideal pin's radial reaction does no work on a turning ring; the clamp's spring stores
+// k phi^2 / 2, and friction and damping take energy out, all through R.
 //
 // Per node, 3.4 is |dv_t| <= mu |v_n|: multiplied by m_j r_j and summed over the ring it is
 // the limit on C above, so the friction torque is mu times the pin's reaction times the bore
@@ -82,6 +98,11 @@ class PinJoint : public KinematicConstraint {
     double axial;  // (X - c) . e
     double radius;
     double mass = 0.0;
+    // The last step's (place): the evaluated acceleration, the ring's own (held) acceleration
+    // left in the state, the reaction m (a_held - a_raw), the correction x - x* and the
+    // position and velocity the ring gave the node.
+    Vec3 a_raw = Vec3::Zero(), a_held = Vec3::Zero(), reaction = Vec3::Zero();
+    Vec3 correction = Vec3::Zero(), x = Vec3::Zero(), v = Vec3::Zero();
   };
   Vec3 lever(const RingNode& r) const;  // at phi_
   void place(State& s, double dt);      // positions and velocities of the ring at phi_, omega_
