@@ -44,12 +44,10 @@ void PinJoint::initialise(State& s) {
     const auto i = static_cast<size_t>(r.node);
     s.v[i] = omega_ * e_.cross(r.lever0);
     r.a_raw = s.a[i];
-    r.a_held = Vec3::Zero();
-    r.reaction = -r.mass * r.a_raw;
     r.correction = Vec3::Zero();
     r.x = s.x[i];
     r.v = s.v[i];
-    s.a[i] = r.a_held;
+    s.a[i] = Vec3::Zero();
   }
 }
 
@@ -60,7 +58,7 @@ void PinJoint::apply(State& s, double dt) {
     const auto i = static_cast<size_t>(r.node);
     // The trial end-of-step velocity of the rigid-ring form: the ring's velocity plus half
     // kicks of the last and this step's evaluated accelerations (PJ.2).
-    const Vec3 v_end = s.v[i] + 0.5 * dt * (r.a_raw - r.a_held + s.a[i]);
+    const Vec3 v_end = s.v[i] + 0.5 * dt * (r.a_raw + s.a[i]);
     const Vec3 n = lever(r) / r.radius;
     L += r.mass * r.radius * e_.cross(n).dot(v_end);  // (3.3) as angular momentum
     C += r.mass * r.radius * std::abs(n.dot(v_end));  // (3.2) as angular impulse capacity
@@ -75,12 +73,12 @@ void PinJoint::apply(State& s, double dt) {
   }
   omega_ = L_new / (J_ring_ + dt * spec_.damping + dt * dt * spec_.stiffness);  // (PJ.1)
   phi_ += dt * omega_;
-  place(s, dt);
+  place(s);
 }
 
-// (3.5, 3.6): every ring node on its circle at phi, moving with the ring's rate, its acceleration
-// the ring's (PJ.3); the reactions' work and the correction's are booked (PJ.4).
-void PinJoint::place(State& s, double dt) {
+// (3.5, 3.6): every ring node on its circle at phi, moving with the ring's rate, no acceleration
+// left in the state (PJ.3); what that does to the held nodes is booked (PJ.4).
+void PinJoint::place(State& s) {
   const Eigen::AngleAxisd rotation(phi_, e_);
   for (RingNode& r : ring_) {
     const auto i = static_cast<size_t>(r.node);
@@ -88,20 +86,17 @@ void PinJoint::place(State& s, double dt) {
     const Vec3 x_new = spec_.axis_point + r.axial * e_ + lever_now;
     const Vec3 v_new = omega_ * e_.cross(lever_now);
     const Vec3 a_raw = s.a[i];
-    const Vec3 a_held = (v_new - r.v) / dt;  // (PJ.3)
-    const Vec3 reaction = r.mass * (a_held - a_raw);
     const Vec3 correction = x_new - s.x[i];
-    work_ += 0.5 * (r.reaction + reaction).dot(x_new - r.x) +  // (PJ.4)
-             0.5 * r.mass * (r.a_raw + a_raw).dot(correction - r.correction);
+    const Vec3 predicted_move = (x_new - r.x) - (correction - r.correction);  // x*_n+1 - x*_n
+    work_ += 0.5 * r.mass * (v_new.squaredNorm() - r.v.squaredNorm()) -       // (PJ.4)
+             0.5 * r.mass * (r.a_raw + a_raw).dot(predicted_move);
     r.a_raw = a_raw;
-    r.a_held = a_held;
-    r.reaction = reaction;
     r.correction = correction;
     r.x = x_new;
     r.v = v_new;
     s.x[i] = x_new;
-    s.a[i] = a_held;
-    s.v[i] = v_new - 0.5 * dt * a_held;
+    s.a[i] = Vec3::Zero();  // (PJ.3)
+    s.v[i] = v_new;
   }
 }
 

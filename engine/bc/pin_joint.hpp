@@ -19,20 +19,20 @@
 //   v_j = omega e x (x_j - c)                                                    (3.5, 3.6)
 // with J_ring = sum_j m_j r_j^2.
 //
-// What the ring leaves in the state is its own motion: x_j on the circle, and as acceleration
-// the ring's, not the evaluated one (which holds the pin's reaction, tens of newtons on grams
-// where a clamp holds a blow),
-//   a_j <- (v_j,n+1 - v_j,n) / dt,   v*_j <- v_j,n+1 - dt/2 a_j                         (PJ.3)
-// so that the next predictor moves the held nodes along the ring instead of off it by dt^2/2 of
-// their reaction (the elements were then evaluated, and the energy measured, at positions the
-// ring never takes: 0.7 % of the rig's RX cases' energy read wrongly while the clamp was
-// loaded). The reactions R_j = m_j (a_j,ring - a_j,evaluated) do work on the ring's motion, and
-// the step from the predicted x*_j to the ring's x_j (the correction c_j) moves the evaluated
-// forces; both are booked (trapezoidal, as the loads' work):
-//   W += 1/2 (R_j,n + R_j,n+1) . (x_j,n+1 - x_j,n) + 1/2 m_j (a_j,n + a_j,n+1) . (c_j,n+1 - c_j,n)
+// What the ring leaves in the state is its own motion, as fixed nodes do: x_j on the circle,
+// v_j = v_j,n+1 and no acceleration,
+//   a_j <- 0,   v*_j <- v_j,n+1                                                       (PJ.3)
+// so that the next predictor moves the held nodes along the ring at its rate, not off it by
+// dt^2/2 of their evaluated acceleration, which carries the pin's reaction (tens of newtons on
+// grams where a clamp holds a blow: the elements were evaluated, and the energy measured, at
+// positions the ring never takes, 0.7 % of the rig's RX cases' energy read wrongly while the
+// clamp was loaded). The evaluated accelerations are kept for PJ.2. What the constraint does to
+// the held nodes is booked as its work: their kinetic energy's change less the work of the
+// evaluated forces over the predicted positions x* (at which the elements' energy is measured),
+//   W += m_j (|v_j,n+1|^2 - |v_j,n|^2) / 2 - m_j (a_j,n + a_j,n+1) / 2 . (x*_j,n+1 - x*_j,n)
 //                                                                                  (PJ.4)
-// An ideal pin's radial reaction does no work on a turning ring; the clamp's spring stores
-// k phi^2 / 2, and friction and damping take energy out, all through R.
+// (trapezoidal, as the loads' work). The spring's stored k phi^2 / 2, the friction's and the
+// damper's losses are all in it.
 //
 // Per node, 3.4 is |dv_t| <= mu |v_n|: multiplied by m_j r_j and summed over the ring it is
 // the limit on C above, so the friction torque is mu times the pin's reaction times the bore
@@ -98,14 +98,12 @@ class PinJoint : public KinematicConstraint {
     double axial;  // (X - c) . e
     double radius;
     double mass = 0.0;
-    // The last step's (place): the evaluated acceleration, the ring's own (held) acceleration
-    // left in the state, the reaction m (a_held - a_raw), the correction x - x* and the
-    // position and velocity the ring gave the node.
-    Vec3 a_raw = Vec3::Zero(), a_held = Vec3::Zero(), reaction = Vec3::Zero();
-    Vec3 correction = Vec3::Zero(), x = Vec3::Zero(), v = Vec3::Zero();
+    // The last step's (place): the evaluated acceleration, the step from the predicted
+    // position to the ring's (x - x*), and the position and velocity the ring gave the node.
+    Vec3 a_raw = Vec3::Zero(), correction = Vec3::Zero(), x = Vec3::Zero(), v = Vec3::Zero();
   };
   Vec3 lever(const RingNode& r) const;  // at phi_
-  void place(State& s, double dt);      // positions and velocities of the ring at phi_, omega_
+  void place(State& s);                 // positions and velocities of the ring at phi_, omega_
 
   PinJointSpec spec_;
   Vec3 e_;
